@@ -1,0 +1,19 @@
+//! `ohl`: dynamics of overhead power-line wires.
+//!
+//! The model is an absolutely flexible, extensible wire in a Lagrangian coordinate (paper sections 1-2),
+//! integrated by the explicit staggered-grid scheme (3.1)-(3.7) with Kelvin-Voigt tension (3.4),
+//! aerodynamic loads with damping (2.5)-(2.6) and velocity smoothing (3.3). Everything is in SI units.
+//!
+//! Layers, one folder each:
+//! - [`wire`]: the physics of the wire (state, constitutive law, distributed loads);
+//! - [`scheme`]: the numerical schemes (explicit leapfrog, smoothing, Courant step);
+//! - [`scenario`]: scenario files, their validation and their translation into a solver;
+//! - [`output`]: the files a run writes; [`run`] drives a run;
+//! - [`exact`]: exact static solutions the scheme is verified against.
+
+pub mod exact;
+pub mod output;
+pub mod run;
+pub mod scenario;
+pub mod scheme;
+pub mod wire;

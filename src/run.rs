@@ -1,0 +1,243 @@
+//! The driver: steps a [`Plan`] to its end, samples the time series, writes snapshots, detects that the
+//! wire has settled, tracks peaks and measures throughput.
+//!
+//! Time handling: steps have the nominal length `dt` of (3.7) except the step that lands exactly on a
+//! snapshot time or the end time, which is shortened (the scheme's kick uses the mean of consecutive
+//! steps, so this keeps second order). Time-series rows are taken at the first step at or after each
+//! multiple of the sample interval and record the actual time. The mid-span peaks are tracked every step.
+
+use std::io::IsTerminal;
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+use crate::output::summary::InstabilityReport;
+use crate::output::{Peak, Sample, SnapshotWriter, Summary, TimeseriesWriter};
+use crate::scenario::Plan;
+use crate::scenario::build::Stop;
+use crate::scheme::{Explicit, Instability};
+
+/// How to run.
+#[derive(Clone, Debug, Default)]
+pub struct RunOptions {
+    /// directory for `timeseries.csv`, `snapshots.csv` and `summary.json` (none: nothing is written)
+    pub out_dir: Option<PathBuf>,
+    /// show a progress bar (only drawn when stderr is a terminal)
+    pub progress: bool,
+    /// keep the time series in memory in [`Outcome::samples`]
+    pub record: bool,
+}
+
+/// What a run produced.
+#[derive(Clone, Debug)]
+pub struct Outcome {
+    /// the summary (also written to `summary.json`)
+    pub summary: Summary,
+    /// the time series, if [`RunOptions::record`] was set
+    pub samples: Vec<Sample>,
+    /// the solver at the end of the run
+    pub solver: Explicit,
+}
+
+/// Why a run did not complete.
+#[derive(Debug, thiserror::Error)]
+pub enum RunError {
+    /// An output file could not be written.
+    #[error("cannot write {path}: {source}")]
+    Io {
+        /// the file
+        path: String,
+        /// the I/O error
+        source: std::io::Error,
+    },
+    /// The scheme went unstable; the outcome up to that point is attached (and was written).
+    #[error("{instability}")]
+    Unstable {
+        /// where and why
+        instability: Instability,
+        /// the run up to the failure
+        outcome: Box<Outcome>,
+    },
+}
+
+struct Writers {
+    dir: PathBuf,
+    series: TimeseriesWriter,
+    snaps: SnapshotWriter,
+}
+
+fn io_err(path: &Path) -> impl FnOnce(std::io::Error) -> RunError + '_ {
+    move |source| RunError::Io { path: path.display().to_string(), source }
+}
+
+impl Writers {
+    fn open(dir: &Path, segments: usize) -> Result<Self, RunError> {
+        std::fs::create_dir_all(dir).map_err(io_err(dir))?;
+        let ts = dir.join("timeseries.csv");
+        let sn = dir.join("snapshots.csv");
+        Ok(Writers {
+            series: TimeseriesWriter::create(&ts).map_err(io_err(&ts))?,
+            snaps: SnapshotWriter::create(&sn, segments).map_err(io_err(&sn))?,
+            dir: dir.to_path_buf(),
+        })
+    }
+    fn summary(&self, s: &Summary) -> Result<(), RunError> {
+        let p = self.dir.join("summary.json");
+        let text = serde_json::to_string_pretty(s).map_err(std::io::Error::other).map_err(io_err(&p))?;
+        std::fs::write(&p, text + "\n").map_err(io_err(&p))
+    }
+}
+
+/// Run a plan to its end.
+pub fn run(plan: Plan, opts: &RunOptions) -> Result<Outcome, RunError> {
+    let Plan { solver, .. } = &plan;
+    let mut solver = solver.clone();
+    let n = solver.wire.segments();
+    let mut writers = match &opts.out_dir {
+        Some(d) => Some(Writers::open(d, n)?),
+        None => None,
+    };
+    let mid0 = plan.chord_midpoint();
+    let dt = solver.params.dt_s;
+    let horizon = plan.stop.horizon_s();
+    // Landing tolerance: a target closer than this is taken as reached.
+    let tol = 1.0e-9 * dt;
+
+    let bar = (opts.progress && std::io::stderr().is_terminal()).then(|| {
+        let b = indicatif::ProgressBar::new(1000);
+        b.set_style(
+            indicatif::ProgressStyle::with_template("{bar:40} {percent:>3}% t = {msg} s, eta {eta}")
+                .expect("static template"),
+        );
+        b
+    });
+
+    let mut samples = Vec::new();
+    let mut peaks = [Peak::default(); 3];
+    let (mut peak_tension, mut peak_tension_t) = (0.0_f64, 0.0_f64);
+    let mut peak_ke = 0.0_f64;
+    let mut below_since: Option<f64> = None;
+    let mut settled = false;
+    let mut next_sample = 0.0_f64;
+    let mut snap_idx = 0usize;
+    let mut last = Sample::default();
+    let started = Instant::now();
+    let mut failure: Option<Instability> = None;
+
+    loop {
+        let t = solver.time_s;
+        let m = solver.wire.midspan();
+        for k in 0..3 {
+            let d = m[k] - mid0[k];
+            if d.abs() > peaks[k].value_m.abs() {
+                peaks[k] = Peak { value_m: d, time_s: t, tau: plan.tau(t) };
+            }
+        }
+        let at_end = t >= horizon - tol;
+        if t >= next_sample - tol || at_end {
+            let d = solver.diagnostics();
+            last = Sample {
+                t_s: t,
+                tau: plan.tau(t),
+                mid_dx1_m: m[0] - mid0[0],
+                mid_dx2_m: m[1] - mid0[1],
+                mid_dx3_m: m[2] - mid0[2],
+                max_tension_n: d.max_tension_n,
+                kinetic_j: d.kinetic_j,
+                elastic_j: d.elastic_j,
+                potential_j: d.potential_j,
+                total_j: d.kinetic_j + d.elastic_j + d.potential_j,
+            };
+            if t >= next_sample - tol {
+                if let Some(w) = writers.as_mut() {
+                    w.series.write(&last).map_err(io_err(&w.dir.join("timeseries.csv")))?;
+                }
+                if opts.record {
+                    samples.push(last);
+                }
+                while next_sample <= t + tol {
+                    next_sample += plan.sample_interval_s;
+                }
+            }
+            if d.max_tension_n > peak_tension {
+                peak_tension = d.max_tension_n;
+                peak_tension_t = t;
+            }
+            peak_ke = peak_ke.max(d.kinetic_j);
+            if let Stop::Settled { fraction, window_s, .. } = plan.stop {
+                if d.kinetic_j <= fraction * peak_ke {
+                    let since = *below_since.get_or_insert(t);
+                    settled = t - since >= window_s;
+                } else {
+                    below_since = None;
+                }
+            }
+            if let Some(b) = &bar {
+                b.set_position((1000.0 * t / horizon) as u64);
+                b.set_message(format!("{t:.3}"));
+            }
+        }
+        while snap_idx < plan.snapshot_times_s.len() && plan.snapshot_times_s[snap_idx] <= t + tol {
+            if let Some(w) = writers.as_mut() {
+                w.snaps.write(&solver, plan.tau(t)).map_err(io_err(&w.dir.join("snapshots.csv")))?;
+            }
+            snap_idx += 1;
+        }
+        if settled || at_end {
+            break;
+        }
+        let target = plan.snapshot_times_s.get(snap_idx).copied().unwrap_or(horizon).min(horizon);
+        let step = if target - t <= dt * (1.0 + 1.0e-12) { target - t } else { dt };
+        if let Err(e) = solver.step(step) {
+            failure = Some(e);
+            break;
+        }
+        if step < dt {
+            solver.time_s = target;
+        }
+    }
+    let wall = started.elapsed().as_secs_f64();
+    if let Some(b) = bar {
+        b.finish_and_clear();
+    }
+
+    let t = solver.time_s;
+    let status = match (&failure, plan.stop, settled) {
+        (Some(_), _, _) => "unstable",
+        (None, Stop::EndTime(_), _) => "completed",
+        (None, Stop::Settled { .. }, true) => "settled",
+        (None, Stop::Settled { .. }, false) => "not_settled",
+    };
+    let summary = Summary {
+        name: plan.name.clone(),
+        status: status.into(),
+        settled,
+        final_time_s: t,
+        final_tau: plan.tau(t),
+        final_midspan_displacement_m: [last.mid_dx1_m, last.mid_dx2_m, last.mid_dx3_m],
+        final_max_tension_n: last.max_tension_n,
+        peak_midspan_displacement_m: peaks,
+        peak_max_tension_n: peak_tension,
+        peak_max_tension_time_s: peak_tension_t,
+        final_kinetic_j: last.kinetic_j,
+        steps: solver.steps,
+        segments: n,
+        dt_s: dt,
+        courant: plan.courant,
+        wave_speed_m_per_s: plan.wave_speed_m_per_s,
+        wall_time_s: wall,
+        node_steps_per_second: if wall > 0.0 { (n + 1) as f64 * solver.steps as f64 / wall } else { 0.0 },
+        instability: failure.as_ref().map(|f| InstabilityReport {
+            time_s: f.time_s,
+            node: f.node,
+            reason: f.to_string(),
+        }),
+    };
+    if let Some(w) = &writers {
+        w.summary(&summary)?;
+    }
+    let outcome = Outcome { summary, samples, solver };
+    match failure {
+        Some(instability) => Err(RunError::Unstable { instability, outcome: Box::new(outcome) }),
+        None => Ok(outcome),
+    }
+}

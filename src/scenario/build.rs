@@ -1,0 +1,239 @@
+//! From a validated scenario to a ready solver: derived quantities (`EA`, wave speed, time step), the
+//! initial shape with equally spaced nodes, the loads and the run plan.
+
+use super::schema::{Scenario, ShapeSpec, TensionLawSpec, WindLawSpec};
+use crate::scheme::courant;
+use crate::scheme::{Explicit, Loads, StepParams, WindLoad};
+use crate::wire::aero::{Aerodynamic, UniformNormal};
+use crate::wire::tension::LawKind;
+use crate::wire::{Conductor, Wire};
+
+/// When the run stops.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Stop {
+    /// at a fixed time [s]
+    EndTime(f64),
+    /// when the kinetic energy has stayed below `fraction` of its peak for `window_s`, or at `max_time_s`
+    Settled {
+        /// threshold as a fraction of the peak kinetic energy [-]
+        fraction: f64,
+        /// how long it must stay below [s]
+        window_s: f64,
+        /// time cap [s]
+        max_time_s: f64,
+    },
+}
+
+impl Stop {
+    /// The latest time the run may reach [s].
+    pub fn horizon_s(&self) -> f64 {
+        match *self {
+            Stop::EndTime(t) => t,
+            Stop::Settled { max_time_s, .. } => max_time_s,
+        }
+    }
+}
+
+/// A solver at `t = 0` with everything the driver needs to run it.
+#[derive(Clone, Debug)]
+pub struct Plan {
+    /// scenario name (or "scenario")
+    pub name: String,
+    /// the solver, at its initial state
+    pub solver: Explicit,
+    /// left support `A` [m]
+    pub left_support_m: [f64; 3],
+    /// right support `B` [m]
+    pub right_support_m: [f64; 3],
+    /// chord length `l = |B - A|` [m]
+    pub chord_m: f64,
+    /// longitudinal wave speed `c = sqrt(EA / rho0)` [m/s]
+    pub wave_speed_m_per_s: f64,
+    /// Courant number of (3.7) [-]
+    pub courant: f64,
+    /// when to stop
+    pub stop: Stop,
+    /// interval between time-series rows [s]
+    pub sample_interval_s: f64,
+    /// snapshot times, sorted [s]
+    pub snapshot_times_s: Vec<f64>,
+    /// speed of the dimensionless time `tau = t U / l` [m/s]
+    pub tau_speed_m_per_s: f64,
+}
+
+impl Plan {
+    /// Dimensionless time `tau = t U / l` of the paper (section 2).
+    pub fn tau(&self, t_s: f64) -> f64 {
+        t_s * self.tau_speed_m_per_s / self.chord_m
+    }
+    /// Midpoint of the chord `(A + B) / 2` [m].
+    pub fn chord_midpoint(&self) -> [f64; 3] {
+        [0, 1, 2].map(|k| 0.5 * (self.left_support_m[k] + self.right_support_m[k]))
+    }
+}
+
+/// Arc length of the parabola `y = 4 f u (1 - u)` over a chord `l` (`u` in [0, 1]) [m].
+pub fn parabola_length(chord_m: f64, sag_m: f64) -> f64 {
+    // Exact: with k = 4 f / l, L = l/2 sqrt(1 + k^2) + l/(2k) asinh(k).
+    let k = 4.0 * sag_m / chord_m;
+    0.5 * chord_m * (1.0 + k * k).sqrt() + chord_m / (2.0 * k) * k.asinh()
+}
+
+/// Nodes equally spaced in arc length along the initial shape; returns positions and the shape's length.
+fn initial_nodes(s: &Scenario) -> ([Vec<f64>; 3], f64) {
+    let (a, b) = (s.geometry.left_support_m, s.geometry.right_support_m);
+    let n = s.geometry.segments;
+    let d = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
+    let chord = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
+    let mut x = [vec![0.0; n + 1], vec![0.0; n + 1], vec![0.0; n + 1]];
+    match (s.initial.shape, s.initial.sag_m) {
+        (ShapeSpec::Parabola, Some(f)) => {
+            // p(u) = A + u (B - A) - 4 f u (1 - u) e3; the arc length s(u) has a closed form (below),
+            // inverted by bisection for each node.
+            let total = parabola_length(chord, f);
+            let k = 4.0 * f / chord;
+            let prim = |y: f64| 0.5 * (y * (1.0 + y * y).sqrt() + y.asinh());
+            // s(u) = (l / (2k)) [prim(k (2u - 1)) + prim(k)] is the arc length from u = 0 (ds/du = l sqrt(1 + (k(1-2u))^2)).
+            let arc = |u: f64| chord / (2.0 * k) * (prim(k * (2.0 * u - 1.0)) + prim(k));
+            for i in 0..=n {
+                let target = total * i as f64 / n as f64;
+                let (mut lo, mut hi) = (0.0_f64, 1.0_f64);
+                for _ in 0..200 {
+                    let mid = 0.5 * (lo + hi);
+                    if arc(mid) < target {
+                        lo = mid
+                    } else {
+                        hi = mid
+                    }
+                    if hi - lo < 1e-16 {
+                        break;
+                    }
+                }
+                let u = if i == n {
+                    1.0
+                } else if i == 0 {
+                    0.0
+                } else {
+                    0.5 * (lo + hi)
+                };
+                for kk in 0..3 {
+                    x[kk][i] = a[kk] + u * d[kk];
+                }
+                x[2][i] -= 4.0 * f * u * (1.0 - u);
+            }
+            (x, total)
+        }
+        _ => {
+            for i in 0..=n {
+                let u = i as f64 / n as f64;
+                for kk in 0..3 {
+                    x[kk][i] = a[kk] + u * d[kk];
+                }
+            }
+            (x, chord)
+        }
+    }
+}
+
+/// Build the solver and run plan of a validated scenario.
+///
+/// Panics only if the scenario was not validated first (internal misuse).
+pub fn build(s: &Scenario) -> Plan {
+    let cd = &s.conductor;
+    let ea = cd.axial_stiffness_n.unwrap_or_else(|| {
+        let (e, d) = (cd.youngs_modulus_pa.expect("validated"), cd.diameter_m.expect("validated"));
+        e * std::f64::consts::PI * d * d / 4.0
+    });
+    let rho = cd.linear_density_kg_per_m;
+    let n = s.geometry.segments;
+    let (x, shape_length) = initial_nodes(s);
+    let length = s.geometry.unstretched_length_m.unwrap_or(shape_length);
+    let ds = length / n as f64;
+    let law = match cd.tension_law {
+        TensionLawSpec::TensionOnly => LawKind::TensionOnly,
+        TensionLawSpec::Linear => LawKind::Linear,
+    };
+    let conductor = Conductor { axial_stiffness_n: ea, internal_friction_n_s: s.numerics.eta_n_s, law };
+    let wire = Wire::new(conductor, x, vec![ds; n], rho);
+
+    let c = courant::wave_speed(ea, rho);
+    let dt = courant::time_step(s.numerics.courant, ds, c);
+    let wind = s.loads.wind.as_ref().map(|w| {
+        let norm: f64 = w.direction.iter().map(|v| v * v).sum::<f64>().sqrt();
+        let direction = w.direction.map(|v| v / norm);
+        let mu_over_u = s.numerics.mu / w.speed_m_per_s;
+        match w.law {
+            WindLawSpec::UniformNormal => WindLoad::UniformNormal(UniformNormal {
+                direction,
+                pressure_n_per_m: w.pressure_n_per_m.expect("validated"),
+                mu_over_u,
+            }),
+            WindLawSpec::Aerodynamic => {
+                let qd = 0.5 * w.air_density_kg_per_m3 * w.speed_m_per_s.powi(2) * cd.diameter_m.expect("validated");
+                WindLoad::Aerodynamic(Aerodynamic {
+                    direction,
+                    qd_cn: qd * w.normal_coefficient,
+                    qd_ct: qd * w.tangential_coefficient,
+                    mu_over_u,
+                })
+            }
+        }
+    });
+    let loads = Loads {
+        gravity_m_per_s2: s.loads.gravity_m_per_s2,
+        uniform_load_n_per_m: s.loads.uniform_load_n_per_m,
+        wind,
+        wind_scale: 1.0,
+    };
+    let params = StepParams {
+        dt_s: dt,
+        smoothing: s.numerics.smoothing,
+        mass_damping_per_s: s.numerics.mass_damping_per_s,
+        max_speed_m_per_s: s.numerics.max_speed_m_per_s.unwrap_or(c),
+    };
+    let stop = match (s.duration.end_time_s, &s.duration.until_settled) {
+        (Some(t), _) => Stop::EndTime(t),
+        (None, Some(st)) => {
+            Stop::Settled { fraction: st.kinetic_energy_fraction, window_s: st.window_s, max_time_s: st.max_time_s }
+        }
+        (None, None) => unreachable!("validated"),
+    };
+    let mut snaps = s.output.snapshot_times_s.clone();
+    snaps.sort_by(f64::total_cmp);
+    snaps.dedup();
+    let (a, b) = (s.geometry.left_support_m, s.geometry.right_support_m);
+    Plan {
+        name: s.name.clone().unwrap_or_else(|| "scenario".into()),
+        solver: Explicit::new(wire, loads, params),
+        left_support_m: a,
+        right_support_m: b,
+        chord_m: (0..3).map(|k| (b[k] - a[k]).powi(2)).sum::<f64>().sqrt(),
+        wave_speed_m_per_s: c,
+        courant: s.numerics.courant,
+        stop,
+        sample_interval_s: s.output.sample_interval_s,
+        snapshot_times_s: snaps,
+        tau_speed_m_per_s: s.output.tau_speed_m_per_s,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn parabola_length_matches_quadrature() {
+        // Composite Simpson on sqrt(1 + (k (1 - 2u))^2) l du with 2000 panels: error ~ 1e-13 here.
+        let (l, f) = (160.0, 7.27);
+        let k = 4.0 * f / l;
+        let m = 2000;
+        let h = 1.0 / m as f64;
+        let g = |u: f64| l * (1.0 + (k * (1.0 - 2.0 * u)).powi(2)).sqrt();
+        let mut sum = g(0.0) + g(1.0);
+        for i in 1..m {
+            sum += if i % 2 == 1 { 4.0 } else { 2.0 } * g(i as f64 * h);
+        }
+        let simpson = sum * h / 3.0;
+        assert!((parabola_length(l, f) - simpson).abs() < 1e-9, "{} vs {simpson}", parabola_length(l, f));
+    }
+}

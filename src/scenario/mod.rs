@@ -1,0 +1,73 @@
+//! Scenarios: the TOML file format ([`schema`]), its validation ([`validate`]) and its translation into a
+//! solver ([`build`]). Loading a file either returns a scenario that is safe to run or an
+//! [`InputError`] that names the file, the field, the value and what is allowed.
+
+pub mod build;
+pub mod schema;
+pub mod validate;
+
+use std::fmt;
+use std::path::Path;
+
+pub use build::{Plan, build};
+pub use schema::Scenario;
+pub use validate::Problem;
+
+/// Why a scenario could not be used. Every variant names the file.
+#[derive(Debug, thiserror::Error)]
+pub enum InputError {
+    /// The file could not be read.
+    #[error("{file}: cannot read the scenario: {source}")]
+    Io {
+        /// the scenario file
+        file: String,
+        /// the I/O error
+        source: std::io::Error,
+    },
+    /// TOML syntax error, unknown field or wrong type (the message has line and column).
+    #[error("{file}: {message}")]
+    Parse {
+        /// the scenario file
+        file: String,
+        /// the parser's message with line and column
+        message: String,
+    },
+    /// One or more fields have values outside their allowed range.
+    #[error("{}", Invalid(.file, .problems))]
+    Invalid {
+        /// the scenario file
+        file: String,
+        /// each offending field
+        problems: Vec<Problem>,
+    },
+}
+
+struct Invalid<'a>(&'a String, &'a Vec<Problem>);
+
+impl fmt::Display for Invalid<'_> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let (file, problems) = (self.0, self.1);
+        for (k, p) in problems.iter().enumerate() {
+            if k > 0 {
+                writeln!(f)?;
+            }
+            write!(f, "{file}: {p}")?;
+        }
+        Ok(())
+    }
+}
+
+/// Parse a scenario from TOML text; `file` names it in messages.
+pub fn parse(text: &str, file: &str) -> Result<Scenario, InputError> {
+    let scenario: Scenario =
+        toml::from_str(text).map_err(|e| InputError::Parse { file: file.to_string(), message: e.to_string() })?;
+    let problems = validate::validate(&scenario);
+    if problems.is_empty() { Ok(scenario) } else { Err(InputError::Invalid { file: file.to_string(), problems }) }
+}
+
+/// Read, parse and validate a scenario file.
+pub fn load(path: &Path) -> Result<Scenario, InputError> {
+    let file = path.display().to_string();
+    let text = std::fs::read_to_string(path).map_err(|source| InputError::Io { file: file.clone(), source })?;
+    parse(&text, &file)
+}

@@ -1,0 +1,291 @@
+//! The scenario file: a TOML document in SI units, read with serde (`deny_unknown_fields` everywhere, so a
+//! misspelt key is an error, not a silently ignored value). Every field names its unit and symbol.
+//! Defaults cite their source. A scenario is data; [`super::validate`] checks it before anything runs and
+//! [`super::build`] turns it into a solver.
+
+use serde::Deserialize;
+
+/// A complete scenario.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Scenario {
+    /// short name of the case (free text)
+    #[serde(default)]
+    pub name: Option<String>,
+    /// what the case is and where it comes from (free text)
+    #[serde(default)]
+    pub description: Option<String>,
+    /// the conductor's material and section
+    pub conductor: ConductorSpec,
+    /// supports and discretisation
+    pub geometry: GeometrySpec,
+    /// initial shape (at rest)
+    #[serde(default)]
+    pub initial: InitialSpec,
+    /// gravity, uniform loads and wind
+    #[serde(default)]
+    pub loads: LoadsSpec,
+    /// time step, smoothing and damping
+    #[serde(default)]
+    pub numerics: NumericsSpec,
+    /// when the run ends
+    pub duration: DurationSpec,
+    /// what is written
+    #[serde(default)]
+    pub output: OutputSpec,
+}
+
+/// Constitutive law selector.
+#[derive(Clone, Copy, Debug, Default, Deserialize, PartialEq, Eq)]
+#[serde(rename_all = "snake_case")]
+pub enum TensionLawSpec {
+    /// `T = max(EA e + eta de/dt, 0)` for `e > 0`, else 0 (a conductor cannot be compressed; default)
+    #[default]
+    TensionOnly,
+    /// `T = EA e + eta de/dt`, compression allowed (analytic tests)
+    Linear,
+}
+
+/// The conductor. Give the axial stiffness either directly (`axial_stiffness_n`) or as Young's modulus
+/// and diameter (`youngs_modulus_pa` with `diameter_m`, `EA = E pi d^2 / 4`).
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ConductorSpec {
+    /// axial stiffness `EA` [N] (section 4: "E = 80734 g [N]" is this force)
+    #[serde(default)]
+    pub axial_stiffness_n: Option<f64>,
+    /// Young's modulus `E` [Pa] (section 5: 6.25e10 Pa for aluminium); needs `diameter_m`
+    #[serde(default)]
+    pub youngs_modulus_pa: Option<f64>,
+    /// conductor diameter `d` [m]: the aerodynamic law (2.5) and `EA` from `E`
+    #[serde(default)]
+    pub diameter_m: Option<f64>,
+    /// linear density `rho0` [kg/m] per unit unstretched length (wire plus ice, if iced)
+    pub linear_density_kg_per_m: f64,
+    /// constitutive law; default `"tension_only"`
+    #[serde(default)]
+    pub tension_law: TensionLawSpec,
+}
+
+/// Supports and grid.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct GeometrySpec {
+    /// left support position `A = (x1, x2, x3)` [m]
+    pub left_support_m: [f64; 3],
+    /// right support position `B = (x1, x2, x3)` [m]; heights may differ
+    pub right_support_m: [f64; 3],
+    /// number of segments `N` [-] (nodes `0..=N`); even `N` puts a node at mid-span
+    pub segments: usize,
+    /// unstretched (stress-free) length of the wire `S` [m]; default: the length of the initial shape,
+    /// so that the wire starts unstressed
+    #[serde(default)]
+    pub unstretched_length_m: Option<f64>,
+}
+
+/// Initial shape kind.
+#[derive(Clone, Copy, Debug, Default, Deserialize, PartialEq, Eq)]
+#[serde(rename_all = "snake_case")]
+pub enum ShapeSpec {
+    /// the straight chord from `A` to `B` (the paper's start, sections 4.1-4.3; default)
+    #[default]
+    Straight,
+    /// a parabola in the vertical plane through the chord, sagging `sag_m` below the chord's midpoint
+    Parabola,
+}
+
+/// Initial state. The wire starts at rest; nodes are equally spaced in arc length along the shape.
+#[derive(Clone, Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct InitialSpec {
+    /// `"straight"` (default) or `"parabola"`
+    #[serde(default)]
+    pub shape: ShapeSpec,
+    /// mid-span sag `f` [m] below the chord, measured vertically; only with `shape = "parabola"`
+    #[serde(default)]
+    pub sag_m: Option<f64>,
+}
+
+/// Loads.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LoadsSpec {
+    /// gravitational acceleration `g` [m/s^2] along `-x3`; default 9.81 (the paper's value, 4.1); 0 for none
+    #[serde(default = "default_gravity")]
+    pub gravity_m_per_s2: f64,
+    /// uniform force per unit unstretched length `q` [N/m] in a fixed direction (e.g. a wind drag that
+    /// does not turn with the wire); default zero
+    #[serde(default)]
+    pub uniform_load_n_per_m: [f64; 3],
+    /// wind, if any
+    #[serde(default)]
+    pub wind: Option<WindSpec>,
+}
+
+impl Default for LoadsSpec {
+    fn default() -> Self {
+        LoadsSpec { gravity_m_per_s2: default_gravity(), uniform_load_n_per_m: [0.0; 3], wind: None }
+    }
+}
+
+fn default_gravity() -> f64 {
+    9.81
+}
+
+/// Wind law selector.
+#[derive(Clone, Copy, Debug, Deserialize, PartialEq, Eq)]
+#[serde(rename_all = "snake_case")]
+pub enum WindLawSpec {
+    /// the aerodynamic law (2.5): `F_n = q d (c_n sin^2 a + c_tau sin a)`, `F_tau = q d c_tau cos^2 a`
+    Aerodynamic,
+    /// a uniform pressure `p` [N/m] normal to the wire in the plane of wire and wind (section 4.1)
+    UniformNormal,
+}
+
+/// Wind. Its direction is the flow direction (the paper's `x1`).
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct WindSpec {
+    /// `"aerodynamic"` or `"uniform_normal"`
+    pub law: WindLawSpec,
+    /// flow direction `w` [-], normalised on reading; default `[1, 0, 0]` (the paper's `x1`)
+    #[serde(default = "default_wind_direction")]
+    pub direction: [f64; 3],
+    /// undisturbed wind speed `U` [m/s]; scales the damping (2.6) and, for the aerodynamic law, `q`
+    pub speed_m_per_s: f64,
+    /// air density `rho_air` [kg/m^3]; default 1.225 (NOTES.md, ISA sea level)
+    #[serde(default = "default_air_density")]
+    pub air_density_kg_per_m3: f64,
+    /// normal force coefficient `c_n` [-]; default 1.8446 (paper, after (2.5))
+    #[serde(default = "default_cn")]
+    pub normal_coefficient: f64,
+    /// tangential force coefficient `c_tau` [-]; default 0.0554 (paper, after (2.5))
+    #[serde(default = "default_ct")]
+    pub tangential_coefficient: f64,
+    /// line pressure `p` [N/m] per unit deformed length, for `law = "uniform_normal"` only
+    /// (section 4.1 uses `p = rho_air U^2 d / 2 = 3.805 N/m`)
+    #[serde(default)]
+    pub pressure_n_per_m: Option<f64>,
+}
+
+fn default_wind_direction() -> [f64; 3] {
+    [1.0, 0.0, 0.0]
+}
+fn default_air_density() -> f64 {
+    1.225
+}
+fn default_cn() -> f64 {
+    1.8446
+}
+fn default_ct() -> f64 {
+    0.0554
+}
+
+/// Numerical parameters. Defaults give the undamped scheme (3.1), (3.6), (3.7): damping is physics the
+/// scenario must state (NOTES.md).
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct NumericsSpec {
+    /// Courant number `C = c dt / ds` [-] with `c = sqrt(EA / rho0)` (3.7); in (0, 1] and below the
+    /// internal-friction limit `sqrt(1 + z^2) - z`; default 0.9 (paper section 3: 0.5 to 1)
+    #[serde(default = "default_courant")]
+    pub courant: f64,
+    /// velocity smoothing per step `b = beta / ds^2` [-] (3.3), in [0, 0.25]; paper range 0.015 to 0.03;
+    /// default 0 (no smoothing)
+    #[serde(default)]
+    pub smoothing: f64,
+    /// aerodynamic damping coefficient `mu` [-] of (2.6), in [0, 1]; paper range 0.1 to 0.2; default 0
+    #[serde(default)]
+    pub mu: f64,
+    /// Kelvin-Voigt internal friction `eta` [N s] of (3.4), >= 0; default 0
+    #[serde(default)]
+    pub eta_n_s: f64,
+    /// mass-proportional damping `zeta` [1/s] (not in the paper: still-air drag or a dynamic-relaxation
+    /// aid), >= 0 with `zeta dt < 1`; default 0
+    #[serde(default)]
+    pub mass_damping_per_s: f64,
+    /// speed bound [m/s] above which a run is stopped as unstable; default: the longitudinal wave
+    /// speed `c`, which no material point of a stable solution approaches
+    #[serde(default)]
+    pub max_speed_m_per_s: Option<f64>,
+}
+
+impl Default for NumericsSpec {
+    fn default() -> Self {
+        NumericsSpec {
+            courant: default_courant(),
+            smoothing: 0.0,
+            mu: 0.0,
+            eta_n_s: 0.0,
+            mass_damping_per_s: 0.0,
+            max_speed_m_per_s: None,
+        }
+    }
+}
+
+fn default_courant() -> f64 {
+    0.9
+}
+
+/// Duration: give exactly one of `end_time_s` and `until_settled`.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct DurationSpec {
+    /// end time `t_end` [s]
+    #[serde(default)]
+    pub end_time_s: Option<f64>,
+    /// run until the wire settles
+    #[serde(default)]
+    pub until_settled: Option<SettleSpec>,
+}
+
+/// "Until settled": the kinetic energy stays below `kinetic_energy_fraction` of its peak for
+/// `window_s` seconds, or the time cap is reached (then the run ends with `settled = false`).
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SettleSpec {
+    /// threshold as a fraction of the peak kinetic energy [-], in (0, 1)
+    pub kinetic_energy_fraction: f64,
+    /// how long the kinetic energy must stay below the threshold [s], > 0; default 1 s
+    #[serde(default = "default_window")]
+    pub window_s: f64,
+    /// time cap [s], > 0
+    pub max_time_s: f64,
+}
+
+fn default_window() -> f64 {
+    1.0
+}
+
+/// Output.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct OutputSpec {
+    /// interval between rows of `timeseries.csv` [s], > 0; default 0.05
+    #[serde(default = "default_sample")]
+    pub sample_interval_s: f64,
+    /// times at which the whole shape goes to `snapshots.csv` [s]; the run steps exactly onto them
+    #[serde(default)]
+    pub snapshot_times_s: Vec<f64>,
+    /// speed `U` [m/s] of the dimensionless time `tau = t U / l` (l = chord length); default 20 (the
+    /// paper's wind speed, section 4)
+    #[serde(default = "default_tau_speed")]
+    pub tau_speed_m_per_s: f64,
+}
+
+impl Default for OutputSpec {
+    fn default() -> Self {
+        OutputSpec {
+            sample_interval_s: default_sample(),
+            snapshot_times_s: Vec::new(),
+            tau_speed_m_per_s: default_tau_speed(),
+        }
+    }
+}
+
+fn default_sample() -> f64 {
+    0.05
+}
+fn default_tau_speed() -> f64 {
+    20.0
+}

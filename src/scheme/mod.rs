@@ -1,0 +1,8 @@
+//! Numerical schemes: the explicit staggered-grid leapfrog (3.1), (3.6) with velocity smoothing (3.3)
+//! and the Courant time step (3.7).
+
+pub mod courant;
+pub mod explicit;
+pub mod smoothing;
+
+pub use explicit::{Diagnostics, Explicit, Instability, InstabilityReason, Loads, StepParams, WindLoad};

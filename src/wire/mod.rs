@@ -1,0 +1,133 @@
+//! Physics of the wire: the discrete, absolutely flexible wire of section 1, its state in
+//! structure-of-arrays form, its constitutive law and the distributed loads on it.
+//!
+//! Grid (section 3): nodes `i = 0..=N` at Lagrangian coordinates `s_i` carry position `r_i` and
+//! velocity `v_i`; segments `i+1/2` (stored at index `i = 0..N`) carry the stress-free length
+//! `l0_{i+1/2}`, the mass, and (computed each step) strain, strain rate and tension. A node's mass is half
+//! the mass of each adjacent segment (a lumped-mass form of `dm = rho0 ds0`, section 1).
+//!
+//! Coordinates as in the paper: `x1` horizontal across the line (the wind direction), `x2` along the
+//! span, `x3` vertical up; gravity acts along `-x3`. Plane problems are this same 3D wire with unused
+//! components zero.
+
+pub mod aero;
+pub mod tension;
+
+/// Properties of the conductor shared by all segments.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Conductor {
+    /// axial stiffness `EA` [N]
+    pub axial_stiffness_n: f64,
+    /// Kelvin-Voigt internal friction `eta` [N s], eq. (3.4)
+    pub internal_friction_n_s: f64,
+    /// constitutive law: tension-only (default) or linear
+    pub law: tension::LawKind,
+}
+
+/// The discrete wire: node and segment arrays, each a contiguous `Vec<f64>` per component.
+#[derive(Clone, Debug)]
+pub struct Wire {
+    /// conductor properties
+    pub conductor: Conductor,
+    /// node positions `x1, x2, x3` [m], each of length `N + 1`
+    pub x: [Vec<f64>; 3],
+    /// node velocities `v1, v2, v3` [m/s] at the last half step `n - 1/2`, each of length `N + 1`
+    pub v: [Vec<f64>; 3],
+    /// lumped node mass `m_i` [kg]
+    pub mass: Vec<f64>,
+    /// `1 / m_i` [1/kg]
+    pub inv_mass: Vec<f64>,
+    /// 1.0 for a free node, 0.0 for a fixed support node [-]
+    pub free: Vec<f64>,
+    /// segment stress-free length `l0_{i+1/2}` [m], length `N` (thermal strain scales it)
+    pub rest_length: Vec<f64>,
+    /// segment unstretched length at the reference temperature `L_{i+1/2}` [m], length `N`
+    pub reference_length: Vec<f64>,
+    /// segment mass `rho0 L` [kg], length `N` (ice changes it)
+    pub segment_mass: Vec<f64>,
+    /// 1.0 for an intact segment, 0.0 for a broken one [-], length `N` (the break (3.5))
+    pub intact: Vec<f64>,
+}
+
+impl Wire {
+    /// A wire through the given node positions, at rest, with the given segment stress-free lengths and
+    /// linear density `rho0` [kg/m] per unit stress-free length; both end nodes are fixed supports.
+    ///
+    /// Panics on inconsistent array lengths (internal misuse); physical input is validated upstream.
+    pub fn new(conductor: Conductor, x: [Vec<f64>; 3], rest_length: Vec<f64>, linear_density_kg_per_m: f64) -> Self {
+        let n_nodes = x[0].len();
+        assert!(n_nodes >= 3, "a wire needs at least two segments");
+        assert!(x.iter().all(|c| c.len() == n_nodes) && rest_length.len() == n_nodes - 1);
+        let segment_mass: Vec<f64> = rest_length.iter().map(|l| l * linear_density_kg_per_m).collect();
+        let mut free = vec![1.0; n_nodes];
+        free[0] = 0.0;
+        free[n_nodes - 1] = 0.0;
+        let mut wire = Wire {
+            conductor,
+            v: [vec![0.0; n_nodes], vec![0.0; n_nodes], vec![0.0; n_nodes]],
+            x,
+            mass: vec![0.0; n_nodes],
+            inv_mass: vec![0.0; n_nodes],
+            free,
+            reference_length: rest_length.clone(),
+            rest_length,
+            segment_mass,
+            intact: vec![1.0; n_nodes - 1],
+        };
+        wire.update_node_masses();
+        wire
+    }
+
+    /// Number of segments `N`.
+    pub fn segments(&self) -> usize {
+        self.rest_length.len()
+    }
+
+    /// Number of nodes `N + 1`.
+    pub fn nodes(&self) -> usize {
+        self.x[0].len()
+    }
+
+    /// Recompute the lumped node masses from the segment masses (after ice is added or dropped).
+    pub fn update_node_masses(&mut self) {
+        let n = self.segments();
+        for i in 0..=n {
+            let left = if i > 0 { self.segment_mass[i - 1] } else { 0.0 };
+            let right = if i < n { self.segment_mass[i] } else { 0.0 };
+            self.mass[i] = 0.5 * (left + right);
+            self.inv_mass[i] = 1.0 / self.mass[i];
+        }
+    }
+
+    /// Position of node `i` [m].
+    pub fn position(&self, i: usize) -> [f64; 3] {
+        [self.x[0][i], self.x[1][i], self.x[2][i]]
+    }
+
+    /// Strain `e = |r_{j+1} - r_j| / l0 - 1` of segment `j` [-].
+    pub fn strain(&self, j: usize) -> f64 {
+        let a = self.position(j);
+        let b = self.position(j + 1);
+        let d = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
+        (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt() / self.rest_length[j] - 1.0
+    }
+
+    /// Total stress-free length `sum l0` [m].
+    pub fn total_rest_length(&self) -> f64 {
+        self.rest_length.iter().sum()
+    }
+
+    /// Total mass [kg].
+    pub fn total_mass(&self) -> f64 {
+        self.segment_mass.iter().sum()
+    }
+
+    /// The point at the middle of the span in the Lagrangian coordinate, `s = S/2` [m]: node `N/2` for
+    /// even `N`, the mean of the two middle nodes for odd `N` (NOTES.md, "Mid-span").
+    pub fn midspan(&self) -> [f64; 3] {
+        let n = self.segments();
+        let (a, b) = (n / 2, n.div_ceil(2));
+        let (pa, pb) = (self.position(a), self.position(b));
+        [0.5 * (pa[0] + pb[0]), 0.5 * (pa[1] + pb[1]), 0.5 * (pa[2] + pb[2])]
+    }
+}

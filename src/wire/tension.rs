@@ -1,0 +1,91 @@
+//! Constitutive law of a segment: the Kelvin-Voigt relation (3.4),
+//!
+//! ```text
+//! T_{i+1/2} = EA e_{i+1/2} + eta de_{i+1/2}/dt,      e = |r_{i+1} - r_i| / l0_{i+1/2} - 1,
+//! ```
+//!
+//! where `EA` [N] is the axial stiffness, `eta` [N s] the internal-friction coefficient and `l0` [m] the
+//! stress-free length of the segment (which thermal strain scales). A conductor cannot carry compression,
+//! so the default law is tension-only: a slack segment (`e <= 0`) carries nothing, and the viscous part may
+//! reduce the tension to zero but never make it negative (paper section 2: "e >= 0 under tension";
+//! NOTES.md, "Compression"). The linear law, compression allowed, exists for analytic tests.
+//!
+//! The law is a type parameter of the time step, so the choice is made once per run and the node loop
+//! has no branch on it.
+
+/// A segment's constitutive law, evaluated inside the hot loop (so: `#[inline(always)]`, branch-free).
+pub trait TensionLaw: Copy {
+    /// Tension `T` [N] for strain `e` [-] and strain rate `edot` [1/s], with axial stiffness `ea` [N]
+    /// and internal friction `eta` [N s].
+    fn tension(ea: f64, eta: f64, e: f64, edot: f64) -> f64;
+    /// Stored elastic energy per unit stress-free length [J/m] at strain `e`.
+    fn energy_density(ea: f64, e: f64) -> f64;
+}
+
+/// Tension-only Kelvin-Voigt law: `T = max(EA e + eta edot, 0)` for `e > 0`, `T = 0` for `e <= 0`.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct TensionOnly;
+
+/// Linear Kelvin-Voigt law `T = EA e + eta edot`, compression allowed (for analytic tests).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Linear;
+
+impl TensionLaw for TensionOnly {
+    #[inline(always)]
+    fn tension(ea: f64, eta: f64, e: f64, edot: f64) -> f64 {
+        let t = (ea * e + eta * edot).max(0.0);
+        if e > 0.0 { t } else { 0.0 }
+    }
+    #[inline(always)]
+    fn energy_density(ea: f64, e: f64) -> f64 {
+        let ep = e.max(0.0);
+        0.5 * ea * ep * ep
+    }
+}
+
+impl TensionLaw for Linear {
+    #[inline(always)]
+    fn tension(ea: f64, eta: f64, e: f64, edot: f64) -> f64 {
+        ea * e + eta * edot
+    }
+    #[inline(always)]
+    fn energy_density(ea: f64, e: f64) -> f64 {
+        0.5 * ea * e * e
+    }
+}
+
+/// Which law a run uses; the time step dispatches on it once per step, outside the node loop.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum LawKind {
+    /// [`TensionOnly`]: slack segments carry nothing (default; a conductor cannot be compressed).
+    TensionOnly,
+    /// [`Linear`]: compression allowed.
+    Linear,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn tension_only_is_zero_when_slack_and_never_negative() {
+        assert_eq!(TensionOnly::tension(1.0e6, 10.0, -1.0e-3, 0.0), 0.0);
+        // Stretched but relaxing fast: the viscous part cannot push.
+        assert_eq!(TensionOnly::tension(1.0e6, 10.0, 1.0e-4, -1.0e3), 0.0);
+        assert_eq!(TensionOnly::tension(1.0e6, 10.0, 1.0e-3, 2.0), 1.0e3 + 20.0);
+        assert_eq!(Linear::tension(1.0e6, 0.0, -1.0e-3, 0.0), -1.0e3);
+    }
+
+    #[test]
+    fn energy_density_is_the_integral_of_the_elastic_tension() {
+        // W(e) = int_0^e EA e' de' = EA e^2 / 2 ; check by the midpoint rule with 1000 panels (exact for
+        // a linear integrand up to rounding).
+        let (ea, e) = (7.9e5, 4.0e-3);
+        let n = 1000;
+        let h = e / n as f64;
+        let w: f64 = (0..n).map(|k| TensionOnly::tension(ea, 0.0, (k as f64 + 0.5) * h, 0.0) * h).sum();
+        assert!((w - TensionOnly::energy_density(ea, e)).abs() < 1e-12 * w);
+        assert_eq!(TensionOnly::energy_density(ea, -e), 0.0);
+        assert_eq!(Linear::energy_density(ea, -e), Linear::energy_density(ea, e));
+    }
+}
