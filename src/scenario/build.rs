@@ -3,7 +3,7 @@
 
 use super::schema::{Scenario, ShapeSpec, TensionLawSpec, WindLawSpec};
 use crate::scheme::courant;
-use crate::scheme::{Explicit, Loads, StepParams, WindLoad};
+use crate::scheme::{Explicit, Loads, StepParams, WindGate, WindLoad};
 use crate::wire::aero::{Aerodynamic, UniformNormal};
 use crate::wire::tension::LawKind;
 use crate::wire::{Conductor, Wire};
@@ -184,6 +184,7 @@ pub fn build(s: &Scenario) -> Plan {
         uniform_load_n_per_m: s.loads.uniform_load_n_per_m,
         wind,
         wind_scale: 1.0,
+        wind_gate: WindGate::Always,
     };
     let params = StepParams {
         dt_s: dt,

@@ -26,7 +26,7 @@
 
 use super::smoothing;
 use crate::wire::Wire;
-use crate::wire::aero::{Aerodynamic, NoWind, SegmentLoad, UniformNormal};
+use crate::wire::aero::{Aerodynamic, Downwind, NoWind, SegmentLoad, UniformNormal};
 use crate::wire::tension::{LawKind, Linear, TensionLaw, TensionOnly};
 
 /// Wind load of a run (the laws of [`crate::wire::aero`]), before the on/off scale is applied.
@@ -49,6 +49,29 @@ pub struct Loads {
     pub wind: Option<WindLoad>,
     /// multiplier on the wind load [-] (1 = on, 0 = off; gusts vary it)
     pub wind_scale: f64,
+    /// where the wind acts
+    pub wind_gate: WindGate,
+}
+
+/// Where the wind acts.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum WindGate {
+    /// on every segment (default)
+    #[default]
+    Always,
+    /// only on segments moving downwind (the "dancing wires" gust of section 4.5)
+    Downwind,
+}
+
+/// A ground plane `x3 = height`: a node that reaches it is put back on it and, if moving down, rebounds
+/// with its normal velocity multiplied by `-restitution`; from then on no distributed load acts on it
+/// (section 4.4: restitution 0.6 returns 0.6^2 = 36 % of the vertical impact energy).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Ground {
+    /// ground height `x3` [m]
+    pub height_m: f64,
+    /// coefficient of restitution on the normal velocity [-], in [0, 1]
+    pub restitution: f64,
 }
 
 /// Numerical parameters of the step.
@@ -130,6 +153,11 @@ pub struct Explicit {
     pub time_s: f64,
     /// steps taken
     pub steps: u64,
+    /// ground plane, if contact is on
+    pub ground: Option<Ground>,
+    /// prescribed nodal forces `f_i` [N] added to every node's force (e.g. the source term of a
+    /// manufactured solution), set by the caller before each step for the time `t_n`; `None` for none
+    pub nodal_force: Option<[Vec<f64>; 3]>,
     /// length of the last drift `dt_{n-1/2}` [s] (0 before the first step)
     dt_prev: f64,
     /// segment tension force `T t` [N], padded: index `j + 1` for segment `j`, zero at 0 and `N + 1`
@@ -143,7 +171,18 @@ impl Explicit {
     pub fn new(wire: Wire, loads: Loads, params: StepParams) -> Self {
         let pad = wire.segments() + 2;
         let z = || [vec![0.0; pad], vec![0.0; pad], vec![0.0; pad]];
-        Explicit { wire, loads, params, time_s: 0.0, steps: 0, dt_prev: 0.0, fs: z(), es: z() }
+        Explicit {
+            wire,
+            loads,
+            params,
+            time_s: 0.0,
+            steps: 0,
+            ground: None,
+            nodal_force: None,
+            dt_prev: 0.0,
+            fs: z(),
+            es: z(),
+        }
     }
 
     /// Advance by one step of length `dt` [s] (at most the nominal step; shorter to land on a time).
@@ -151,7 +190,13 @@ impl Explicit {
         debug_assert!(dt > 0.0 && dt <= self.params.dt_s * (1.0 + 1e-12));
         self.compute_segment_forces();
         let kick = 0.5 * (self.dt_prev + dt);
-        self.kick(kick);
+        match self.nodal_force.take() {
+            Some(f) => {
+                self.kick::<true>(kick, &f);
+                self.nodal_force = Some(f);
+            }
+            None => self.kick::<false>(kick, &[const { Vec::new() }; 3]),
+        }
         if self.params.smoothing > 0.0 {
             let b = self.params.smoothing * (dt / self.params.dt_s);
             let w = &mut self.wire;
@@ -160,6 +205,9 @@ impl Explicit {
             }
         }
         let ok = self.drift(dt);
+        if let Some(g) = self.ground {
+            self.ground_contact(g);
+        }
         self.dt_prev = dt;
         self.time_s += dt;
         self.steps += 1;
@@ -171,28 +219,35 @@ impl Explicit {
         self.dt_prev
     }
 
-    /// Pass 1 over segments: tension force and distributed load, dispatched once on (law, wind).
+    /// Pass 1 over segments: tension force and distributed load, dispatched once on (wind, gate, law).
     fn compute_segment_forces(&mut self) {
         let scale = self.loads.wind_scale;
         let q = self.loads.uniform_load_n_per_m;
-        match (self.wire.conductor.law, self.loads.wind) {
-            (LawKind::TensionOnly, None) => self.segment_pass::<TensionOnly, _>(&NoWind, q),
-            (LawKind::Linear, None) => self.segment_pass::<Linear, _>(&NoWind, q),
-            (law, Some(WindLoad::UniformNormal(mut u))) => {
+        match self.loads.wind {
+            None => self.dispatch_law(&NoWind, q),
+            Some(WindLoad::UniformNormal(mut u)) => {
                 u.pressure_n_per_m *= scale;
-                match law {
-                    LawKind::TensionOnly => self.segment_pass::<TensionOnly, _>(&u, q),
-                    LawKind::Linear => self.segment_pass::<Linear, _>(&u, q),
-                }
+                self.dispatch_gate(u, u.direction, q);
             }
-            (law, Some(WindLoad::Aerodynamic(mut a))) => {
+            Some(WindLoad::Aerodynamic(mut a)) => {
                 a.qd_cn *= scale;
                 a.qd_ct *= scale;
-                match law {
-                    LawKind::TensionOnly => self.segment_pass::<TensionOnly, _>(&a, q),
-                    LawKind::Linear => self.segment_pass::<Linear, _>(&a, q),
-                }
+                self.dispatch_gate(a, a.direction, q);
             }
+        }
+    }
+
+    fn dispatch_gate<W: SegmentLoad>(&mut self, load: W, direction: [f64; 3], q: [f64; 3]) {
+        match self.loads.wind_gate {
+            WindGate::Always => self.dispatch_law(&load, q),
+            WindGate::Downwind => self.dispatch_law(&Downwind { load, direction }, q),
+        }
+    }
+
+    fn dispatch_law<W: SegmentLoad>(&mut self, load: &W, q: [f64; 3]) {
+        match self.wire.conductor.law {
+            LawKind::TensionOnly => self.segment_pass::<TensionOnly, W>(load, q),
+            LawKind::Linear => self.segment_pass::<Linear, W>(load, q),
         }
     }
 
@@ -237,23 +292,45 @@ impl Explicit {
         }
     }
 
-    /// Pass 2 over nodes: `v += kick * a` on free nodes.
+    /// Pass 2 over nodes: `v += kick * a` on free nodes; `EXTRA` adds the prescribed nodal forces.
     #[inline(never)]
-    fn kick(&mut self, kick: f64) {
+    fn kick<const EXTRA: bool>(&mut self, kick: f64, extra: &[Vec<f64>; 3]) {
         let w = &mut self.wire;
         let n1 = w.nodes();
         let inv_m = &w.inv_mass[..n1];
         let free = &w.free[..n1];
+        let exposed = &w.exposed[..n1];
         let zeta = self.params.mass_damping_per_s;
         let g = [0.0, 0.0, -self.loads.gravity_m_per_s2];
         for k in 0..3 {
             let (flo, fhi) = (&self.fs[k][..n1], &self.fs[k][1..n1 + 1]);
             let (elo, ehi) = (&self.es[k][..n1], &self.es[k][1..n1 + 1]);
             let v = &mut w.v[k][..n1];
+            let ex = if EXTRA { &extra[k][..n1] } else { &[][..] };
             let gk = g[k];
             for i in 0..n1 {
-                let a = (fhi[i] - flo[i] + ehi[i] + elo[i]) * inv_m[i] + gk - zeta * v[i];
+                let mut f = fhi[i] - flo[i] + (ehi[i] + elo[i]) * exposed[i];
+                if EXTRA {
+                    f += ex[i];
+                }
+                let a = f * inv_m[i] + gk - zeta * v[i];
                 v[i] += kick * free[i] * a;
+            }
+        }
+    }
+
+    /// Ground contact after the drift: project onto the plane, reflect the downward velocity with the
+    /// restitution coefficient, and mark the node as no longer exposed to distributed loads.
+    #[inline(never)]
+    fn ground_contact(&mut self, g: Ground) {
+        let w = &mut self.wire;
+        for i in 0..w.nodes() {
+            if w.x[2][i] < g.height_m {
+                w.x[2][i] = g.height_m;
+                if w.v[2][i] < 0.0 {
+                    w.v[2][i] *= -g.restitution;
+                }
+                w.exposed[i] = 0.0;
             }
         }
     }
@@ -316,9 +393,7 @@ impl Explicit {
         for i in 0..=n {
             let mut v2 = 0.0;
             for k in 0..3 {
-                let f = self.fs[k][i + 1] - self.fs[k][i] + self.es[k][i + 1] + self.es[k][i];
-                let gk = if k == 2 { -g } else { 0.0 };
-                let a = f * w.inv_mass[i] + gk - zeta * w.v[k][i];
+                let a = self.node_force(k, i) * w.inv_mass[i] - zeta * w.v[k][i];
                 let vn = w.v[k][i] + half * w.free[i] * a;
                 v2 += vn * vn;
             }
@@ -345,6 +420,33 @@ impl Explicit {
             }
         }
         d
+    }
+
+    /// Net force on node `i` along `x_k` [N] from the segment forces last computed: tension, distributed
+    /// loads, gravity and the prescribed nodal force (no mass damping).
+    fn node_force(&self, k: usize, i: usize) -> f64 {
+        let w = &self.wire;
+        let mut f = self.fs[k][i + 1] - self.fs[k][i] + (self.es[k][i + 1] + self.es[k][i]) * w.exposed[i];
+        if k == 2 {
+            f -= w.mass[i] * self.loads.gravity_m_per_s2;
+        }
+        if let Some(x) = &self.nodal_force {
+            f += x[k][i];
+        }
+        f
+    }
+
+    /// Net force on every node [N] at the current state (tension with the Kelvin-Voigt rate from the
+    /// current velocities, distributed loads, gravity, prescribed nodal forces; no mass damping), written
+    /// into `out` (three arrays of length `N + 1`). At a static equilibrium it vanishes on free nodes: the
+    /// residual of the discrete equations that an implicit solver drives to zero.
+    pub fn net_force(&mut self, out: &mut [Vec<f64>; 3]) {
+        self.compute_segment_forces();
+        for k in 0..3 {
+            for i in 0..self.wire.nodes() {
+                out[k][i] = self.node_force(k, i);
+            }
+        }
     }
 
     /// Tension of segment `j` [N] at the current level (Kelvin-Voigt, strain rate at `n - 1/2`).

@@ -5,4 +5,6 @@ pub mod courant;
 pub mod explicit;
 pub mod smoothing;
 
-pub use explicit::{Diagnostics, Explicit, Instability, InstabilityReason, Loads, StepParams, WindLoad};
+pub use explicit::{
+    Diagnostics, Explicit, Ground, Instability, InstabilityReason, Loads, StepParams, WindGate, WindLoad,
+};

@@ -104,6 +104,27 @@ impl SegmentLoad for Aerodynamic {
     }
 }
 
+/// A wind load that acts only on segments moving downwind, `v . w >= 0`, and is zero on segments moving
+/// upwind: the "dancing wires" gust of section 4.5 (there the wind blows along `-x1`, so "moving
+/// downwind" is the paper's `v_x1 <= 0`).
+#[derive(Clone, Copy, Debug)]
+pub struct Downwind<W> {
+    /// the underlying law
+    pub load: W,
+    /// wind direction `w`, unit vector [-]
+    pub direction: [f64; 3],
+}
+
+impl<W: SegmentLoad> SegmentLoad for Downwind<W> {
+    #[inline(always)]
+    fn force(&self, t: [f64; 3], len: f64, v: [f64; 3]) -> [f64; 3] {
+        let f = self.load.force(t, len, v);
+        let w = self.direction;
+        let on = if v[0] * w[0] + v[1] * w[1] + v[2] * w[2] >= 0.0 { 1.0 } else { 0.0 };
+        [on * f[0], on * f[1], on * f[2]]
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -147,5 +168,14 @@ mod tests {
         // A wire parallel to the wind gets no normal pressure and no NaN.
         let par = u.force([1.0, 0.0, 0.0], 1.0, [0.0; 3]);
         assert_eq!(par, [0.0; 3]);
+    }
+
+    #[test]
+    fn downwind_gate_switches_the_load_by_the_direction_of_motion() {
+        let u = UniformNormal { direction: [-1.0, 0.0, 0.0], pressure_n_per_m: 3.8, mu_over_u: 0.0 };
+        let g = Downwind { load: u, direction: u.direction };
+        let t = [0.0, 1.0, 0.0];
+        assert_eq!(g.force(t, 1.0, [-0.1, 0.0, 0.0]), u.force(t, 1.0, [-0.1, 0.0, 0.0]));
+        assert_eq!(g.force(t, 1.0, [0.1, 0.0, 0.0]), [0.0; 3]);
     }
 }

@@ -13,6 +13,9 @@
 pub mod aero;
 pub mod tension;
 
+/// Default reference temperature [K]: 268.15 K = -5 C, the ambient temperature of section 5.4.
+pub const REFERENCE_TEMPERATURE_K: f64 = 268.15;
+
 /// Properties of the conductor shared by all segments.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Conductor {
@@ -47,6 +50,15 @@ pub struct Wire {
     pub segment_mass: Vec<f64>,
     /// 1.0 for an intact segment, 0.0 for a broken one [-], length `N` (the break (3.5))
     pub intact: Vec<f64>,
+    /// 1.0 while distributed loads (wind, uniform load) act on the node, 0.0 once it has touched the
+    /// ground (section 4.4, assumption b) [-], length `N + 1`
+    pub exposed: Vec<f64>,
+    /// segment temperature `u_{i+1/2}` [K], length `N`
+    pub temperature_k: Vec<f64>,
+    /// temperature at which `reference_length` is stress-free [K]
+    pub reference_temperature_k: f64,
+    /// linear thermal expansion coefficient `alpha_t` [1/K], eq. (5.5)
+    pub thermal_expansion_per_k: f64,
 }
 
 impl Wire {
@@ -73,6 +85,10 @@ impl Wire {
             rest_length,
             segment_mass,
             intact: vec![1.0; n_nodes - 1],
+            exposed: vec![1.0; n_nodes],
+            temperature_k: vec![REFERENCE_TEMPERATURE_K; n_nodes - 1],
+            reference_temperature_k: REFERENCE_TEMPERATURE_K,
+            thermal_expansion_per_k: 0.0,
         };
         wire.update_node_masses();
         wire
@@ -129,5 +145,39 @@ impl Wire {
         let (a, b) = (n / 2, n.div_ceil(2));
         let (pa, pb) = (self.position(a), self.position(b));
         [0.5 * (pa[0] + pb[0]), 0.5 * (pa[1] + pb[1]), 0.5 * (pa[2] + pb[2])]
+    }
+
+    /// Break segment `j` (3.5): its tension and loads vanish and its end nodes become free ends whose
+    /// ghost nodes copy their velocity; each part continues as a free-ended wire.
+    pub fn break_segment(&mut self, j: usize) {
+        self.intact[j] = 0.0;
+    }
+
+    /// Add `delta_kg_per_m` [kg/m] of linear density (ice; negative to drop it) on segments `range`,
+    /// per unit reference length, and update the node masses. Panics if a segment mass would become
+    /// non-positive (callers validate first).
+    pub fn add_linear_density(&mut self, range: std::ops::Range<usize>, delta_kg_per_m: f64) {
+        for j in range {
+            self.segment_mass[j] += delta_kg_per_m * self.reference_length[j];
+            assert!(self.segment_mass[j] > 0.0, "segment {j} mass would become non-positive");
+        }
+        self.update_node_masses();
+    }
+
+    /// Set the temperature [K] of segments `range` and rescale their stress-free lengths by thermal
+    /// strain: `l0 = L (1 + alpha_t (u - u_ref))`, eqs. (5.5)-(5.6).
+    pub fn set_temperature(&mut self, range: std::ops::Range<usize>, temperature_k: f64) {
+        for j in range {
+            self.temperature_k[j] = temperature_k;
+        }
+        self.update_rest_lengths();
+    }
+
+    /// Recompute every stress-free length from `temperature_k` (after a heat-equation step wrote it).
+    pub fn update_rest_lengths(&mut self) {
+        let (a, u0) = (self.thermal_expansion_per_k, self.reference_temperature_k);
+        for j in 0..self.segments() {
+            self.rest_length[j] = self.reference_length[j] * (1.0 + a * (self.temperature_k[j] - u0));
+        }
     }
 }

@@ -1,0 +1,5 @@
+//! Subcommands of the `ohl` binary, one file each; the work itself lives in the library.
+
+pub mod bench;
+pub mod paper;
+pub mod run;

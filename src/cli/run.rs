@@ -1,0 +1,61 @@
+//! `ohl run SCENARIO.toml --out DIR`: run one scenario and write its output files.
+
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+use ohl::run::{RunError, RunOptions, run};
+use ohl::scenario;
+
+/// Arguments of `ohl run`.
+#[derive(clap::Args)]
+pub struct RunArgs {
+    /// the scenario (TOML, SI units)
+    scenario: PathBuf,
+    /// output directory (created if missing)
+    #[arg(long, default_value = "out")]
+    out: PathBuf,
+    /// do not print the summary
+    #[arg(long)]
+    quiet: bool,
+}
+
+/// Run the command; exit 0 on success, 1 if unstable or output failed, 2 on invalid input.
+pub fn main(args: RunArgs) -> ExitCode {
+    let RunArgs { scenario: path, out, quiet } = args;
+    let sc = match scenario::load(&path) {
+        Ok(s) => s,
+        Err(e) => {
+            eprintln!("error: {e}");
+            return ExitCode::from(2);
+        }
+    };
+    let plan = scenario::build(&sc);
+    let opts = RunOptions { out_dir: Some(out.clone()), progress: true, record: false };
+    match run(plan, &opts) {
+        Ok(o) => {
+            if !quiet {
+                let s = &o.summary;
+                let d = s.final_midspan_displacement_m;
+                println!(
+                    "{}: {} at t = {:.4} s (tau = {:.4}) after {} steps of {:.4e} s",
+                    s.name, s.status, s.final_time_s, s.final_tau, s.steps, s.dt_s
+                );
+                println!("  mid-span displacement [m]: x1 = {:.6}, x2 = {:.6}, x3 = {:.6}", d[0], d[1], d[2]);
+                println!(
+                    "  max tension: {:.2} N; throughput {:.3e} node-steps/s",
+                    s.final_max_tension_n, s.node_steps_per_second
+                );
+                println!("  written to {}", out.display());
+            }
+            ExitCode::SUCCESS
+        }
+        Err(RunError::Unstable { instability, .. }) => {
+            eprintln!("error: {}: {instability}; output so far is in {}", path.display(), out.display());
+            ExitCode::from(1)
+        }
+        Err(e) => {
+            eprintln!("error: {e}");
+            ExitCode::from(1)
+        }
+    }
+}
