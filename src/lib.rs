@@ -6,12 +6,14 @@
 //!
 //! Layers, one folder each:
 //! - [`wire`]: the physics of the wire (state, constitutive law, distributed loads);
+//! - [`heat`]: heat conduction along the wire (5.1)-(5.4) and thermal expansion (5.5)-(5.6);
 //! - [`scheme`]: the numerical schemes (explicit leapfrog, smoothing, Courant step);
 //! - [`scenario`]: scenario files, their validation and their translation into a solver;
 //! - [`output`]: the files a run writes; [`run`] drives a run;
 //! - [`exact`]: exact static solutions the scheme is verified against.
 
 pub mod exact;
+pub mod heat;
 pub mod output;
 pub mod run;
 pub mod scenario;

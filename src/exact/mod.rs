@@ -34,6 +34,8 @@
 
 pub mod arc;
 pub mod catenary;
+pub mod heat;
+pub mod modes;
 pub mod roots;
 
 pub use arc::{ElasticArc, paper_arc_deflection_m, paper_arc_half_angle_rad};
