@@ -12,6 +12,7 @@
 //! - [`output`]: the files a run writes; [`run`] drives a run;
 //! - [`exact`]: exact static solutions the scheme is verified against.
 
+pub mod bench;
 pub mod exact;
 pub mod heat;
 pub mod output;

@@ -1,13 +1,198 @@
-//! `ohl bench`: kernel throughput (placeholder until the benchmark issue lands).
+//! `ohl bench`: throughput of the explicit kernel (node-steps per second, one thread) in the three
+//! configurations of [`ohl::bench`] at N = 50, 200, 1000, 5000, the wall time of `ohl run` on the weight
+//! release at N = 50, 100, 200, 400, and the measured cost of a square root and a division on this core.
+//! Writes `<out>/<label>.csv`, `<out>/<label>_run.csv`, `<out>/<label>_primitives.csv` and the plot
+//! `<out>/throughput.png` / `.svg` (against `--baseline` if given).
 
+use std::path::PathBuf;
 use std::process::ExitCode;
+
+use ohl::bench::{self, Config};
 
 /// Arguments of `ohl bench`.
 #[derive(clap::Args)]
-pub struct BenchArgs {}
+pub struct BenchArgs {
+    /// output directory for the CSV files and the plot
+    #[arg(long, default_value = "figures/bench")]
+    out: PathBuf,
+    /// label of this measurement (file name of the CSV, legend of the plot), e.g. `before`, `after`
+    #[arg(long, default_value = "current")]
+    label: String,
+    /// an earlier kernel CSV to draw dashed beside this one
+    #[arg(long)]
+    baseline: Option<PathBuf>,
+    /// repetitions per measurement (the fastest counts)
+    #[arg(long, default_value_t = 7)]
+    reps: usize,
+    /// node-steps per repetition
+    #[arg(long, default_value_t = 1.0e7)]
+    node_steps: f64,
+    /// a quick look: 3 repetitions of 2e6 node-steps, no run timing, nothing written
+    #[arg(long)]
+    quick: bool,
+    /// skip the `ohl run` timing
+    #[arg(long)]
+    no_run: bool,
+    /// only run `STEPS` steps of `CONFIG` at `N` segments and exit (the fixed workload of
+    /// `benches/instructions.sh`), e.g. `wind_3d:1000:2000`
+    #[arg(long, value_name = "CONFIG:N:STEPS")]
+    fixed: Option<String>,
+}
 
-/// Not implemented yet.
-pub fn main(_args: BenchArgs) -> ExitCode {
-    eprintln!("error: `ohl bench` is not implemented yet");
-    ExitCode::from(1)
+fn fixed(spec: &str) -> ExitCode {
+    let parts: Vec<&str> = spec.split(':').collect();
+    let parsed = match parts.as_slice() {
+        [c, n, s] => Config::from_name(c).zip(n.parse::<usize>().ok()).zip(s.parse::<usize>().ok()),
+        _ => None,
+    };
+    match parsed {
+        Some(((c, n), steps)) if n >= 2 => {
+            let s = bench::run_fixed_steps(c, n, steps);
+            println!(
+                "{} N = {n}: {} steps, t = {:.6e} s, x3[N/2] = {:.15e} m, state hash {:016x}",
+                c.name(),
+                s.steps,
+                s.time_s,
+                s.wire.x[2][n / 2],
+                bench::state_hash(&s)
+            );
+            ExitCode::SUCCESS
+        }
+        _ => {
+            let names: Vec<&str> = Config::ALL.iter().map(|c| c.name()).collect();
+            eprintln!(
+                "error: --fixed {spec}: expected CONFIG:N:STEPS with CONFIG one of {}, N >= 2 and STEPS >= 0",
+                names.join(", ")
+            );
+            ExitCode::from(2)
+        }
+    }
+}
+
+/// Run the benchmark; exit 0 on success, 1 if a file could not be written or a run failed, 2 on bad
+/// arguments.
+pub fn main(args: BenchArgs) -> ExitCode {
+    if let Some(spec) = &args.fixed {
+        return fixed(spec);
+    }
+    if args.reps == 0 || args.node_steps.is_nan() || args.node_steps < 1.0e3 {
+        eprintln!("error: --reps must be >= 1 and --node-steps >= 1000 (got {} and {})", args.reps, args.node_steps);
+        return ExitCode::from(2);
+    }
+    let (reps, node_steps) = if args.quick { (3, 2.0e6) } else { (args.reps, args.node_steps) };
+    let machine = bench::machine();
+    let build = if cfg!(target_feature = "avx2") { "release, avx2" } else { "release, x86-64 baseline (sse2)" };
+    println!("ohl bench: {} ({build}), load {}, {}, git {}", machine.cpu, machine.load, machine.date, machine.git);
+
+    let p = bench::measure_primitives();
+    println!(
+        "core clock ~{:.2} GHz (dependent adds); sqrt {:.2} cycles/double, division {:.2} cycles/double (throughput, as compiled)",
+        p.clock_hz * 1e-9,
+        p.sqrt_cycles,
+        p.div_cycles
+    );
+
+    println!(
+        "\n{:<16} {:>6} {:>8} {:>14} {:>10} {:>8}  load",
+        "config", "N", "steps", "node-steps/s", "ns/node", "cycles"
+    );
+    let mut rows = Vec::new();
+    for c in Config::ALL {
+        for n in bench::SIZES {
+            let load = bench::load_average();
+            let r = bench::measure_kernel(c, n, node_steps, reps);
+            println!(
+                "{:<16} {:>6} {:>8} {:>14.4e} {:>10.3} {:>8.1}  {load}",
+                r.config,
+                r.n,
+                r.steps,
+                r.node_steps_per_s(),
+                r.ns_per_node_step(),
+                r.ns_per_node_step() * 1e-9 * p.clock_hz
+            );
+            rows.push((r, load));
+        }
+    }
+    if args.quick {
+        return ExitCode::SUCCESS;
+    }
+
+    let mut failed = false;
+    let kernel_csv = args.out.join(format!("{}.csv", args.label));
+    if let Err(e) = bench::write_kernel_csv(&kernel_csv, &args.label, &machine, &rows, build) {
+        eprintln!("error: cannot write {}: {e}", kernel_csv.display());
+        failed = true;
+    }
+    let prim_csv = args.out.join(format!("{}_primitives.csv", args.label));
+    let prim = format!(
+        "clock_hz,sqrt_cycles_per_double,div_cycles_per_double,cpu,build,load_1_5_15,date_utc\n{:.4e},{:.3},{:.3},{},{build},{},{}\n",
+        p.clock_hz, p.sqrt_cycles, p.div_cycles, machine.cpu, machine.load, machine.date
+    );
+    if let Err(e) = std::fs::write(&prim_csv, prim) {
+        eprintln!("error: cannot write {}: {e}", prim_csv.display());
+        failed = true;
+    }
+
+    if !args.no_run {
+        println!("\nohl run, weight release (section 4.2), 10 s simulated, Courant 0.9, a row every 0.05 s:");
+        println!(
+            "{:>5} {:>7} {:>12} {:>14} {:>10} {:>14}",
+            "N", "steps", "run wall [s]", "bare steps [s]", "overhead", "diagnostics [s]"
+        );
+        let scratch = bench::scratch_dir();
+        let mut timings = Vec::new();
+        for n in bench::RUN_SIZES {
+            match bench::measure_run(n, reps.min(5), &scratch) {
+                Ok(t) => {
+                    println!(
+                        "{:>5} {:>7} {:>12.4e} {:>14.4e} {:>9.1}% {:>7} x {:.2e}",
+                        t.n,
+                        t.steps,
+                        t.run_s,
+                        t.steps_only_s,
+                        100.0 * t.overhead_share(),
+                        t.diagnostics_calls,
+                        t.diagnostics_each_s
+                    );
+                    timings.push(t);
+                }
+                Err(e) => {
+                    eprintln!("error: weight release N = {n}: {e}");
+                    failed = true;
+                }
+            }
+        }
+        let _ = std::fs::remove_dir_all(&scratch);
+        let run_csv = args.out.join(format!("{}_run.csv", args.label));
+        if let Err(e) = bench::write_run_csv(&run_csv, &args.label, &machine, &timings) {
+            eprintln!("error: cannot write {}: {e}", run_csv.display());
+            failed = true;
+        }
+    }
+
+    let current: Vec<bench::ThroughputRow> =
+        rows.iter().map(|(r, _)| (r.config.clone(), r.n, r.node_steps_per_s())).collect();
+    let baseline = match &args.baseline {
+        Some(b) => match bench::read_kernel_csv(b) {
+            Ok(rows) => Some((
+                rows,
+                b.file_stem().map(|s| s.to_string_lossy().to_string()).unwrap_or_else(|| "baseline".into()),
+            )),
+            Err(e) => {
+                eprintln!("error: baseline: {e}");
+                return ExitCode::from(2);
+            }
+        },
+        None => None,
+    };
+    let stem = args.out.join("throughput");
+    let base = baseline.as_ref().map(|(r, l)| (r.as_slice(), l.as_str()));
+    match bench::plot_throughput(&current, &args.label, base, &stem) {
+        Ok(()) => println!("\nwritten to {} ({}.csv, throughput.png)", args.out.display(), args.label),
+        Err(e) => {
+            eprintln!("error: {e}");
+            failed = true;
+        }
+    }
+    if failed { ExitCode::from(1) } else { ExitCode::SUCCESS }
 }

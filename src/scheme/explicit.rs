@@ -186,25 +186,32 @@ impl Explicit {
     }
 
     /// Advance by one step of length `dt` [s] (at most the nominal step; shorter to land on a time).
+    ///
+    /// Two passes over the arrays: the segment pass (tension and loads), then one node pass that kicks,
+    /// drifts and checks the speed; with smoothing (3.3) the node pass is split into the kick, the
+    /// smoothing differences, and smoothing fused with the drift. The variant of each pass (law, wind,
+    /// gate, uniform load, damping, prescribed forces) is chosen here, once per step, so the node loops
+    /// carry no branch on the scenario's options.
     pub fn step(&mut self, dt: f64) -> Result<(), Instability> {
         debug_assert!(dt > 0.0 && dt <= self.params.dt_s * (1.0 + 1e-12));
         self.compute_segment_forces();
         let kick = 0.5 * (self.dt_prev + dt);
-        match self.nodal_force.take() {
-            Some(f) => {
-                self.kick::<true>(kick, &f);
-                self.nodal_force = Some(f);
-            }
-            None => self.kick::<false>(kick, &[const { Vec::new() }; 3]),
-        }
-        if self.params.smoothing > 0.0 {
-            let b = self.params.smoothing * (dt / self.params.dt_s);
-            let w = &mut self.wire;
-            for k in 0..3 {
-                smoothing::smooth(&mut w.v[k], &mut self.fs[k], &w.intact, &w.free, b);
-            }
-        }
-        let ok = self.drift(dt);
+        let damp = self.params.mass_damping_per_s != 0.0;
+        let smooth = self.params.smoothing > 0.0;
+        let extra = self.nodal_force.take();
+        let none = [const { Vec::new() }; 3];
+        let f = extra.as_ref().unwrap_or(&none);
+        let ok = match (extra.is_some(), damp, smooth) {
+            (false, false, false) => self.kick_drift::<false, false, false>(kick, dt, f),
+            (false, true, false) => self.kick_drift::<false, true, false>(kick, dt, f),
+            (true, false, false) => self.kick_drift::<true, false, false>(kick, dt, f),
+            (true, true, false) => self.kick_drift::<true, true, false>(kick, dt, f),
+            (false, false, true) => self.kick_drift::<false, false, true>(kick, dt, f),
+            (false, true, true) => self.kick_drift::<false, true, true>(kick, dt, f),
+            (true, false, true) => self.kick_drift::<true, false, true>(kick, dt, f),
+            (true, true, true) => self.kick_drift::<true, true, true>(kick, dt, f),
+        };
+        self.nodal_force = extra;
         if let Some(g) = self.ground {
             self.ground_contact(g);
         }
@@ -245,14 +252,18 @@ impl Explicit {
     }
 
     fn dispatch_law<W: SegmentLoad>(&mut self, load: &W, q: [f64; 3]) {
-        match self.wire.conductor.law {
-            LawKind::TensionOnly => self.segment_pass::<TensionOnly, W>(load, q),
-            LawKind::Linear => self.segment_pass::<Linear, W>(load, q),
+        match (self.wire.conductor.law, q != [0.0; 3]) {
+            (LawKind::TensionOnly, true) => self.segment_pass::<TensionOnly, W, true>(load, q),
+            (LawKind::TensionOnly, false) => self.segment_pass::<TensionOnly, W, false>(load, q),
+            (LawKind::Linear, true) => self.segment_pass::<Linear, W, true>(load, q),
+            (LawKind::Linear, false) => self.segment_pass::<Linear, W, false>(load, q),
         }
     }
 
+    /// `UNIFORM = false` skips the uniform load `q L` (all of `q` zero): the sum `P + 0 L` it saves can
+    /// differ from `P` only in the sign of a zero.
     #[inline(never)]
-    fn segment_pass<L: TensionLaw, W: SegmentLoad>(&mut self, load: &W, q: [f64; 3]) {
+    fn segment_pass<L: TensionLaw, W: SegmentLoad, const UNIFORM: bool>(&mut self, load: &W, q: [f64; 3]) {
         let w = &self.wire;
         let n = w.segments();
         let ea = w.conductor.axial_stiffness_n;
@@ -286,37 +297,112 @@ impl Explicit {
             let vm = [0.5 * (v1a[j] + v1b[j]), 0.5 * (v2a[j] + v2b[j]), 0.5 * (v3a[j] + v3b[j])];
             let p = load.force(t, len, vm);
             let h = 0.5 * intact[j];
-            es1[j] = h * (p[0] + q[0] * lref[j]);
-            es2[j] = h * (p[1] + q[1] * lref[j]);
-            es3[j] = h * (p[2] + q[2] * lref[j]);
+            if UNIFORM {
+                es1[j] = h * (p[0] + q[0] * lref[j]);
+                es2[j] = h * (p[1] + q[1] * lref[j]);
+                es3[j] = h * (p[2] + q[2] * lref[j]);
+            } else {
+                es1[j] = h * p[0];
+                es2[j] = h * p[1];
+                es3[j] = h * p[2];
+            }
         }
     }
 
-    /// Pass 2 over nodes: `v += kick * a` on free nodes; `EXTRA` adds the prescribed nodal forces.
+    /// Pass 2 over nodes: `v += kick a` on free nodes, then (without smoothing) `r += dt v` in the same
+    /// loop; returns false if any speed is beyond the bound or not finite. `EXTRA` adds the prescribed
+    /// nodal forces; `DAMP = false` drops the mass damping `- zeta v` (zeta = 0: the term can change only
+    /// the sign of a zero); `SMOOTH` inserts (3.3) between the kick and the drift.
+    ///
+    /// Each operation is the one of the unfused passes, in the same order, so the result is identical:
+    /// `a = (F / m + g_k) - zeta v`, `v + (kick free) a`, `x + dt v`.
     #[inline(never)]
-    fn kick<const EXTRA: bool>(&mut self, kick: f64, extra: &[Vec<f64>; 3]) {
+    fn kick_drift<const EXTRA: bool, const DAMP: bool, const SMOOTH: bool>(
+        &mut self,
+        kick: f64,
+        dt: f64,
+        extra: &[Vec<f64>; 3],
+    ) -> bool {
         let w = &mut self.wire;
         let n1 = w.nodes();
         let inv_m = &w.inv_mass[..n1];
         let free = &w.free[..n1];
         let exposed = &w.exposed[..n1];
         let zeta = self.params.mass_damping_per_s;
-        let g = [0.0, 0.0, -self.loads.gravity_m_per_s2];
-        for k in 0..3 {
-            let (flo, fhi) = (&self.fs[k][..n1], &self.fs[k][1..n1 + 1]);
-            let (elo, ehi) = (&self.es[k][..n1], &self.es[k][1..n1 + 1]);
-            let v = &mut w.v[k][..n1];
-            let ex = if EXTRA { &extra[k][..n1] } else { &[][..] };
-            let gk = g[k];
-            for i in 0..n1 {
-                let mut f = fhi[i] - flo[i] + (ehi[i] + elo[i]) * exposed[i];
-                if EXTRA {
-                    f += ex[i];
-                }
-                let a = f * inv_m[i] + gk - zeta * v[i];
-                v[i] += kick * free[i] * a;
+        let g = -self.loads.gravity_m_per_s2;
+        let bound2 = self.params.max_speed_m_per_s * self.params.max_speed_m_per_s;
+        let [fs1, fs2, fs3] = &mut self.fs;
+        let [es1, es2, es3] = &self.es;
+        let (f1lo, f1hi) = (&fs1[..n1], &fs1[1..n1 + 1]);
+        let (f2lo, f2hi) = (&fs2[..n1], &fs2[1..n1 + 1]);
+        let (f3lo, f3hi) = (&fs3[..n1], &fs3[1..n1 + 1]);
+        let (e1lo, e1hi) = (&es1[..n1], &es1[1..n1 + 1]);
+        let (e2lo, e2hi) = (&es2[..n1], &es2[1..n1 + 1]);
+        let (e3lo, e3hi) = (&es3[..n1], &es3[1..n1 + 1]);
+        let (ex1, ex2, ex3) =
+            if EXTRA { (&extra[0][..n1], &extra[1][..n1], &extra[2][..n1]) } else { (&[][..], &[][..], &[][..]) };
+        let [v1, v2, v3] = &mut w.v;
+        let (v1, v2, v3) = (&mut v1[..n1], &mut v2[..n1], &mut v3[..n1]);
+        let [x1, x2, x3] = &mut w.x;
+        let (x1, x2, x3) = (&mut x1[..n1], &mut x2[..n1], &mut x3[..n1]);
+        let mut ok = true;
+        for i in 0..n1 {
+            let (im, ex, kf) = (inv_m[i], exposed[i], kick * free[i]);
+            let mut f = [
+                f1hi[i] - f1lo[i] + (e1hi[i] + e1lo[i]) * ex,
+                f2hi[i] - f2lo[i] + (e2hi[i] + e2lo[i]) * ex,
+                f3hi[i] - f3lo[i] + (e3hi[i] + e3lo[i]) * ex,
+            ];
+            if EXTRA {
+                f[0] += ex1[i];
+                f[1] += ex2[i];
+                f[2] += ex3[i];
+            }
+            let mut a = [f[0] * im + 0.0, f[1] * im + 0.0, f[2] * im + g];
+            if DAMP {
+                a[0] -= zeta * v1[i];
+                a[1] -= zeta * v2[i];
+                a[2] -= zeta * v3[i];
+            }
+            let v = [v1[i] + kf * a[0], v2[i] + kf * a[1], v3[i] + kf * a[2]];
+            v1[i] = v[0];
+            v2[i] = v[1];
+            v3[i] = v[2];
+            if !SMOOTH {
+                x1[i] += dt * v[0];
+                x2[i] += dt * v[1];
+                x3[i] += dt * v[2];
+                // `<=` is false for NaN, so a NaN anywhere fails the check.
+                ok &= v[0] * v[0] + v[1] * v[1] + v[2] * v[2] <= bound2;
             }
         }
+        if !SMOOTH {
+            return ok;
+        }
+        // Smoothing (3.3), scaled by dt / dt_nominal, then the drift (3.6) with the smoothed velocity. The
+        // segment tension forces are no longer needed: their arrays hold the differences.
+        let b = self.params.smoothing * (dt / self.params.dt_s);
+        let intact = &w.intact;
+        smoothing::differences(v1, fs1, intact);
+        smoothing::differences(v2, fs2, intact);
+        smoothing::differences(v3, fs3, intact);
+        let (d1, d2, d3) = (&fs1[..n1 + 1], &fs2[..n1 + 1], &fs3[..n1 + 1]);
+        for i in 0..n1 {
+            let bf = b * free[i];
+            let v = [
+                smoothing::smoothed(v1[i], bf, d1, i),
+                smoothing::smoothed(v2[i], bf, d2, i),
+                smoothing::smoothed(v3[i], bf, d3, i),
+            ];
+            v1[i] = v[0];
+            v2[i] = v[1];
+            v3[i] = v[2];
+            x1[i] += dt * v[0];
+            x2[i] += dt * v[1];
+            x3[i] += dt * v[2];
+            ok &= v[0] * v[0] + v[1] * v[1] + v[2] * v[2] <= bound2;
+        }
+        ok
     }
 
     /// Ground contact after the drift: project onto the plane, reflect the downward velocity with the
@@ -333,27 +419,6 @@ impl Explicit {
                 w.exposed[i] = 0.0;
             }
         }
-    }
-
-    /// Pass 3 over nodes: `r += dt v`; returns false if any speed is beyond the bound or not finite.
-    #[inline(never)]
-    fn drift(&mut self, dt: f64) -> bool {
-        let w = &mut self.wire;
-        let n1 = w.nodes();
-        let bound2 = self.params.max_speed_m_per_s * self.params.max_speed_m_per_s;
-        let [x1, x2, x3] = &mut w.x;
-        let (x1, x2, x3) = (&mut x1[..n1], &mut x2[..n1], &mut x3[..n1]);
-        let (v1, v2, v3) = (&w.v[0][..n1], &w.v[1][..n1], &w.v[2][..n1]);
-        let mut ok = true;
-        for i in 0..n1 {
-            x1[i] += dt * v1[i];
-            x2[i] += dt * v2[i];
-            x3[i] += dt * v3[i];
-            let s2 = v1[i] * v1[i] + v2[i] * v2[i] + v3[i] * v3[i];
-            // `<=` is false for NaN, so a NaN anywhere fails the check.
-            ok &= s2 <= bound2;
-        }
-        ok
     }
 
     /// Find the first offending node after `drift` reported a failure.
@@ -464,5 +529,85 @@ impl Explicit {
             LawKind::Linear => Linear::tension(ea, eta, e, edot),
         };
         t * w.intact[j]
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::bench::Config;
+
+    /// The step as first written (three unfused passes: kick, smoothing, drift), kept as the reference
+    /// that the fused kernel must reproduce bit for bit.
+    fn reference_step(s: &mut Explicit, dt: f64) -> bool {
+        s.compute_segment_forces();
+        let kick = 0.5 * (s.dt_prev + dt);
+        let w = &mut s.wire;
+        let n1 = w.nodes();
+        let g = [0.0, 0.0, -s.loads.gravity_m_per_s2];
+        for k in 0..3 {
+            for i in 0..n1 {
+                let mut f = s.fs[k][i + 1] - s.fs[k][i] + (s.es[k][i + 1] + s.es[k][i]) * w.exposed[i];
+                if let Some(x) = &s.nodal_force {
+                    f += x[k][i];
+                }
+                let a = f * w.inv_mass[i] + g[k] - s.params.mass_damping_per_s * w.v[k][i];
+                w.v[k][i] += kick * w.free[i] * a;
+            }
+        }
+        if s.params.smoothing > 0.0 {
+            let b = s.params.smoothing * (dt / s.params.dt_s);
+            for k in 0..3 {
+                smoothing::smooth(&mut w.v[k], &mut s.fs[k], &w.intact, &w.free, b);
+            }
+        }
+        let mut ok = true;
+        for i in 0..n1 {
+            for k in 0..3 {
+                w.x[k][i] += dt * w.v[k][i];
+            }
+            ok &= w.v[0][i] * w.v[0][i] + w.v[1][i] * w.v[1][i] + w.v[2][i] * w.v[2][i]
+                <= s.params.max_speed_m_per_s * s.params.max_speed_m_per_s;
+        }
+        if let Some(g) = s.ground {
+            s.ground_contact(g);
+        }
+        s.dt_prev = dt;
+        ok
+    }
+
+    fn assert_bitwise(a: &Explicit, b: &Explicit, what: &str) {
+        for k in 0..3 {
+            for i in 0..a.wire.nodes() {
+                assert_eq!(a.wire.x[k][i].to_bits(), b.wire.x[k][i].to_bits(), "{what}: x{k}[{i}]");
+                assert_eq!(a.wire.v[k][i].to_bits(), b.wire.v[k][i].to_bits(), "{what}: v{k}[{i}]");
+            }
+        }
+    }
+
+    #[test]
+    fn fused_kernel_is_bitwise_identical_to_the_unfused_passes() {
+        // The benchmark configurations, then every option the fused loops specialise on: mass damping,
+        // a uniform load, prescribed nodal forces, a shortened step, a break, the downwind gate, ground.
+        let mut cases: Vec<(String, Explicit)> = Config::ALL.map(|c| (c.name().to_string(), c.solver(40))).into();
+        let mut s = Config::Wind3d.solver(41);
+        s.params.mass_damping_per_s = 0.3;
+        s.params.smoothing = 0.03;
+        s.loads.uniform_load_n_per_m = [0.5, 0.0, -1.0];
+        s.loads.wind_gate = WindGate::Downwind;
+        s.nodal_force = Some([vec![0.1; 42], vec![-0.2; 42], vec![0.3; 42]]);
+        s.ground = Some(Ground { height_m: -0.05, restitution: 0.6 });
+        s.wire.break_segment(20);
+        cases.push(("all options".into(), s));
+        for (name, mut fused) in cases {
+            let mut reference = fused.clone();
+            let dt = fused.params.dt_s;
+            for step in 0..400 {
+                let h = if step % 7 == 3 { 0.37 * dt } else { dt };
+                let ok = reference_step(&mut reference, h);
+                assert_eq!(fused.step(h).is_ok(), ok, "{name}: stability verdicts differ at step {step}");
+            }
+            assert_bitwise(&fused, &reference, &name);
+        }
     }
 }

@@ -14,27 +14,38 @@
 //! Stencil over the padded difference array `D_k = intact_{k-1} (v_k - v_{k-1})`, `k = 1..=N`,
 //! `D_0 = D_{N+1} = 0`: `vbar_i = v_i + b free_i (D_{i+1} - D_i)`.
 
-/// Apply (3.3) to one velocity component `v` (length `N + 1`) with coefficient `b`, using `diff`
-/// (length `N + 2`) as scratch. `intact` (length `N`) marks unbroken segments, `free` (length `N + 1`)
-/// free nodes.
+/// First half of (3.3): the padded differences `diff[k] = intact[k-1] (v[k] - v[k-1])`, `k = 1..=N`, and
+/// `diff[0] = diff[N+1] = 0`, for one velocity component `v` (length `N + 1`); `diff` has length `N + 2`.
 #[inline]
-pub fn smooth(v: &mut [f64], diff: &mut [f64], intact: &[f64], free: &[f64], b: f64) {
+pub fn differences(v: &[f64], diff: &mut [f64], intact: &[f64]) {
     let n = intact.len();
-    let v = &mut v[..n + 1];
+    let v = &v[..n + 1];
     let diff = &mut diff[..n + 2];
-    let free = &free[..n + 1];
     diff[0] = 0.0;
     diff[n + 1] = 0.0;
-    {
-        let (lo, hi) = (&v[..n], &v[1..n + 1]);
-        let d = &mut diff[1..n + 1];
-        for j in 0..n {
-            d[j] = intact[j] * (hi[j] - lo[j]);
-        }
+    let (lo, hi) = (&v[..n], &v[1..n + 1]);
+    let d = &mut diff[1..n + 1];
+    for j in 0..n {
+        d[j] = intact[j] * (hi[j] - lo[j]);
     }
-    let (dlo, dhi) = (&diff[..n + 1], &diff[1..n + 2]);
-    for i in 0..n + 1 {
-        v[i] += b * free[i] * (dhi[i] - dlo[i]);
+}
+
+/// Second half of (3.3) at node `i`: `v_i + (b free_i) (D_{i+1} - D_i)`, where `b_free = b free_i` and
+/// `diff` holds the differences of [`differences`]. The explicit kernel fuses this with the drift (3.6).
+#[inline(always)]
+pub fn smoothed(v: f64, b_free: f64, diff: &[f64], i: usize) -> f64 {
+    v + b_free * (diff[i + 1] - diff[i])
+}
+
+/// Apply (3.3) to one velocity component `v` (length `N + 1`) with coefficient `b`, using `diff`
+/// (length `N + 2`) as scratch. `intact` (length `N`) marks unbroken segments, `free` (length `N + 1`)
+/// free nodes. (The kernel uses the two halves [`differences`] and [`smoothed`] directly.)
+pub fn smooth(v: &mut [f64], diff: &mut [f64], intact: &[f64], free: &[f64], b: f64) {
+    let n = intact.len();
+    differences(v, diff, intact);
+    let diff = &diff[..n + 2];
+    for (i, (vi, f)) in v[..n + 1].iter_mut().zip(&free[..n + 1]).enumerate() {
+        *vi = smoothed(*vi, b * f, diff, i);
     }
 }
 

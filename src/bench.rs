@@ -1,0 +1,605 @@
+//! Benchmark of the explicit kernel (3.1), (3.3), (3.6): the configurations, the measurements and the
+//! machine description, shared by `ohl bench` and the criterion bench (`cargo bench`).
+//!
+//! Throughput is counted in node-steps per second, `(N + 1) * steps / wall time`, for one thread.
+//! Wall-clock time on a shared machine is noisy: every measurement is the minimum over several
+//! repetitions (the run least disturbed by other processes), and the load average is recorded with it.
+//! Instruction counts per node-step (`benches/instructions.sh`, valgrind's callgrind) are the
+//! load-independent measure; [`run_fixed_steps`] is the entry point they time.
+//!
+//! Configurations (the paper's test wire of section 4: `EA = 80734 g` N, `rho0 = 1` kg/m, span 160 m,
+//! released from the straight chord, Courant number 0.9 unless stated):
+//! - [`Config::PlaneWeight`]: weight only; the motion stays in the vertical plane `x2 x3`;
+//! - [`Config::Wind3d`]: weight and the aerodynamic wind (2.5) with damping (2.6), `mu = 0.2`, across the
+//!   span: a 3D motion;
+//! - [`Config::ViscousSmoothed`]: weight, the uniform normal pressure of section 4.1 (3.805 N/m), Kelvin-Voigt
+//!   friction `eta = 2` N s (3.4) and velocity smoothing `b = 0.02` (3.3); Courant 0.8, below the
+//!   internal-friction limit `sqrt(1 + z^2) - z` (> 0.93 for N <= 5000, see `scheme::courant`).
+
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+use crate::output::plot::{self, Chart, Series, Style};
+use crate::run::{RunError, RunOptions, run};
+use crate::scenario;
+use crate::scheme::courant;
+use crate::scheme::{Explicit, Loads, StepParams, WindGate, WindLoad};
+use crate::wire::aero::{Aerodynamic, UniformNormal};
+use crate::wire::tension::LawKind;
+use crate::wire::{Conductor, Wire};
+
+/// Grid sizes `N` [segments] of the kernel table (issue 5).
+pub const SIZES: [usize; 4] = [50, 200, 1000, 5000];
+/// Grid sizes `N` of the `ohl run` timing (issue 5).
+pub const RUN_SIZES: [usize; 4] = [50, 100, 200, 400];
+/// Target throughput of the 3D wind configuration at N = 1000 and 5000 [node-steps/s] (issue 5).
+pub const TARGET_NODE_STEPS_PER_S: f64 = 2.0e8;
+
+/// Axial stiffness of the paper's test wire, "E = 80734 g" [N] (section 4; NOTES.md).
+const EA_N: f64 = 80734.0 * 9.81;
+/// Linear density of the paper's iced test wire [kg/m] (section 4.1).
+const RHO_KG_PER_M: f64 = 1.0;
+/// Span [m] (section 4).
+const SPAN_M: f64 = 160.0;
+/// Conductor diameter [m] (section 4.1).
+const DIAMETER_M: f64 = 0.01553;
+
+/// A benchmark configuration of the kernel.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Config {
+    /// weight only, motion in the vertical plane
+    PlaneWeight,
+    /// weight plus aerodynamic wind with damping, 3D
+    Wind3d,
+    /// weight plus uniform normal pressure, Kelvin-Voigt friction and velocity smoothing, 3D
+    ViscousSmoothed,
+}
+
+impl Config {
+    /// All configurations, in table order.
+    pub const ALL: [Config; 3] = [Config::PlaneWeight, Config::Wind3d, Config::ViscousSmoothed];
+
+    /// Short name used in tables and files.
+    pub fn name(self) -> &'static str {
+        match self {
+            Config::PlaneWeight => "plane_weight",
+            Config::Wind3d => "wind_3d",
+            Config::ViscousSmoothed => "kv_smoothing_3d",
+        }
+    }
+
+    /// Parse a name given by [`Config::name`].
+    pub fn from_name(s: &str) -> Option<Config> {
+        Config::ALL.into_iter().find(|c| c.name() == s)
+    }
+
+    /// A solver for this configuration with `n` segments, at rest on the straight chord at `t = 0`.
+    pub fn solver(self, n: usize) -> Explicit {
+        let eta = if self == Config::ViscousSmoothed { 2.0 } else { 0.0 };
+        let conductor = Conductor { axial_stiffness_n: EA_N, internal_friction_n_s: eta, law: LawKind::TensionOnly };
+        let x = [vec![0.0; n + 1], (0..=n).map(|i| SPAN_M * i as f64 / n as f64).collect(), vec![0.0; n + 1]];
+        let ds = SPAN_M / n as f64;
+        let wire = Wire::new(conductor, x, vec![ds; n], RHO_KG_PER_M);
+        let c = courant::wave_speed(EA_N, RHO_KG_PER_M);
+        let q = 0.5 * 1.225 * 20.0 * 20.0 * DIAMETER_M;
+        let (wind, cfl, smoothing) = match self {
+            Config::PlaneWeight => (None, 0.9, 0.0),
+            Config::Wind3d => (
+                Some(WindLoad::Aerodynamic(Aerodynamic {
+                    direction: [1.0, 0.0, 0.0],
+                    qd_cn: q * 1.8446,
+                    qd_ct: q * 0.0554,
+                    mu_over_u: 0.2 / 20.0,
+                })),
+                0.9,
+                0.0,
+            ),
+            Config::ViscousSmoothed => (
+                Some(WindLoad::UniformNormal(UniformNormal {
+                    direction: [1.0, 0.0, 0.0],
+                    pressure_n_per_m: q,
+                    mu_over_u: 0.0,
+                })),
+                0.8,
+                0.02,
+            ),
+        };
+        let loads = Loads {
+            gravity_m_per_s2: 9.81,
+            uniform_load_n_per_m: [0.0; 3],
+            wind,
+            wind_scale: 1.0,
+            wind_gate: WindGate::Always,
+        };
+        let params = StepParams {
+            dt_s: courant::time_step(cfl, ds, c),
+            smoothing,
+            mass_damping_per_s: 0.0,
+            max_speed_m_per_s: c,
+        };
+        Explicit::new(wire, loads, params)
+    }
+}
+
+/// Steps per repetition for a grid of `n` segments: about `node_steps` node-steps, at least 100 steps
+/// (timer resolution).
+pub fn steps_per_rep(n: usize, node_steps: f64) -> usize {
+    ((node_steps / (n + 1) as f64) as usize).max(100)
+}
+
+/// Longest stretch of steps timed from one initial state: 4000 steps are 13 s simulated at N = 50
+/// (longer undamped tension-only runs can go unstable, NOTES.md) and 0.1 s at N = 5000.
+pub const EPISODE_STEPS: usize = 4000;
+
+/// Run `steps` nominal steps of `config` at `n` segments from its initial state and return the solver
+/// (the fixed workload that instruction counting differences; panics if the run goes unstable, which
+/// for these configurations would be a kernel bug).
+pub fn run_fixed_steps(config: Config, n: usize, steps: usize) -> Explicit {
+    let mut s = config.solver(n);
+    let dt = s.params.dt_s;
+    for _ in 0..steps {
+        s.step(dt).unwrap_or_else(|e| panic!("{} N = {n}: {e}", config.name()));
+    }
+    s
+}
+
+/// FNV-1a hash of the bit patterns of every position and velocity: equal hashes mean (up to a 2^-64
+/// chance) bitwise identical states, the check that an optimised kernel computes what the old one did.
+pub fn state_hash(s: &Explicit) -> u64 {
+    let mut h: u64 = 0xcbf2_9ce4_8422_2325;
+    for a in s.wire.x.iter().chain(&s.wire.v) {
+        for v in a {
+            for b in v.to_bits().to_le_bytes() {
+                h = (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3);
+            }
+        }
+    }
+    h
+}
+
+/// One row of the kernel table.
+#[derive(Clone, Debug, PartialEq)]
+pub struct KernelResult {
+    /// configuration name
+    pub config: String,
+    /// segments `N`
+    pub n: usize,
+    /// steps per repetition
+    pub steps: usize,
+    /// repetitions
+    pub reps: usize,
+    /// fastest repetition [s]
+    pub best_s: f64,
+    /// median repetition [s]
+    pub median_s: f64,
+}
+
+impl KernelResult {
+    /// Throughput of the fastest repetition [node-steps/s].
+    pub fn node_steps_per_s(&self) -> f64 {
+        (self.n + 1) as f64 * self.steps as f64 / self.best_s
+    }
+    /// Time per node-step of the fastest repetition [ns].
+    pub fn ns_per_node_step(&self) -> f64 {
+        1e9 / self.node_steps_per_s()
+    }
+}
+
+fn median(mut v: Vec<f64>) -> f64 {
+    v.sort_by(f64::total_cmp);
+    v[v.len() / 2]
+}
+
+/// Time the explicit step of `config` at `n` segments: `reps` repetitions of [`steps_per_rep`] steps
+/// (in episodes of at most [`EPISODE_STEPS`] from the initial state; the clones are not timed), after one
+/// untimed warm-up repetition.
+pub fn measure_kernel(config: Config, n: usize, node_steps: f64, reps: usize) -> KernelResult {
+    let initial = config.solver(n);
+    let steps = steps_per_rep(n, node_steps);
+    let dt = initial.params.dt_s;
+    let mut times = Vec::with_capacity(reps);
+    for rep in 0..=reps {
+        // Episodes of at most EPISODE_STEPS steps, each from a fresh (untimed) clone of the initial state.
+        let (mut left, mut t) = (steps, 0.0);
+        while left > 0 {
+            let k = left.min(EPISODE_STEPS);
+            let mut s = initial.clone();
+            let t0 = Instant::now();
+            for _ in 0..k {
+                s.step(dt).unwrap_or_else(|e| panic!("{} N = {n}: {e}", config.name()));
+            }
+            t += t0.elapsed().as_secs_f64();
+            std::hint::black_box(&s);
+            left -= k;
+        }
+        if rep > 0 {
+            times.push(t);
+        }
+    }
+    KernelResult {
+        config: config.name().into(),
+        n,
+        steps,
+        reps,
+        best_s: times.iter().copied().fold(f64::INFINITY, f64::min),
+        median_s: median(times),
+    }
+}
+
+/// The paper's weight release (section 4.2) as a scenario: the test wire released from the straight
+/// chord under its weight, Courant 0.9, smoothing `b = 0.02` (paper range 0.015-0.03), 10 s simulated,
+/// a time-series row every 0.05 s (the default).
+pub fn weight_release_scenario(n: usize) -> String {
+    format!(
+        r#"
+name = "weight release N = {n}"
+[conductor]
+axial_stiffness_n = {EA_N}
+linear_density_kg_per_m = {RHO_KG_PER_M}
+[geometry]
+left_support_m = [0.0, 0.0, 0.0]
+right_support_m = [0.0, {SPAN_M}, 0.0]
+segments = {n}
+[numerics]
+courant = 0.9
+smoothing = 0.02
+[duration]
+end_time_s = 10.0
+"#
+    )
+}
+
+/// Timing of a whole run of the weight release.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RunTiming {
+    /// segments `N`
+    pub n: usize,
+    /// steps of the run
+    pub steps: u64,
+    /// fastest wall time of the whole run (driver, diagnostics, output files) [s]
+    pub run_s: f64,
+    /// fastest wall time of the same number of bare steps [s]
+    pub steps_only_s: f64,
+    /// number of `diagnostics()` calls the driver made (one per time-series row)
+    pub diagnostics_calls: usize,
+    /// time of one `diagnostics()` call [s]
+    pub diagnostics_each_s: f64,
+}
+
+impl RunTiming {
+    /// Share of the run spent outside the bare steps [-].
+    pub fn overhead_share(&self) -> f64 {
+        1.0 - self.steps_only_s / self.run_s
+    }
+}
+
+/// Time `ohl run` on [`weight_release_scenario`] at `n` segments (fastest of `reps`), writing its
+/// output files into `out_dir` (the files a real run writes), and the same steps without the driver.
+pub fn measure_run(n: usize, reps: usize, out_dir: &Path) -> Result<RunTiming, RunError> {
+    let sc = scenario::parse(&weight_release_scenario(n), "<bench>")
+        .unwrap_or_else(|e| panic!("built-in benchmark scenario rejected: {e}"));
+    let plan = scenario::build(&sc);
+    let opts = RunOptions { out_dir: Some(out_dir.to_path_buf()), progress: false, record: false };
+    let (mut run_s, mut steps, mut rows) = (f64::INFINITY, 0, 0);
+    for _ in 0..reps.max(1) {
+        let t0 = Instant::now();
+        let o = run(plan.clone(), &opts)?;
+        run_s = run_s.min(t0.elapsed().as_secs_f64());
+        steps = o.solver.steps;
+        rows = (o.summary.final_time_s / plan.sample_interval_s).round() as usize + 1;
+    }
+    let dt = plan.solver.params.dt_s;
+    let mut steps_only_s = f64::INFINITY;
+    for _ in 0..reps.max(1) {
+        let mut s = plan.solver.clone();
+        let t0 = Instant::now();
+        for _ in 0..steps {
+            s.step(dt).unwrap_or_else(|e| panic!("weight release N = {n}: {e}"));
+        }
+        steps_only_s = steps_only_s.min(t0.elapsed().as_secs_f64());
+        std::hint::black_box(&s);
+    }
+    let mut s = plan.solver.clone();
+    let calls = 200;
+    let t0 = Instant::now();
+    for _ in 0..calls {
+        std::hint::black_box(s.diagnostics());
+    }
+    let diagnostics_each_s = t0.elapsed().as_secs_f64() / calls as f64;
+    Ok(RunTiming { n, steps, run_s, steps_only_s, diagnostics_calls: rows, diagnostics_each_s })
+}
+
+/// Measured costs of the primitive operations on this core, for the limit estimate.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Primitives {
+    /// core clock [Hz], from a chain of dependent double additions (latency 3 cycles on AMD Zen 2-4 and
+    /// Intel Skylake and later, Agner Fog's instruction tables)
+    pub clock_hz: f64,
+    /// square root of a double, throughput, as compiled here (packed if the loop vectorises) [cycles]
+    pub sqrt_cycles: f64,
+    /// division of doubles, throughput [cycles]
+    pub div_cycles: f64,
+}
+
+#[inline(never)]
+fn sqrt_array(a: &[f64], out: &mut [f64]) {
+    for (o, x) in out.iter_mut().zip(a) {
+        *o = x.sqrt();
+    }
+}
+
+#[inline(never)]
+fn div_array(a: &[f64], out: &mut [f64]) {
+    for (o, x) in out.iter_mut().zip(a) {
+        *o = 1.0 / x;
+    }
+}
+
+#[inline(never)]
+fn add_chain(n: usize, y: f64) -> f64 {
+    let mut x = 0.0;
+    for _ in 0..n {
+        x += y;
+    }
+    x
+}
+
+fn best_of(reps: usize, mut f: impl FnMut()) -> f64 {
+    (0..reps)
+        .map(|_| {
+            let t0 = Instant::now();
+            f();
+            t0.elapsed().as_secs_f64()
+        })
+        .fold(f64::INFINITY, f64::min)
+}
+
+/// Measure [`Primitives`] (about 0.1 s).
+pub fn measure_primitives() -> Primitives {
+    let chain = 20_000_000;
+    let t_add = best_of(5, || {
+        std::hint::black_box(add_chain(std::hint::black_box(chain), std::hint::black_box(1.0)));
+    });
+    let clock_hz = 3.0 * chain as f64 / t_add;
+    // 1024 doubles: 8 KiB in and out, resident in L1, so the divider is the bottleneck.
+    let a: Vec<f64> = (0..1024).map(|i| 1.0 + i as f64 * 1e-3).collect();
+    let mut out = vec![0.0; a.len()];
+    let rounds = 2000;
+    let per = |t: f64| t * clock_hz / (rounds * a.len()) as f64;
+    let t_sqrt = best_of(5, || {
+        for _ in 0..rounds {
+            sqrt_array(std::hint::black_box(&a), &mut out);
+        }
+    });
+    let t_div = best_of(5, || {
+        for _ in 0..rounds {
+            div_array(std::hint::black_box(&a), &mut out);
+        }
+    });
+    std::hint::black_box(&out);
+    Primitives { clock_hz, sqrt_cycles: per(t_sqrt), div_cycles: per(t_div) }
+}
+
+/// Where and when a measurement was taken.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Machine {
+    /// CPU model from /proc/cpuinfo
+    pub cpu: String,
+    /// /proc/loadavg (1, 5, 15 min) when the measurement started
+    pub load: String,
+    /// UTC date and time
+    pub date: String,
+    /// `git describe --always --dirty` of the working tree
+    pub git: String,
+}
+
+fn command_output(cmd: &str, args: &[&str]) -> Option<String> {
+    let o = std::process::Command::new(cmd).args(args).output().ok()?;
+    o.status.success().then(|| String::from_utf8_lossy(&o.stdout).trim().to_string())
+}
+
+/// The current load average (first three fields of /proc/loadavg), or "unknown".
+pub fn load_average() -> String {
+    std::fs::read_to_string("/proc/loadavg")
+        .map(|s| s.split_whitespace().take(3).collect::<Vec<_>>().join(" "))
+        .unwrap_or_else(|_| "unknown".into())
+}
+
+/// UTC date `YYYY-MM-DDThh:mm:ssZ` from the system clock (civil-from-days, H. Hinnant's algorithm).
+fn utc_now() -> String {
+    let secs = std::time::SystemTime::now().duration_since(std::time::UNIX_EPOCH).map(|d| d.as_secs()).unwrap_or(0);
+    let (days, rem) = ((secs / 86_400) as i64, secs % 86_400);
+    let z = days + 719_468;
+    let era = z.div_euclid(146_097);
+    let doe = z - era * 146_097;
+    let yoe = (doe - doe / 1460 + doe / 36_524 - doe / 146_096) / 365;
+    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
+    let mp = (5 * doy + 2) / 153;
+    let d = doy - (153 * mp + 2) / 5 + 1;
+    let m = if mp < 10 { mp + 3 } else { mp - 9 };
+    let y = yoe + era * 400 + i64::from(m <= 2);
+    format!("{y:04}-{m:02}-{d:02}T{:02}:{:02}:{:02}Z", rem / 3600, rem / 60 % 60, rem % 60)
+}
+
+/// Describe this machine now.
+pub fn machine() -> Machine {
+    let cpu = std::fs::read_to_string("/proc/cpuinfo")
+        .ok()
+        .and_then(|s| {
+            s.lines().find(|l| l.starts_with("model name")).and_then(|l| l.split(':').nth(1)).map(|m| m.trim().into())
+        })
+        .unwrap_or_else(|| "unknown".into());
+    let git = command_output("git", &["describe", "--always", "--dirty"]).unwrap_or_else(|| "unknown".into());
+    Machine { cpu, load: load_average(), date: utc_now(), git }
+}
+
+/// A CSV field: quoted if it holds a comma or a quote.
+fn field(s: &str) -> String {
+    if s.contains([',', '"']) { format!("\"{}\"", s.replace('"', "\"\"")) } else { s.to_string() }
+}
+
+/// One point of a throughput plot: configuration name, segments `N`, node-steps per second.
+pub type ThroughputRow = (String, usize, f64);
+
+/// Header of the kernel CSV.
+pub const KERNEL_HEADER: &str = "label,config,n,steps_per_rep,reps,best_s,median_s,node_steps_per_s,ns_per_node_step,\
+                                 load_1_5_15,cpu,date_utc,git,build";
+
+/// Write the kernel table to `path` (one row per result, each with the machine description and the
+/// load average measured just before it).
+pub fn write_kernel_csv(
+    path: &Path,
+    label: &str,
+    m: &Machine,
+    rows: &[(KernelResult, String)],
+    build: &str,
+) -> std::io::Result<()> {
+    let mut s = String::from(KERNEL_HEADER);
+    s.push('\n');
+    for (r, load) in rows {
+        s += &format!(
+            "{},{},{},{},{},{:.6e},{:.6e},{:.6e},{:.4},{},{},{},{},{}\n",
+            field(label),
+            r.config,
+            r.n,
+            r.steps,
+            r.reps,
+            r.best_s,
+            r.median_s,
+            r.node_steps_per_s(),
+            r.ns_per_node_step(),
+            field(load),
+            field(&m.cpu),
+            m.date,
+            field(&m.git),
+            field(build)
+        );
+    }
+    write_file(path, &s)
+}
+
+fn write_file(path: &Path, text: &str) -> std::io::Result<()> {
+    if let Some(d) = path.parent() {
+        std::fs::create_dir_all(d)?;
+    }
+    std::fs::write(path, text)
+}
+
+/// Read `(config, n, node_steps_per_s)` back from a kernel CSV written by [`write_kernel_csv`].
+pub fn read_kernel_csv(path: &Path) -> Result<Vec<ThroughputRow>, String> {
+    let mut r = csv::Reader::from_path(path).map_err(|e| format!("{}: {e}", path.display()))?;
+    let h = r.headers().map_err(|e| format!("{}: {e}", path.display()))?.clone();
+    let col =
+        |name: &str| h.iter().position(|c| c == name).ok_or_else(|| format!("{}: no column '{name}'", path.display()));
+    let (c, n, t) = (col("config")?, col("n")?, col("node_steps_per_s")?);
+    let mut out = Vec::new();
+    for rec in r.records() {
+        let rec = rec.map_err(|e| format!("{}: {e}", path.display()))?;
+        let bad = |what: &str| format!("{}: bad {what} in row {:?}", path.display(), rec);
+        let nn = rec[n].parse().map_err(|_| bad("n"))?;
+        let tt = rec[t].parse().map_err(|_| bad("node_steps_per_s"))?;
+        out.push((rec[c].to_string(), nn, tt));
+    }
+    Ok(out)
+}
+
+/// Write the run timings to `path`.
+pub fn write_run_csv(path: &Path, label: &str, m: &Machine, rows: &[RunTiming]) -> std::io::Result<()> {
+    let mut s = String::from(
+        "label,n,steps,run_wall_s,steps_only_s,overhead_share,diagnostics_calls,diagnostics_each_s,\
+         load_1_5_15,cpu,date_utc,git\n",
+    );
+    for r in rows {
+        s += &format!(
+            "{},{},{},{:.6e},{:.6e},{:.4},{},{:.4e},{},{},{},{}\n",
+            field(label),
+            r.n,
+            r.steps,
+            r.run_s,
+            r.steps_only_s,
+            r.overhead_share(),
+            r.diagnostics_calls,
+            r.diagnostics_each_s,
+            field(&m.load),
+            field(&m.cpu),
+            m.date,
+            field(&m.git)
+        );
+    }
+    write_file(path, &s)
+}
+
+/// Plot throughput against N (log-log), one colour per configuration: solid lines for `current`,
+/// dashed for the optional `baseline`, and the issue's target as markers.
+pub fn plot_throughput(
+    current: &[ThroughputRow],
+    current_label: &str,
+    baseline: Option<(&[ThroughputRow], &str)>,
+    stem: &Path,
+) -> Result<(), plot::PlotError> {
+    let mut series = Vec::new();
+    for (ci, c) in Config::ALL.iter().enumerate() {
+        let pts = |rows: &[ThroughputRow]| -> Vec<(f64, f64)> {
+            rows.iter().filter(|r| r.0 == c.name()).map(|r| (r.1 as f64, r.2)).collect()
+        };
+        series.push(Series::new(format!("{} ({current_label})", c.name()), pts(current), Style::LineMarkers, ci));
+        if let Some((b, bl)) = baseline {
+            series.push(Series::new(format!("{} ({bl})", c.name()), pts(b), Style::Dashed, ci));
+        }
+    }
+    series.push(Series::new(
+        "target, wind_3d (issue 5)",
+        vec![(1000.0, TARGET_NODE_STEPS_PER_S), (5000.0, TARGET_NODE_STEPS_PER_S)],
+        Style::Markers,
+        3,
+    ));
+    let chart = Chart {
+        title: "Explicit step, one thread".into(),
+        x_label: "segments N [-]".into(),
+        y_label: "throughput [node-steps/s]".into(),
+        series,
+        log_x: true,
+        log_y: true,
+        ..Default::default()
+    };
+    plot::render(&[chart], 1, (900, 600), stem)
+}
+
+/// A scratch directory for the output files of the timed runs.
+pub fn scratch_dir() -> PathBuf {
+    std::env::temp_dir().join(format!("ohl-bench-{}", std::process::id()))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn configurations_run_and_stay_in_their_planes() {
+        // A short run of every configuration: the plane case keeps x1 = 0 exactly (no force along x1),
+        // the 3D cases move across the span (the wind blows along +x1).
+        for c in Config::ALL {
+            let s = run_fixed_steps(c, 20, 200);
+            let max_x1 = s.wire.x[0].iter().fold(0.0_f64, |m, v| m.max(v.abs()));
+            match c {
+                Config::PlaneWeight => assert_eq!(max_x1, 0.0),
+                _ => assert!(max_x1 > 0.0, "{}", c.name()),
+            }
+            assert_eq!(Config::from_name(c.name()), Some(c));
+        }
+    }
+
+    #[test]
+    fn utc_date_has_the_iso_shape() {
+        let d = utc_now();
+        assert_eq!(d.len(), 20, "{d}");
+        assert!(d.starts_with("20") && d.ends_with('Z'));
+    }
+
+    #[test]
+    fn weight_release_scenario_is_valid() {
+        for n in RUN_SIZES {
+            scenario::parse(&weight_release_scenario(n), "<bench>").expect("valid");
+        }
+    }
+}
