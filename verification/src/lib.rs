@@ -1,0 +1,17 @@
+//! The verification harness of the `ohl` wire solver.
+//!
+//! Each study is one module under [`studies`] registered by one line in [`studies::STUDIES`]; a study
+//! runs its computations, writes its CSV tables and its PNG + SVG plots under the output directory
+//! (`figures/verification/` by default) and returns a [`report::StudyReport`] with its checks and a
+//! pass/fail verdict. `verify all` collects them in `REPORT.md`.
+//!
+//! Shared machinery: [`setup`] (the paper's test wire and loads), [`convergence`] (least-squares order,
+//! Richardson extrapolation, Grid Convergence Index), [`dual`] (forward-mode derivatives for the
+//! Jacobians), [`implicit`] (static Newton solver and Newmark integrator on faer), [`report`].
+
+pub mod convergence;
+pub mod dual;
+pub mod implicit;
+pub mod report;
+pub mod setup;
+pub mod studies;
