@@ -13,9 +13,11 @@
 //! - [`exact`]: exact static solutions the scheme is verified against.
 
 pub mod bench;
+pub mod events;
 pub mod exact;
 pub mod heat;
 pub mod output;
+pub mod paper;
 pub mod run;
 pub mod scenario;
 pub mod scheme;

@@ -2,14 +2,18 @@
 //! wire has settled, tracks peaks and measures throughput.
 //!
 //! Time handling: steps have the nominal length `dt` of (3.7) except the step that lands exactly on a
-//! snapshot time or the end time, which is shortened (the scheme's kick uses the mean of consecutive
-//! steps, so this keeps second order). Time-series rows are taken at the first step at or after each
-//! multiple of the sample interval and record the actual time. The mid-span peaks are tracked every step.
+//! snapshot time, an event time or the end time, which is shortened (the scheme's kick uses the mean of
+//! consecutive steps, so this keeps second order). Events due at a time are applied on arrival, before
+//! that time's sample ([`crate::events`]); after an event the settle detection starts afresh (the peak
+//! kinetic energy is measured again from the event on). Time-series rows are taken at the first step at
+//! or after each multiple of the sample interval and record the actual time. The mid-span peaks are
+//! tracked every step.
 
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
+use crate::events::EventState;
 use crate::output::summary::InstabilityReport;
 use crate::output::{Peak, Sample, SnapshotWriter, Summary, TimeseriesWriter};
 use crate::scenario::Plan;
@@ -23,8 +27,41 @@ pub struct RunOptions {
     pub out_dir: Option<PathBuf>,
     /// show a progress bar (only drawn when stderr is a terminal)
     pub progress: bool,
-    /// keep the time series in memory in [`Outcome::samples`]
+    /// keep the time series in memory in [`Outcome::samples`] (with [`Outcome::probes`]) and the shapes
+    /// at the snapshot times in [`Outcome::shapes`]
     pub record: bool,
+}
+
+/// Quantities recorded beside each time-series sample (in memory only, with [`RunOptions::record`]).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Probe {
+    /// time `t` [s]
+    pub t_s: f64,
+    /// tension of the segment at the left and at the right support [N]
+    pub support_tension_n: [f64; 2],
+    /// mean segment temperature [K]
+    pub mean_temperature_k: f64,
+    /// total stress-free length `sum l0` [m]
+    pub rest_length_m: f64,
+    /// total unstretched length at the reference temperature `sum L` [m]
+    pub reference_length_m: f64,
+    /// total mass [kg]
+    pub mass_kg: f64,
+    /// multiplier on the wind load [-]
+    pub wind_scale: f64,
+}
+
+/// The wire's shape at a snapshot time (in memory only, with [`RunOptions::record`]).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Shape {
+    /// time `t` [s]
+    pub t_s: f64,
+    /// dimensionless time `tau` [-]
+    pub tau: f64,
+    /// node positions [m]
+    pub x: [Vec<f64>; 3],
+    /// 1 for an intact segment, 0 for a broken one [-]
+    pub intact: Vec<f64>,
 }
 
 /// What a run produced.
@@ -34,6 +71,12 @@ pub struct Outcome {
     pub summary: Summary,
     /// the time series, if [`RunOptions::record`] was set
     pub samples: Vec<Sample>,
+    /// recorded with each sample, if [`RunOptions::record`] was set
+    pub probes: Vec<Probe>,
+    /// the shapes at the snapshot times, if [`RunOptions::record`] was set
+    pub shapes: Vec<Shape>,
+    /// the events applied: (time [s], what was done)
+    pub events: Vec<(f64, String)>,
     /// the solver at the end of the run
     pub solver: Explicit,
 }
@@ -87,6 +130,20 @@ impl Writers {
     }
 }
 
+fn probe(solver: &Explicit) -> Probe {
+    let w = &solver.wire;
+    let n = w.segments();
+    Probe {
+        t_s: solver.time_s,
+        support_tension_n: [solver.segment_tension(0), solver.segment_tension(n - 1)],
+        mean_temperature_k: w.temperature_k.iter().sum::<f64>() / n as f64,
+        rest_length_m: w.total_rest_length(),
+        reference_length_m: w.reference_length.iter().sum(),
+        mass_kg: w.total_mass(),
+        wind_scale: solver.loads.wind_scale,
+    }
+}
+
 /// Run a plan to its end.
 pub fn run(plan: Plan, opts: &RunOptions) -> Result<Outcome, RunError> {
     let Plan { solver, .. } = &plan;
@@ -112,6 +169,9 @@ pub fn run(plan: Plan, opts: &RunOptions) -> Result<Outcome, RunError> {
     });
 
     let mut samples = Vec::new();
+    let mut probes = Vec::new();
+    let mut shapes = Vec::new();
+    let mut events = EventState::new(&plan);
     let mut peaks = [Peak::default(); 3];
     let (mut peak_tension, mut peak_tension_t) = (0.0_f64, 0.0_f64);
     let mut peak_ke = 0.0_f64;
@@ -125,6 +185,10 @@ pub fn run(plan: Plan, opts: &RunOptions) -> Result<Outcome, RunError> {
 
     loop {
         let t = solver.time_s;
+        if events.apply_due(&mut solver, t, tol) > 0 {
+            peak_ke = 0.0;
+            below_since = None;
+        }
         let m = solver.wire.midspan();
         for k in 0..3 {
             let d = m[k] - mid0[k];
@@ -153,6 +217,7 @@ pub fn run(plan: Plan, opts: &RunOptions) -> Result<Outcome, RunError> {
                 }
                 if opts.record {
                     samples.push(last);
+                    probes.push(probe(&solver));
                 }
                 while next_sample <= t + tol {
                     next_sample += plan.sample_interval_s;
@@ -180,13 +245,24 @@ pub fn run(plan: Plan, opts: &RunOptions) -> Result<Outcome, RunError> {
             if let Some(w) = writers.as_mut() {
                 w.snaps.write(&solver, plan.tau(t)).map_err(io_err(&w.dir.join("snapshots.csv")))?;
             }
+            if opts.record {
+                let w = &solver.wire;
+                shapes.push(Shape { t_s: t, tau: plan.tau(t), x: w.x.clone(), intact: w.intact.clone() });
+            }
             snap_idx += 1;
         }
         if settled || at_end {
             break;
         }
-        let target = plan.snapshot_times_s.get(snap_idx).copied().unwrap_or(horizon).min(horizon);
+        let target = plan
+            .snapshot_times_s
+            .get(snap_idx)
+            .copied()
+            .unwrap_or(horizon)
+            .min(events.next_time().unwrap_or(horizon))
+            .min(horizon);
         let step = if target - t <= dt * (1.0 + 1.0e-12) { target - t } else { dt };
+        events.before_step(&mut solver, t);
         if let Err(e) = solver.step(step) {
             failure = Some(e);
             break;
@@ -194,6 +270,7 @@ pub fn run(plan: Plan, opts: &RunOptions) -> Result<Outcome, RunError> {
         if step < dt {
             solver.time_s = target;
         }
+        events.after_step(&mut solver, step);
     }
     let wall = started.elapsed().as_secs_f64();
     if let Some(b) = bar {
@@ -235,7 +312,7 @@ pub fn run(plan: Plan, opts: &RunOptions) -> Result<Outcome, RunError> {
     if let Some(w) = &writers {
         w.summary(&summary)?;
     }
-    let outcome = Outcome { summary, samples, solver };
+    let outcome = Outcome { summary, samples, probes, shapes, events: events.log, solver };
     match failure {
         Some(instability) => Err(RunError::Unstable { instability, outcome: Box::new(outcome) }),
         None => Ok(outcome),

@@ -36,6 +36,12 @@ const CASES: &[(&str, &[&str])] = &[
     ("snapshot_after_end", &["field `output.snapshot_times_s[1]` = 3", "end time"]),
     ("negative_sample_interval", &["field `output.sample_interval_s` = -0.1", "> 0"]),
     ("mass_damping_too_large", &["field `numerics.mass_damping_per_s` = 1000000", "zeta dt < 1"]),
+    (
+        "ground_above_support",
+        &["field `ground.height_m` = 5", "below both supports", "field `ground.restitution` = 1.5"],
+    ),
+    ("event_after_end", &["field `events[0].time_s` = 2", "end time"]),
+    ("ice_range_out_of_bounds", &["field `events[0].range` = [0.5, 1.5]", "0 <= a < b <= 1"]),
 ];
 
 fn dir() -> PathBuf {

@@ -1,16 +1,98 @@
-//! `ohl paper CASE|all`: reproduce a case of the paper (placeholder until the paper-case issue lands).
+//! `ohl paper CASE|all`: reproduce a case of the paper (`paper_cases/<case>.toml`) or all of them, write
+//! `figures/<case>.png`, `.svg` and the `.csv` each is drawn from, and print the table
+//! quantity | paper | exact | computed | relative differences | verdict.
+//!
+//! Exit codes: 0 when every case ran (the table says which of the paper's values are not reproduced,
+//! and why); 1 when a case failed to run or its output could not be written; 2 for an invalid case file
+//! or an unknown case.
 
+use std::path::PathBuf;
 use std::process::ExitCode;
+use std::time::Instant;
+
+use ohl::paper::{self, PaperError, table};
+use ohl::scenario::paper::CompareSpec;
 
 /// Arguments of `ohl paper`.
 #[derive(clap::Args)]
 pub struct PaperArgs {
-    /// case name (a file `paper_cases/<case>.toml`) or `all`
+    /// case name (a file `<cases>/<case>.toml`) or `all`
     case: String,
+    /// directory of the case files
+    #[arg(long, default_value = "paper_cases")]
+    cases: PathBuf,
+    /// directory for the figures and their CSV files
+    #[arg(long, default_value = "figures")]
+    out: PathBuf,
+    /// number of cases run at the same time (`all`)
+    #[arg(long, default_value_t = 2)]
+    threads: usize,
 }
 
-/// Not implemented yet.
+/// Run the command.
 pub fn main(args: PaperArgs) -> ExitCode {
-    eprintln!("error: `ohl paper {}` is not implemented yet", args.case);
-    ExitCode::from(1)
+    let started = Instant::now();
+    let paths = if args.case == "all" {
+        match paper::case_files(&args.cases) {
+            Ok(v) if !v.is_empty() => v,
+            Ok(_) => {
+                eprintln!("error: no case files (*.toml) in {}", args.cases.display());
+                return ExitCode::from(2);
+            }
+            Err(e) => {
+                eprintln!("error: cannot read {}: {e}", args.cases.display());
+                return ExitCode::from(2);
+            }
+        }
+    } else {
+        let p = args.cases.join(format!("{}.toml", args.case));
+        if !p.exists() {
+            let known = paper::case_files(&args.cases).unwrap_or_default();
+            let names: Vec<String> =
+                known.iter().filter_map(|p| p.file_stem().and_then(|s| s.to_str()).map(String::from)).collect();
+            eprintln!(
+                "error: no case `{}` ({} does not exist); cases: {}, all",
+                args.case,
+                p.display(),
+                names.join(", ")
+            );
+            return ExitCode::from(2);
+        }
+        vec![p]
+    };
+    let results = paper::run_cases(&paths, Some(&args.out), args.threads);
+    let mut rows = Vec::new();
+    let mut code = 0u8;
+    for r in results {
+        match r {
+            Ok(c) => {
+                println!("== {} (paper section {}): {}", c.name, c.section, c.title);
+                println!("   run {} in {:.2} s", c.status, c.wall_s);
+                for (t, e) in &c.events {
+                    println!("   event at t = {t:.3} s: {e}");
+                }
+                for n in &c.notes {
+                    println!("   note: {n}");
+                }
+                if let Some(f) = &c.figure {
+                    println!("   figure: {}.png, .svg; data: {}.csv", f.display(), f.display());
+                }
+                rows.extend(c.rows);
+            }
+            Err(e) => {
+                eprintln!("error: {e}");
+                code = code.max(if matches!(e, PaperError::Input(_) | PaperError::NotACase(_)) { 2 } else { 1 });
+            }
+        }
+    }
+    println!();
+    print!("{}", table::format(&rows));
+    let missed = rows.iter().filter(|r| r.compare == CompareSpec::Match && !r.within_tolerance()).count();
+    println!(
+        "\n{} values checked, {} equilibria/exact values not reproduced; wall time {:.2} s",
+        rows.len(),
+        missed,
+        started.elapsed().as_secs_f64()
+    );
+    ExitCode::from(code)
 }

@@ -1,9 +1,10 @@
 //! From a validated scenario to a ready solver: derived quantities (`EA`, wave speed, time step), the
 //! initial shape with equally spaced nodes, the loads and the run plan.
 
+use super::events::{EventSpec, GroundSpec};
 use super::schema::{Scenario, ShapeSpec, TensionLawSpec, WindLawSpec};
 use crate::scheme::courant;
-use crate::scheme::{Explicit, Loads, StepParams, WindGate, WindLoad};
+use crate::scheme::{Explicit, Ground, Loads, StepParams, WindGate, WindLoad};
 use crate::wire::aero::{Aerodynamic, UniformNormal};
 use crate::wire::tension::LawKind;
 use crate::wire::{Conductor, Wire};
@@ -59,6 +60,10 @@ pub struct Plan {
     pub snapshot_times_s: Vec<f64>,
     /// speed of the dimensionless time `tau = t U / l` [m/s]
     pub tau_speed_m_per_s: f64,
+    /// the event timeline, sorted by time (stable: events at the same time keep the file's order)
+    pub events: Vec<EventSpec>,
+    /// the ground plane, if the scenario has one (on the solver from the start if it is active)
+    pub ground: Option<GroundSpec>,
 }
 
 impl Plan {
@@ -154,7 +159,10 @@ pub fn build(s: &Scenario) -> Plan {
         TensionLawSpec::Linear => LawKind::Linear,
     };
     let conductor = Conductor { axial_stiffness_n: ea, internal_friction_n_s: s.numerics.eta_n_s, law };
-    let wire = Wire::new(conductor, x, vec![ds; n], rho);
+    let mut wire = Wire::new(conductor, x, vec![ds; n], rho);
+    wire.thermal_expansion_per_k = cd.thermal_expansion_per_k;
+    wire.reference_temperature_k = cd.reference_temperature_k;
+    wire.temperature_k.fill(cd.reference_temperature_k);
 
     let c = courant::wave_speed(ea, rho);
     let dt = courant::time_step(s.numerics.courant, ds, c);
@@ -183,7 +191,7 @@ pub fn build(s: &Scenario) -> Plan {
         gravity_m_per_s2: s.loads.gravity_m_per_s2,
         uniform_load_n_per_m: s.loads.uniform_load_n_per_m,
         wind,
-        wind_scale: 1.0,
+        wind_scale: s.loads.wind.as_ref().map_or(1.0, |w| w.initial_scale),
         wind_gate: WindGate::Always,
     };
     let params = StepParams {
@@ -203,9 +211,14 @@ pub fn build(s: &Scenario) -> Plan {
     snaps.sort_by(f64::total_cmp);
     snaps.dedup();
     let (a, b) = (s.geometry.left_support_m, s.geometry.right_support_m);
+    let mut events = s.events.clone();
+    events.sort_by(|p, q| p.time_s().total_cmp(&q.time_s()));
+    let mut solver = Explicit::new(wire, loads, params);
+    solver.ground =
+        s.ground.as_ref().filter(|g| g.active).map(|g| Ground { height_m: g.height_m, restitution: g.restitution });
     Plan {
         name: s.name.clone().unwrap_or_else(|| "scenario".into()),
-        solver: Explicit::new(wire, loads, params),
+        solver,
         left_support_m: a,
         right_support_m: b,
         chord_m: (0..3).map(|k| (b[k] - a[k]).powi(2)).sum::<f64>().sqrt(),
@@ -215,6 +228,8 @@ pub fn build(s: &Scenario) -> Plan {
         sample_interval_s: s.output.sample_interval_s,
         snapshot_times_s: snaps,
         tau_speed_m_per_s: s.output.tau_speed_m_per_s,
+        events,
+        ground: s.ground.clone(),
     }
 }
 

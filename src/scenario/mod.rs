@@ -3,6 +3,8 @@
 //! [`InputError`] that names the file, the field, the value and what is allowed.
 
 pub mod build;
+pub mod events;
+pub mod paper;
 pub mod schema;
 pub mod validate;
 

@@ -5,6 +5,9 @@
 
 use serde::Deserialize;
 
+pub use super::events::{EventSpec, GateSpec, GroundSpec, HeatBoundarySpec};
+pub use super::paper::PaperSpec;
+
 /// A complete scenario.
 #[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -33,6 +36,15 @@ pub struct Scenario {
     /// what is written
     #[serde(default)]
     pub output: OutputSpec,
+    /// ground plane, if any (section 4.4)
+    #[serde(default)]
+    pub ground: Option<GroundSpec>,
+    /// the event timeline (breaks, ice, wind and gusts, temperature, heat conduction, ground contact)
+    #[serde(default)]
+    pub events: Vec<EventSpec>,
+    /// the paper values a case of `paper_cases/` checks (ignored by `ohl run`)
+    #[serde(default)]
+    pub paper: Option<PaperSpec>,
 }
 
 /// Constitutive law selector.
@@ -65,6 +77,18 @@ pub struct ConductorSpec {
     /// constitutive law; default `"tension_only"`
     #[serde(default)]
     pub tension_law: TensionLawSpec,
+    /// linear thermal expansion coefficient `alpha_t` [1/K], >= 0, eq. (5.5); default 0 (section 5.4
+    /// gives 23.8e-6 for aluminium)
+    #[serde(default)]
+    pub thermal_expansion_per_k: f64,
+    /// temperature at which the wire is stress-free at its unstretched length, and its initial
+    /// temperature `u_ref` [K], > 0; default 268.15 K (-5 C, the ambient temperature of section 5.4)
+    #[serde(default = "default_reference_temperature")]
+    pub reference_temperature_k: f64,
+}
+
+fn default_reference_temperature() -> f64 {
+    crate::wire::REFERENCE_TEMPERATURE_K
 }
 
 /// Supports and grid.
@@ -166,6 +190,14 @@ pub struct WindSpec {
     /// (section 4.1 uses `p = rho_air U^2 d / 2 = 3.805 N/m`)
     #[serde(default)]
     pub pressure_n_per_m: Option<f64>,
+    /// multiplier on the wind load at the start [-], >= 0; default 1 (on). Events `wind` and `gust`
+    /// change it during the run.
+    #[serde(default = "default_initial_scale")]
+    pub initial_scale: f64,
+}
+
+fn default_initial_scale() -> f64 {
+    1.0
 }
 
 fn default_wind_direction() -> [f64; 3] {

@@ -3,6 +3,8 @@
 
 use std::fmt;
 
+use super::events::EventSpec;
+use super::paper::{CompareSpec, ExtractKind};
 use super::schema::{Scenario, ShapeSpec, WindLawSpec};
 use crate::scheme::courant;
 
@@ -73,6 +75,20 @@ pub fn validate(s: &Scenario) -> Vec<Problem> {
     // Conductor.
     let cd = &s.conductor;
     let rho_ok = c.positive("conductor.linear_density_kg_per_m", cd.linear_density_kg_per_m);
+    c.within(
+        "conductor.thermal_expansion_per_k",
+        cd.thermal_expansion_per_k,
+        0.0,
+        1.0e-3,
+        "must be in [0, 1e-3] 1/K (aluminium: 23.8e-6, section 5.4)",
+    );
+    c.within(
+        "conductor.reference_temperature_k",
+        cd.reference_temperature_k,
+        f64::MIN_POSITIVE,
+        5000.0,
+        "must be in (0, 5000] K",
+    );
     if let Some(d) = cd.diameter_m {
         c.positive("conductor.diameter_m", d);
     }
@@ -164,6 +180,7 @@ pub fn validate(s: &Scenario) -> Vec<Problem> {
         c.positive("loads.wind.air_density_kg_per_m3", w.air_density_kg_per_m3);
         c.non_negative("loads.wind.normal_coefficient", w.normal_coefficient);
         c.non_negative("loads.wind.tangential_coefficient", w.tangential_coefficient);
+        c.non_negative("loads.wind.initial_scale", w.initial_scale);
         match (w.law, w.pressure_n_per_m) {
             (WindLawSpec::UniformNormal, Some(p)) => {
                 c.non_negative("loads.wind.pressure_n_per_m", p);
@@ -264,5 +281,164 @@ pub fn validate(s: &Scenario) -> Vec<Problem> {
             "must be in [0, end time] (duration.end_time_s or duration.until_settled.max_time_s)",
         );
     }
+    check_ground_and_events(&mut c, s, end);
+    check_paper(&mut c, s, end);
     c.0
+}
+
+fn range_ok(c: &mut Check, field: &str, r: [f64; 2]) -> bool {
+    let ok = r.iter().all(|x| x.is_finite()) && 0.0 <= r[0] && r[0] < r[1] && r[1] <= 1.0;
+    if !ok {
+        c.fail(field, format!("{r:?}"), "must be [a, b] with 0 <= a < b <= 1 (fractions of the unstretched length)");
+    }
+    ok
+}
+
+/// `[ground]` and `[[events]]`.
+fn check_ground_and_events(c: &mut Check, s: &Scenario, end: Option<f64>) {
+    let g = &s.geometry;
+    if let Some(gr) = &s.ground {
+        let low = g.left_support_m[2].min(g.right_support_m[2]);
+        if !(gr.height_m.is_finite() && gr.height_m < low) {
+            c.fail(
+                "ground.height_m",
+                gr.height_m,
+                &format!("must be a finite height below both supports (the lower support is at x3 = {low} m)"),
+            );
+        }
+        c.within("ground.restitution", gr.restitution, 0.0, 1.0, "must be in [0, 1] (0.6 returns 36 % of the energy)");
+    }
+    let hi = end.unwrap_or(f64::INFINITY);
+    // Ice: the linear density of every part of the span, as the events change it in time order.
+    let mut order: Vec<usize> = (0..s.events.len()).collect();
+    order.sort_by(|&a, &b| s.events[a].time_s().total_cmp(&s.events[b].time_s()));
+    let mut ice: Vec<(f64, f64, f64)> = Vec::new(); // (a, b, delta) applied so far
+    for k in order {
+        let e = &s.events[k];
+        let f = |name: &str| format!("events[{k}].{name}");
+        c.within(
+            &f("time_s"),
+            e.time_s(),
+            0.0,
+            hi,
+            "must be in [0, end time] (duration.end_time_s or duration.until_settled.max_time_s)",
+        );
+        let needs_wind = matches!(e, EventSpec::Wind { .. } | EventSpec::Gust { .. });
+        if needs_wind && s.loads.wind.is_none() {
+            c.fail(&f("action"), format!("\"{}\"", e.action()), "needs a wind load ([loads.wind]) to switch");
+        }
+        match *e {
+            EventSpec::Break { at_fraction, .. } => {
+                c.within(&f("at_fraction"), at_fraction, f64::MIN_POSITIVE, 1.0 - f64::EPSILON, "must be in (0, 1)");
+            }
+            EventSpec::Ice { linear_density_kg_per_m: d, range, .. } => {
+                if range_ok(c, &f("range"), range)
+                    && c.within(
+                        &f("linear_density_kg_per_m"),
+                        d,
+                        -1.0e6,
+                        1.0e6,
+                        "must be a finite change of linear density [kg/m]",
+                    )
+                {
+                    ice.push((range[0], range[1], d));
+                    // The least density anywhere: check at the midpoints between all range ends.
+                    let mut ends: Vec<f64> = ice.iter().flat_map(|r| [r.0, r.1]).collect();
+                    ends.sort_by(f64::total_cmp);
+                    let least = ends
+                        .windows(2)
+                        .filter(|w| w[1] > w[0])
+                        .map(|w| {
+                            let m = 0.5 * (w[0] + w[1]);
+                            ice.iter().filter(|r| r.0 <= m && m <= r.1).map(|r| r.2).sum::<f64>()
+                        })
+                        .fold(0.0_f64, f64::min);
+                    if least < 0.0 {
+                        c.fail(
+                            &f("linear_density_kg_per_m"),
+                            d,
+                            &format!(
+                                "would leave part of the span {:.6} kg/m below conductor.linear_density_kg_per_m \
+                                 (ice can only be dropped down to the bare wire, for which the time step is set)",
+                                -least
+                            ),
+                        );
+                    }
+                }
+            }
+            EventSpec::Wind { scale, .. } => {
+                c.non_negative(&f("scale"), scale);
+            }
+            EventSpec::Gust { period_s, amplitude, .. } => {
+                c.positive(&f("period_s"), period_s);
+                c.non_negative(&f("amplitude"), amplitude);
+            }
+            EventSpec::Temperature { temperature_k, range, ramp_s, .. } => {
+                c.within(&f("temperature_k"), temperature_k, f64::MIN_POSITIVE, 5000.0, "must be in (0, 5000] K");
+                range_ok(c, &f("range"), range);
+                c.non_negative(&f("ramp_s"), ramp_s);
+            }
+            EventSpec::HeatConduction { hold_range, hold_temperature_k, heat_time_per_s, .. } => {
+                range_ok(c, &f("hold_range"), hold_range);
+                c.within(
+                    &f("hold_temperature_k"),
+                    hold_temperature_k,
+                    f64::MIN_POSITIVE,
+                    5000.0,
+                    "must be in (0, 5000] K",
+                );
+                c.within(&f("heat_time_per_s"), heat_time_per_s, f64::MIN_POSITIVE, 1.0e3, "must be in (0, 1000] 1/s");
+            }
+            EventSpec::HeatConductionOff { .. } => {}
+            EventSpec::Ground { .. } => {
+                if s.ground.is_none() {
+                    c.fail(&f("action"), "\"ground\"", "needs a [ground] section (height_m, restitution)");
+                }
+            }
+        }
+    }
+}
+
+/// `[paper]`: tolerances, extractors and windows.
+fn check_paper(c: &mut Check, s: &Scenario, end: Option<f64>) {
+    let Some(p) = &s.paper else { return };
+    c.positive("paper.length_scale_m", p.length_scale_m);
+    let hi = end.unwrap_or(f64::INFINITY);
+    for (k, ch) in p.checks.iter().enumerate() {
+        let f = |name: &str| format!("paper.checks[{k}].{name}");
+        if let Some(v) = ch.paper
+            && !v.is_finite()
+        {
+            c.fail(&f("paper"), v, "must be a finite number");
+        }
+        if ch.paper.is_none() && ch.reference.is_none() && ch.compare == CompareSpec::Match {
+            c.fail(&f("paper"), "(missing)", "a \"match\" check needs a paper value or a reference");
+        }
+        c.within(&f("tolerance"), ch.tolerance, f64::MIN_POSITIVE, 10.0, "must be a relative tolerance in (0, 10]");
+        let x = &ch.extract;
+        let needs_component = matches!(
+            x.kind,
+            ExtractKind::Midspan
+                | ExtractKind::MidspanPeak
+                | ExtractKind::MidspanPeakTime
+                | ExtractKind::MidspanFirstExtreme
+                | ExtractKind::MidspanFirstExtremeTime
+                | ExtractKind::MidspanAmplitude
+        );
+        if needs_component && x.component.is_none() {
+            c.fail(
+                &f("extract.component"),
+                "(missing)",
+                "required for the midspan extractors: \"x1\", \"x2\" or \"x3\"",
+            );
+        }
+        if let Some(t) = x.at_s {
+            c.within(&f("extract.at_s"), t, 0.0, hi, "must be in [0, end time]");
+        }
+        if let Some(w) = x.window_s
+            && !(w[0].is_finite() && w[1].is_finite() && 0.0 <= w[0] && w[0] < w[1] && w[1] <= hi)
+        {
+            c.fail(&f("extract.window_s"), format!("{w:?}"), "must be [t0, t1] with 0 <= t0 < t1 <= end time");
+        }
+    }
 }

@@ -1,0 +1,174 @@
+//! The event timeline at run time: what each event of a scenario's `[[events]]` does to the solver,
+//! and the continuous processes some of them start (a gust, a temperature ramp, heat conduction).
+//!
+//! The driver ([`crate::run`]) steps exactly onto every event time ([`EventState::next_time`]), applies
+//! the events due there ([`EventState::apply_due`]), and around every step calls
+//! [`EventState::before_step`] (gust multiplier and temperature ramps at the step's start time) and
+//! [`EventState::after_step`] (heat conduction over the step). What each event does:
+//!
+//! - `break`: [`Wire::break_segment`](crate::wire::Wire::break_segment), the break (3.5); both parts
+//!   continue as free-ended wires;
+//! - `ice`: [`Wire::add_linear_density`](crate::wire::Wire::add_linear_density) over the span range;
+//! - `wind`: a constant multiplier on the wind load and its gate (ends a gust);
+//! - `gust`: the law (4.5) with a physical period ([`gust`]);
+//! - `temperature`: a step or a linear ramp ([`ramp`]) of the segment temperatures; the stress-free
+//!   lengths follow by (5.5) through [`Wire::update_rest_lengths`](crate::wire::Wire::update_rest_lengths);
+//! - `heat_conduction` / `heat_conduction_off`: the heat equation (5.2) along the wire with a held span
+//!   range ([`conduction`]);
+//! - `ground`: contact with the `[ground]` plane on or off (section 4.4).
+
+pub mod conduction;
+pub mod gust;
+pub mod ramp;
+
+use crate::scenario::Plan;
+use crate::scenario::events::{EventSpec, GateSpec, GroundSpec, break_segment, node_range, segment_range};
+use crate::scheme::{Explicit, Ground, WindGate};
+
+pub use conduction::Conduction;
+pub use gust::Gust;
+pub use ramp::Ramp;
+
+/// The timeline and the processes running.
+#[derive(Clone, Debug)]
+pub struct EventState {
+    events: Vec<EventSpec>,
+    next: usize,
+    ground: Option<GroundSpec>,
+    gust: Option<Gust>,
+    ramps: Vec<Ramp>,
+    conduction: Option<Conduction>,
+    /// events applied so far: (time [s], description)
+    pub log: Vec<(f64, String)>,
+}
+
+fn gate(g: GateSpec) -> WindGate {
+    match g {
+        GateSpec::Always => WindGate::Always,
+        GateSpec::Downwind => WindGate::Downwind,
+    }
+}
+
+impl EventState {
+    /// The timeline of a plan, nothing applied yet.
+    pub fn new(plan: &Plan) -> Self {
+        EventState {
+            events: plan.events.clone(),
+            next: 0,
+            ground: plan.ground.clone(),
+            gust: None,
+            ramps: Vec::new(),
+            conduction: None,
+            log: Vec::new(),
+        }
+    }
+
+    /// Time of the next event not yet applied [s].
+    pub fn next_time(&self) -> Option<f64> {
+        self.events.get(self.next).map(|e| e.time_s())
+    }
+
+    /// Apply every event due at or before `t + tol` [s]; returns how many were applied.
+    pub fn apply_due(&mut self, solver: &mut Explicit, t: f64, tol: f64) -> usize {
+        let mut count = 0;
+        while let Some(e) = self.events.get(self.next).cloned() {
+            if e.time_s() > t + tol {
+                break;
+            }
+            self.next += 1;
+            count += 1;
+            let text = self.apply(solver, &e, t);
+            self.log.push((t, text));
+        }
+        count
+    }
+
+    fn apply(&mut self, solver: &mut Explicit, e: &EventSpec, t: f64) -> String {
+        let n = solver.wire.segments();
+        match *e {
+            EventSpec::Break { at_fraction, .. } => {
+                let j = break_segment(at_fraction, n);
+                solver.wire.break_segment(j);
+                format!("break of segment {j} (between nodes {j} and {})", j + 1)
+            }
+            EventSpec::Ice { linear_density_kg_per_m, range, .. } => {
+                let r = segment_range(range, n);
+                let text = format!("linear density {linear_density_kg_per_m:+} kg/m on segments {r:?}");
+                solver.wire.add_linear_density(r, linear_density_kg_per_m);
+                text
+            }
+            EventSpec::Wind { scale, gate: g, .. } => {
+                self.gust = None;
+                solver.loads.wind_scale = scale;
+                solver.loads.wind_gate = gate(g);
+                format!("wind multiplier {scale}, gate {g:?}")
+            }
+            EventSpec::Gust { period_s, amplitude, gate: g, time_s } => {
+                self.gust = Some(Gust { start_s: time_s, period_s, amplitude });
+                solver.loads.wind_gate = gate(g);
+                format!("gust (4.5): period {period_s} s, amplitude {amplitude}, gate {g:?}")
+            }
+            EventSpec::Temperature { temperature_k, range, ramp_s, .. } => {
+                let r = segment_range(range, n);
+                let text = format!("temperature {temperature_k} K on segments {r:?} (ramp {ramp_s} s)");
+                self.conduction = None;
+                self.ramps.retain(|p| p.first + p.from_k.len() <= r.start || p.first >= r.end);
+                if ramp_s > 0.0 {
+                    let from_k = solver.wire.temperature_k[r.clone()].to_vec();
+                    self.ramps.push(Ramp {
+                        start_s: t,
+                        duration_s: ramp_s,
+                        first: r.start,
+                        from_k,
+                        to_k: temperature_k,
+                    });
+                } else {
+                    solver.wire.set_temperature(r, temperature_k);
+                }
+                text
+            }
+            EventSpec::HeatConduction { hold_range, hold_temperature_k, heat_time_per_s, boundary, .. } => {
+                let nodes = node_range(hold_range, n);
+                let text = format!(
+                    "heat conduction (5.2), nodes {nodes:?} held at {hold_temperature_k} K, \
+                     {heat_time_per_s} units of dimensionless heat time per second, boundary {boundary:?}"
+                );
+                self.ramps.clear();
+                self.conduction =
+                    Some(Conduction::start(&solver.wire, nodes, hold_temperature_k, heat_time_per_s, boundary));
+                text
+            }
+            EventSpec::HeatConductionOff { .. } => {
+                self.conduction = None;
+                "heat conduction off".into()
+            }
+            EventSpec::Ground { on, .. } => {
+                solver.ground = if on {
+                    self.ground.as_ref().map(|g| Ground { height_m: g.height_m, restitution: g.restitution })
+                } else {
+                    None
+                };
+                format!("ground contact {}", if on { "on" } else { "off" })
+            }
+        }
+    }
+
+    /// Before a step from time `t` [s]: the gust multiplier and the temperature ramps at `t`.
+    pub fn before_step(&mut self, solver: &mut Explicit, t: f64) {
+        if let Some(g) = &self.gust {
+            solver.loads.wind_scale = g.scale(t);
+        }
+        if !self.ramps.is_empty() {
+            let w = &mut solver.wire;
+            self.ramps.retain(|r| !r.apply(w, t));
+            w.update_rest_lengths();
+        }
+    }
+
+    /// After a step of `dt` [s]: heat conduction over the step.
+    pub fn after_step(&mut self, solver: &mut Explicit, dt: f64) {
+        if let Some(c) = &mut self.conduction {
+            c.advance(&mut solver.wire, dt);
+        }
+    }
+}

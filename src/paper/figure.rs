@@ -1,0 +1,229 @@
+//! The figure of a case and the CSV it is drawn from.
+//!
+//! Panel kinds (generic, chosen in the case file; see [`crate::scenario::paper::PanelKind`]): the history
+//! of a mid-span component in the paper's dimensionless units (displacement / l against `tau = t U /
+//! l`; the axis labels give the conversion to metres and seconds), a mid-span trajectory, the shapes at
+//! the snapshot times, tension histories and the mean temperature. The paper's values are drawn as
+//! markers at the time the paper prints them, the independent reference as a dashed line beside the
+//! computed curve.
+
+use std::io::Write;
+use std::path::Path;
+
+use super::extract::Series as Columns;
+use super::table::Row;
+use crate::output::plot::{Chart, PlotError, Series, Style, render};
+use crate::run::Outcome;
+use crate::scenario::Plan;
+use crate::scenario::paper::{ExtractKind, PanelKind, PanelSpec, PaperSpec, UnitSpec};
+
+/// Time axis of a panel: values and label.
+fn time_axis(plan: &Plan, unit: UnitSpec, scale: f64) -> (f64, String) {
+    match unit {
+        UnitSpec::S => (1.0, "t [s]".into()),
+        _ => {
+            let per_s = plan.tau_speed_m_per_s / plan.chord_m;
+            let _ = scale;
+            (per_s, format!("tau = t U / l [-]   (t [s] = {:.4} tau)", 1.0 / per_s))
+        }
+    }
+}
+
+fn in_window(t: f64, w: Option<[f64; 2]>) -> bool {
+    w.is_none_or(|[a, b]| t >= a - 1e-9 && t <= b + 1e-9)
+}
+
+/// Build the panels of a case.
+pub fn charts(spec: &PaperSpec, plan: &Plan, o: &Outcome, cols: &Columns, rows: &[Row]) -> Vec<Chart> {
+    let l = spec.length_scale_m;
+    let mut out = Vec::new();
+    for p in &spec.panels {
+        out.push(chart(p, spec, plan, o, cols, rows, l));
+    }
+    out
+}
+
+fn chart(p: &PanelSpec, spec: &PaperSpec, plan: &Plan, o: &Outcome, c: &Columns, rows: &[Row], l: f64) -> Chart {
+    let (tf, tlabel) = time_axis(plan, p.time_unit.unwrap_or(UnitSpec::Tau), l);
+    let idx: Vec<usize> = (0..c.t.len()).filter(|&i| in_window(c.t[i], p.window_s)).collect();
+    let mut chart = Chart { x_label: tlabel, ..Default::default() };
+    match p.kind {
+        PanelKind::Midspan => {
+            let comp = p.component.map_or(2, |c| c.index());
+            let name = ["x1", "x2", "x3"][comp];
+            chart.title = p.title.clone().unwrap_or_else(|| format!("mid-span {name}"));
+            chart.y_label = format!("mid-span {name} / l [-]   ({name} [m] = {l} {name}/l)");
+            let pts = idx.iter().map(|&i| (c.t[i] * tf, c.mid[comp][i] / l)).collect();
+            chart.series.push(Series::new("computed", pts, Style::Line, 0));
+            let (t0, t1) = (idx.first().map_or(0.0, |&i| c.t[i]) * tf, idx.last().map_or(0.0, |&i| c.t[i]) * tf);
+            for (k, (r, ch)) in rows.iter().zip(&spec.checks).enumerate() {
+                if ch.extract.component.map(|c| c.index()) != Some(comp) || r.unit != UnitSpec::Span {
+                    continue;
+                }
+                if ch.extract.kind == ExtractKind::Midspan
+                    && let Some(e) = r.exact
+                {
+                    let label = format!("reference ({})", ch.reference.map_or("".into(), |k| format!("{k:?}")));
+                    chart.series.push(Series::new(label, vec![(t0, e), (t1, e)], Style::Dashed, 1 + k % 3));
+                }
+                if let (Some(tau), Some(pv)) = (ch.paper_tau, r.paper) {
+                    let tx = if tf == 1.0 { tau * plan.chord_m / plan.tau_speed_m_per_s } else { tau };
+                    if tx >= t0 - 1e-9 && tx <= t1 + 1e-9 {
+                        chart.series.push(Series::new(
+                            format!("paper: {}", ch.quantity),
+                            vec![(tx, pv)],
+                            Style::Markers,
+                            4 + k % 3,
+                        ));
+                    }
+                }
+            }
+        }
+        PanelKind::Trajectory => {
+            let [a, b] = p.plane.map_or([0, 2], |q| [q[0].index(), q[1].index()]);
+            let (na, nb) = (["x1", "x2", "x3"][a], ["x1", "x2", "x3"][b]);
+            chart.title = p.title.clone().unwrap_or_else(|| format!("mid-span trajectory in the {na}-{nb} plane"));
+            chart.x_label = format!("mid-span {na} / l [-]   ({na} [m] = {l} {na}/l)");
+            chart.y_label = format!("mid-span {nb} / l [-]");
+            let pts = idx.iter().map(|&i| (c.mid[a][i] / l, c.mid[b][i] / l)).collect();
+            chart.series.push(Series::new("computed", pts, Style::Line, 0));
+        }
+        PanelKind::Shapes => {
+            let [a, b] = p.plane.map_or([1, 2], |q| [q[0].index(), q[1].index()]);
+            let (na, nb) = (["x1", "x2", "x3"][a], ["x1", "x2", "x3"][b]);
+            chart.title = p.title.clone().unwrap_or_else(|| format!("shapes in the {na}-{nb} plane"));
+            chart.x_label = format!("{na} / l [-]   ({na} [m] = {l} {na}/l)");
+            chart.y_label = format!("{nb} / l [-]");
+            for (k, s) in o.shapes.iter().enumerate() {
+                // Split the polyline at broken segments.
+                let mut part: Vec<(f64, f64)> = Vec::new();
+                let mut part_no = 0;
+                for i in 0..s.x[0].len() {
+                    part.push((s.x[a][i] / l, s.x[b][i] / l));
+                    let cut = i + 1 == s.x[0].len() || s.intact[i] == 0.0;
+                    if cut {
+                        let which =
+                            if s.intact.contains(&0.0) { ["left part", "right part"][part_no.min(1)] } else { "" };
+                        let label = format!("tau = {:.2} (t = {:.2} s) {which}", s.tau, s.t_s);
+                        chart.series.push(Series::new(label, std::mem::take(&mut part), Style::Line, k));
+                        part_no += 1;
+                    }
+                }
+            }
+            if let (Some(g), 2) = (&plan.ground, b) {
+                let xs: Vec<f64> = o.shapes.iter().flat_map(|s| s.x[a].iter().map(|v| v / l)).collect();
+                let (lo, hi) = xs.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(p, q), &v| (p.min(v), q.max(v)));
+                if lo.is_finite() {
+                    chart.series.push(Series::new(
+                        format!("ground, x3 = {} m", g.height_m),
+                        vec![(lo, g.height_m / l), (hi, g.height_m / l)],
+                        Style::Dashed,
+                        7,
+                    ));
+                }
+            }
+        }
+        PanelKind::MaxTension | PanelKind::SupportTension => {
+            let support = p.kind == PanelKind::SupportTension;
+            chart.title = p.title.clone().unwrap_or_else(|| {
+                if support { "tension at the supports".into() } else { "largest segment tension".into() }
+            });
+            chart.y_label = "tension [kN]".into();
+            if support {
+                for (side, name) in [(0, "left support"), (1, "right support")] {
+                    let pts = idx.iter().map(|&i| (c.t[i] * tf, c.probes[i].support_tension_n[side] / 1e3)).collect();
+                    chart.series.push(Series::new(name, pts, Style::Line, side));
+                }
+            } else {
+                let pts = idx.iter().map(|&i| (c.t[i] * tf, c.max_tension[i] / 1e3)).collect();
+                chart.series.push(Series::new("computed", pts, Style::Line, 0));
+            }
+            let kinds: &[ExtractKind] = if support {
+                &[ExtractKind::SupportTension]
+            } else {
+                &[ExtractKind::MaxTension, ExtractKind::MaxTensionPeak]
+            };
+            let (t0, t1) = (idx.first().map_or(0.0, |&i| c.t[i]) * tf, idx.last().map_or(0.0, |&i| c.t[i]) * tf);
+            for (k, (r, ch)) in rows.iter().zip(&spec.checks).enumerate() {
+                if !kinds.contains(&ch.extract.kind) || r.unit != UnitSpec::Kn {
+                    continue;
+                }
+                if let Some(e) = r.exact {
+                    let te = ch.extract.at_s.map_or(t1, |t| t * tf);
+                    let ts = ch.extract.at_s.map_or(t0, |t| (t * tf - 0.1 * (t1 - t0)).max(t0));
+                    chart.series.push(Series::new(
+                        format!("reference: {}", ch.quantity),
+                        vec![(ts, e), (te, e)],
+                        Style::Dashed,
+                        1 + k % 3,
+                    ));
+                }
+                if let (Some(tau), Some(pv)) = (ch.paper_tau, r.paper) {
+                    let tx = if tf == 1.0 { tau * plan.chord_m / plan.tau_speed_m_per_s } else { tau };
+                    chart.series.push(Series::new(
+                        format!("paper: {}", ch.quantity),
+                        vec![(tx, pv)],
+                        Style::Markers,
+                        4 + k % 3,
+                    ));
+                }
+            }
+        }
+        PanelKind::Temperature => {
+            chart.title = p.title.clone().unwrap_or_else(|| "mean wire temperature".into());
+            chart.y_label = "mean temperature [K]".into();
+            let pts = idx.iter().map(|&i| (c.t[i] * tf, c.probes[i].mean_temperature_k)).collect();
+            chart.series.push(Series::new("computed", pts, Style::Line, 0));
+        }
+    }
+    chart
+}
+
+/// Render the case's figure to `stem.png` and `stem.svg`.
+pub fn draw(charts: &[Chart], stem: &Path) -> Result<(), PlotError> {
+    let cols = if charts.len() >= 4 { 2 } else { charts.len().max(1) };
+    render(charts, cols, (620, 420), stem)
+}
+
+/// Write the time series (`stem.csv`) and, if any, the shapes (`stem_shapes.csv`) the figure is drawn from.
+pub fn write_csv(o: &Outcome, c: &Columns, plan: &Plan, l: f64, stem: &Path) -> std::io::Result<()> {
+    let mut f = std::io::BufWriter::new(std::fs::File::create(stem.with_extension("csv"))?);
+    writeln!(
+        f,
+        "t_s,tau,mid_dx1_m,mid_dx2_m,mid_dx3_m,mid_dx1_l,mid_dx2_l,mid_dx3_l,max_tension_n,\
+         support_left_n,support_right_n,mean_temperature_k,wind_scale"
+    )?;
+    for i in 0..c.t.len() {
+        let p = &c.probes[i];
+        writeln!(
+            f,
+            "{},{},{},{},{},{},{},{},{},{},{},{},{}",
+            c.t[i],
+            plan.tau(c.t[i]),
+            c.mid[0][i],
+            c.mid[1][i],
+            c.mid[2][i],
+            c.mid[0][i] / l,
+            c.mid[1][i] / l,
+            c.mid[2][i] / l,
+            c.max_tension[i],
+            p.support_tension_n[0],
+            p.support_tension_n[1],
+            p.mean_temperature_k,
+            p.wind_scale
+        )?;
+    }
+    f.flush()?;
+    if !o.shapes.is_empty() {
+        let name = format!("{}_shapes.csv", stem.file_name().and_then(|s| s.to_str()).unwrap_or("case"));
+        let mut f = std::io::BufWriter::new(std::fs::File::create(stem.with_file_name(name))?);
+        writeln!(f, "t_s,tau,node,x1_m,x2_m,x3_m")?;
+        for s in &o.shapes {
+            for i in 0..s.x[0].len() {
+                writeln!(f, "{},{},{},{},{},{}", s.t_s, s.tau, i, s.x[0][i], s.x[1][i], s.x[2][i])?;
+            }
+        }
+        f.flush()?;
+    }
+    Ok(())
+}

@@ -1,0 +1,262 @@
+//! The event timeline of a scenario (`[[events]]` tables) and the ground plane (`[ground]`), in their
+//! TOML form. Each event happens at `time_s` [s]; the run steps exactly onto that time and applies it
+//! before the next step (see [`crate::events`] for what each one does to the solver).
+//!
+//! ```toml
+//! [ground]                       # section 4.4: a ground plane, restitution 0.6 = 36 % rebound energy
+//! height_m = -25.0
+//! restitution = 0.6
+//!
+//! [[events]]                     # break the segment at mid-span, (3.5)
+//! time_s = 326.0
+//! action = "break"
+//! at_fraction = 0.5
+//! ```
+//!
+//! Span ranges `range = [a, b]` are fractions of the unstretched length measured from the left
+//! support (`0 <= a < b <= 1`); they cover the segments between the nodes nearest to `a` and `b`, so a
+//! range is independent of the number of segments.
+
+use serde::Deserialize;
+
+/// A ground plane `x3 = height_m` (section 4.4).
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct GroundSpec {
+    /// height of the ground plane `x3` [m]; must lie below both supports
+    pub height_m: f64,
+    /// coefficient of restitution on the normal velocity [-], in [0, 1]; the paper's 36 % of the
+    /// vertical impact energy returned on rebound is 0.6 (0.6^2 = 0.36, section 4.4)
+    pub restitution: f64,
+    /// whether contact is on from the start; default true (an `action = "ground"` event switches it)
+    #[serde(default = "yes")]
+    pub active: bool,
+}
+
+fn yes() -> bool {
+    true
+}
+
+/// Where a wind load acts (see [`crate::scheme::WindGate`]).
+#[derive(Clone, Copy, Debug, Default, Deserialize, PartialEq, Eq)]
+#[serde(rename_all = "snake_case")]
+pub enum GateSpec {
+    /// on every segment (default)
+    #[default]
+    Always,
+    /// only on segments moving downwind (the "dancing wires" gust of section 4.5)
+    Downwind,
+}
+
+/// Boundary treatment of the heat equation (5.2) at the wire's ends (see [`crate::heat`]).
+#[derive(Clone, Copy, Debug, Default, Deserialize, PartialEq, Eq)]
+#[serde(rename_all = "snake_case")]
+pub enum HeatBoundarySpec {
+    /// option 1 of section 5.3 (three-point Lagrange polynomial), re-derived
+    LagrangeQuadratic,
+    /// option 2 of section 5.3, eq. (5.4) with its misprinted coefficient 1 + 2r corrected to 1 + r
+    /// (the literal (5.4) diverges for every step; see [`crate::heat::boundary`])
+    Linear,
+    /// conservative zero-flux (insulated) boundary; default
+    #[default]
+    ZeroFlux,
+}
+
+/// One event of the timeline. `action` selects the kind; every kind has `time_s` [s].
+#[derive(Clone, Debug, Deserialize)]
+#[serde(tag = "action", rename_all = "snake_case", deny_unknown_fields)]
+pub enum EventSpec {
+    /// Break the segment that contains the Lagrangian point `at_fraction` of the span (3.5); both parts
+    /// continue as free-ended wires.
+    Break {
+        /// event time [s]
+        time_s: f64,
+        /// position of the break as a fraction of the unstretched length from the left support [-], in
+        /// (0, 1); the segment `floor(at_fraction N)` breaks (for 0.5 and even N: the segment right of
+        /// the mid-span node)
+        at_fraction: f64,
+    },
+    /// Add ice (or drop it, with a negative value): a change of linear density over a span range.
+    Ice {
+        /// event time [s]
+        time_s: f64,
+        /// change of linear density `delta rho0` [kg/m] per unit unstretched length (negative drops ice)
+        linear_density_kg_per_m: f64,
+        /// span range `[a, b]` as fractions of the unstretched length [-]; default the whole span
+        #[serde(default = "whole_span")]
+        range: [f64; 2],
+    },
+    /// Set the wind to a constant multiple of the scenario's wind load (0 = off, 1 = on); ends a gust.
+    Wind {
+        /// event time [s]
+        time_s: f64,
+        /// multiplier on the wind load [-], >= 0
+        scale: f64,
+        /// where it acts; default `"always"`
+        #[serde(default)]
+        gate: GateSpec,
+    },
+    /// Start a gust, law (4.5) written with its physical period `P` (NOTES.md: the paper counts time in
+    /// integration steps): the wind load is multiplied by `amplitude |sin(pi (t - time_s) / P)|`.
+    Gust {
+        /// event time [s]: the gust starts here
+        time_s: f64,
+        /// period `P` of `|sin(pi t / P)|` [s], > 0
+        period_s: f64,
+        /// peak multiplier on the wind load [-], >= 0; default 1 (the full pressure head `q0 d`)
+        #[serde(default = "one")]
+        amplitude: f64,
+        /// where it acts; default `"always"` (`"downwind"` is the dancing-wires variant of 4.5)
+        #[serde(default)]
+        gate: GateSpec,
+    },
+    /// Set the temperature of a span range, at once or as a linear ramp; thermal strain enters through
+    /// each segment's stress-free length (5.5). Stops heat conduction if it is running.
+    Temperature {
+        /// event time [s]
+        time_s: f64,
+        /// target temperature `u` [K], > 0
+        temperature_k: f64,
+        /// span range `[a, b]` [-]; default the whole span
+        #[serde(default = "whole_span")]
+        range: [f64; 2],
+        /// duration of a linear ramp from each segment's current temperature to the target [s], >= 0;
+        /// default 0 (a step)
+        #[serde(default)]
+        ramp_s: f64,
+    },
+    /// Start heat conduction along the wire, eq. (5.2), with a span range held at a fixed temperature.
+    HeatConduction {
+        /// event time [s]
+        time_s: f64,
+        /// span range held at `hold_temperature_k` [-]
+        hold_range: [f64; 2],
+        /// temperature of the held range [K], > 0
+        hold_temperature_k: f64,
+        /// dimensionless heat time (the `t` of (5.1), length scaled by the span) per second of the
+        /// mechanical run [1/s], > 0. Physical conduction in aluminium would be `k / (rho c S^2)`, about
+        /// 3.4e-9 1/s for a 160 m span (NOTES.md); the paper's de-icing sequence needs about 1.
+        heat_time_per_s: f64,
+        /// boundary treatment at the wire's ends; default `"zero_flux"`
+        #[serde(default)]
+        boundary: HeatBoundarySpec,
+    },
+    /// Stop heat conduction; the temperatures stay as they are.
+    HeatConductionOff {
+        /// event time [s]
+        time_s: f64,
+    },
+    /// Switch ground contact on or off (needs a `[ground]` section).
+    Ground {
+        /// event time [s]
+        time_s: f64,
+        /// true: contact on
+        on: bool,
+    },
+}
+
+fn whole_span() -> [f64; 2] {
+    [0.0, 1.0]
+}
+fn one() -> f64 {
+    1.0
+}
+
+impl EventSpec {
+    /// The event's time [s].
+    pub fn time_s(&self) -> f64 {
+        match *self {
+            EventSpec::Break { time_s, .. }
+            | EventSpec::Ice { time_s, .. }
+            | EventSpec::Wind { time_s, .. }
+            | EventSpec::Gust { time_s, .. }
+            | EventSpec::Temperature { time_s, .. }
+            | EventSpec::HeatConduction { time_s, .. }
+            | EventSpec::HeatConductionOff { time_s }
+            | EventSpec::Ground { time_s, .. } => time_s,
+        }
+    }
+
+    /// The `action` name as written in the file.
+    pub fn action(&self) -> &'static str {
+        match self {
+            EventSpec::Break { .. } => "break",
+            EventSpec::Ice { .. } => "ice",
+            EventSpec::Wind { .. } => "wind",
+            EventSpec::Gust { .. } => "gust",
+            EventSpec::Temperature { .. } => "temperature",
+            EventSpec::HeatConduction { .. } => "heat_conduction",
+            EventSpec::HeatConductionOff { .. } => "heat_conduction_off",
+            EventSpec::Ground { .. } => "ground",
+        }
+    }
+}
+
+/// Segments of an `n`-segment wire in the span range `[a, b]`: those between the nodes nearest to
+/// `a S` and `b S`, i.e. `round(a n) .. round(b n)`.
+pub fn segment_range(range: [f64; 2], n: usize) -> std::ops::Range<usize> {
+    let (lo, hi) = node_bounds(range, n);
+    lo..hi
+}
+
+/// Nodes of an `n`-segment wire in the span range `[a, b]`: `round(a n) ..= round(b n)`.
+pub fn node_range(range: [f64; 2], n: usize) -> std::ops::Range<usize> {
+    let (lo, hi) = node_bounds(range, n);
+    lo..hi + 1
+}
+
+fn node_bounds(range: [f64; 2], n: usize) -> (usize, usize) {
+    let nf = n as f64;
+    let lo = (range[0] * nf).round().clamp(0.0, nf) as usize;
+    let hi = (range[1] * nf).round().clamp(0.0, nf) as usize;
+    (lo.min(hi), hi)
+}
+
+/// The segment that breaks for `at_fraction` on an `n`-segment wire.
+pub fn break_segment(at_fraction: f64, n: usize) -> usize {
+    ((at_fraction * n as f64).floor().max(0.0) as usize).min(n - 1)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn ranges_select_segments_by_midpoint_and_nodes_by_position() {
+        assert_eq!(segment_range([0.0, 1.0], 50), 0..50);
+        assert_eq!(segment_range([0.45, 0.55], 50), 23..28);
+        assert_eq!(segment_range([0.0, 0.5], 50), 0..25);
+        assert_eq!(segment_range([0.5, 1.0], 50), 25..50);
+        assert_eq!(node_range([0.45, 0.55], 50), 23..29);
+        assert_eq!(node_range([0.0, 1.0], 50), 0..51);
+        assert_eq!(break_segment(0.5, 50), 25);
+        assert_eq!(break_segment(0.999, 50), 49);
+    }
+
+    #[test]
+    fn events_parse_from_toml_and_refuse_unknown_fields() {
+        #[derive(Deserialize)]
+        struct Doc {
+            events: Vec<EventSpec>,
+        }
+        let d: Doc = toml::from_str(
+            r#"
+            [[events]]
+            time_s = 1.0
+            action = "gust"
+            period_s = 2.0
+            gate = "downwind"
+            [[events]]
+            time_s = 3.0
+            action = "ice"
+            linear_density_kg_per_m = -0.5
+            "#,
+        )
+        .unwrap();
+        assert_eq!(d.events.len(), 2);
+        assert!(matches!(d.events[0], EventSpec::Gust { amplitude, gate: GateSpec::Downwind, .. } if amplitude == 1.0));
+        assert!(matches!(d.events[1], EventSpec::Ice { range: [0.0, 1.0], .. }));
+        let bad = toml::from_str::<Doc>("[[events]]\ntime_s = 1.0\naction = \"break\"\nat_fractoin = 0.5\n");
+        assert!(bad.is_err());
+    }
+}
