@@ -161,14 +161,62 @@ fn draw_all<DB: DrawingBackend>(
         let ys = chart.series.iter().flat_map(|s| s.points.iter().map(|p| p.1));
         let xr = chart.x_range.unwrap_or_else(|| data_range(xs, chart.log_x));
         let yr = chart.y_range.unwrap_or_else(|| data_range(ys, chart.log_y));
+        let legend = emptiest_corner(chart, xr, yr);
         match (chart.log_x, chart.log_y) {
-            (false, false) => draw_panel(area, chart, xr.0..xr.1, yr.0..yr.1),
-            (true, false) => draw_panel(area, chart, (xr.0..xr.1).log_scale(), yr.0..yr.1),
-            (false, true) => draw_panel(area, chart, xr.0..xr.1, (yr.0..yr.1).log_scale()),
-            (true, true) => draw_panel(area, chart, (xr.0..xr.1).log_scale(), (yr.0..yr.1).log_scale()),
+            (false, false) => draw_panel(area, chart, xr.0..xr.1, yr.0..yr.1, legend),
+            (true, false) => draw_panel(area, chart, (xr.0..xr.1).log_scale(), yr.0..yr.1, legend),
+            (false, true) => draw_panel(area, chart, xr.0..xr.1, (yr.0..yr.1).log_scale(), legend),
+            (true, true) => draw_panel(area, chart, (xr.0..xr.1).log_scale(), (yr.0..yr.1).log_scale(), legend),
         }?;
     }
     Ok(())
+}
+
+/// The corner of the plot area where the legend hides the fewest data: each corner box (45 % of the width,
+/// 40 % of the height) is scored by the number of points and line crossings in it; ties keep the
+/// conventional upper right.
+fn emptiest_corner(chart: &Chart, xr: (f64, f64), yr: (f64, f64)) -> SeriesLabelPosition {
+    let unit = |v: f64, (lo, hi): (f64, f64), log: bool| {
+        if log { (v.ln() - lo.ln()) / (hi.ln() - lo.ln()) } else { (v - lo) / (hi - lo) }
+    };
+    // (position, x interval, y interval) in unit coordinates, y up.
+    let corners = [
+        (SeriesLabelPosition::UpperRight, (0.55, 1.0), (0.6, 1.0)),
+        (SeriesLabelPosition::UpperLeft, (0.0, 0.45), (0.6, 1.0)),
+        (SeriesLabelPosition::LowerRight, (0.55, 1.0), (0.0, 0.4)),
+        (SeriesLabelPosition::LowerLeft, (0.0, 0.45), (0.0, 0.4)),
+    ];
+    let mut count = [0usize; 4];
+    for s in &chart.series {
+        // Sample each polyline densely enough that a line crossing a box counts even without a vertex in it.
+        // Markers are points only: score each as a zero-length segment.
+        let segments: Vec<&[(f64, f64)]> = if s.style == Style::Markers {
+            s.points.chunks(1).collect()
+        } else {
+            s.points.windows(2).chain(s.points.last().map(std::slice::from_ref)).collect()
+        };
+        for w in segments {
+            let (a, b) = (w[0], w[w.len() - 1]);
+            let (ax, ay, bx, by) = (
+                unit(a.0, xr, chart.log_x),
+                unit(a.1, yr, chart.log_y),
+                unit(b.0, xr, chart.log_x),
+                unit(b.1, yr, chart.log_y),
+            );
+            let n = (((bx - ax).abs() + (by - ay).abs()) * 20.0).ceil().clamp(1.0, 200.0) as usize;
+            for k in 0..n {
+                let f = k as f64 / n as f64;
+                let (x, y) = (ax + f * (bx - ax), ay + f * (by - ay));
+                for (c, (_, (x0, x1), (y0, y1))) in corners.iter().enumerate() {
+                    if x >= *x0 && x <= *x1 && y >= *y0 && y <= *y1 {
+                        count[c] += 1;
+                    }
+                }
+            }
+        }
+    }
+    let best = (0..4).min_by_key(|&c| count[c]).unwrap_or(0);
+    corners[best].0.clone()
 }
 
 /// Tick label: plain for moderate magnitudes, scientific otherwise, no trailing zeros.
@@ -189,7 +237,13 @@ fn tick(v: f64) -> String {
     }
 }
 
-fn draw_panel<DB, X, Y>(area: &DrawingArea<DB, Shift>, chart: &Chart, x: X, y: Y) -> Result<(), String>
+fn draw_panel<DB, X, Y>(
+    area: &DrawingArea<DB, Shift>,
+    chart: &Chart,
+    x: X,
+    y: Y,
+    legend: SeriesLabelPosition,
+) -> Result<(), String>
 where
     DB: DrawingBackend,
     X: AsRangedCoord<Value = f64>,
@@ -229,14 +283,17 @@ where
                 cc.draw_series(LineSeries::new(v, c.stroke_width(2))).map_err(e)?
             }
         };
-        anno.label(s.label.as_str()).legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], legend_style));
+        if !s.label.is_empty() {
+            anno.label(s.label.as_str())
+                .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], legend_style));
+        }
     }
     if chart.series.iter().any(|s| !s.label.is_empty()) {
         cc.configure_series_labels()
             .background_style(WHITE.mix(0.85))
             .border_style(BLACK)
             .label_font(("sans-serif", 13))
-            .position(SeriesLabelPosition::UpperRight)
+            .position(legend)
             .draw()
             .map_err(e)?;
     }

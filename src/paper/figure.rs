@@ -56,26 +56,55 @@ fn chart(p: &PanelSpec, spec: &PaperSpec, plan: &Plan, o: &Outcome, c: &Columns,
             let pts = idx.iter().map(|&i| (c.t[i] * tf, c.mid[comp][i] / l)).collect();
             chart.series.push(Series::new("computed", pts, Style::Line, 0));
             let (t0, t1) = (idx.first().map_or(0.0, |&i| c.t[i]) * tf, idx.last().map_or(0.0, |&i| c.t[i]) * tf);
+            // Reference lines and paper markers of the rows on this component. Rows in metres are converted
+            // to the panel's l units. A reference that belongs to a time `at_s` (an equilibrium between two
+            // events) is drawn from the event before it (or the window's start) to that time.
             for (k, (r, ch)) in rows.iter().zip(&spec.checks).enumerate() {
-                if ch.extract.component.map(|c| c.index()) != Some(comp) || r.unit != UnitSpec::Span {
+                let to_span = match r.unit {
+                    UnitSpec::Span => 1.0,
+                    UnitSpec::M => 1.0 / l,
+                    _ => continue,
+                };
+                if ch.extract.component.map(|c| c.index()) != Some(comp) {
                     continue;
                 }
                 if ch.extract.kind == ExtractKind::Midspan
                     && let Some(e) = r.exact
                 {
-                    let label = format!("reference ({})", ch.reference.map_or("".into(), |k| format!("{k:?}")));
-                    chart.series.push(Series::new(label, vec![(t0, e), (t1, e)], Style::Dashed, 1 + k % 3));
+                    let (a, b) = match ch.extract.at_s {
+                        Some(at) => {
+                            let start =
+                                o.events.iter().map(|(te, _)| *te).filter(|&te| te < at).fold(t0 / tf, f64::max);
+                            (start * tf, at * tf)
+                        }
+                        None => {
+                            let start = o.events.iter().map(|(te, _)| *te).fold(t0 / tf, f64::max);
+                            (start * tf, t1)
+                        }
+                    };
+                    let label = format!("reference: {}", ch.quantity);
+                    chart.series.push(Series::new(
+                        label,
+                        vec![(a, e * to_span), (b, e * to_span)],
+                        Style::Dashed,
+                        1 + k % 3,
+                    ));
                 }
-                if let (Some(tau), Some(pv)) = (ch.paper_tau, r.paper) {
-                    let tx = if tf == 1.0 { tau * plan.chord_m / plan.tau_speed_m_per_s } else { tau };
-                    if tx >= t0 - 1e-9 && tx <= t1 + 1e-9 {
-                        chart.series.push(Series::new(
-                            format!("paper: {}", ch.quantity),
-                            vec![(tx, pv)],
-                            Style::Markers,
-                            4 + k % 3,
-                        ));
-                    }
+                let paper_t = match (ch.paper_tau, ch.extract.at_s) {
+                    (Some(tau), _) => Some(if tf == 1.0 { tau * plan.chord_m / plan.tau_speed_m_per_s } else { tau }),
+                    (None, Some(at)) if ch.extract.kind == ExtractKind::Midspan => Some(at * tf),
+                    _ => None,
+                };
+                if let (Some(tx), Some(pv)) = (paper_t, r.paper)
+                    && tx >= t0 - 1e-9
+                    && tx <= t1 + 1e-9
+                {
+                    chart.series.push(Series::new(
+                        format!("paper: {}", ch.quantity),
+                        vec![(tx, pv * to_span)],
+                        Style::Markers,
+                        4 + k % 3,
+                    ));
                 }
             }
         }
