@@ -10,6 +10,7 @@
 
 pub mod extract;
 pub mod figure;
+pub mod heat_case;
 pub mod reference;
 pub mod table;
 
@@ -93,7 +94,11 @@ pub fn run_case(path: &Path, out_dir: Option<&Path>) -> Result<CaseReport, Paper
     let started = Instant::now();
     let file = path.display().to_string();
     let name = path.file_stem().and_then(|s| s.to_str()).unwrap_or("case").to_string();
-    let sc = scenario::load(path)?;
+    let text = std::fs::read_to_string(path).map_err(|source| InputError::Io { file: file.clone(), source })?;
+    if scenario::heat_case::is_heat_case(&text) {
+        return heat_case::run_heat_case(&text, &file, &name, out_dir);
+    }
+    let sc = scenario::parse(&text, &file)?;
     let Some(spec) = sc.paper.clone() else { return Err(PaperError::NotACase(file)) };
     let plan = scenario::build(&sc);
     let opts = RunOptions { out_dir: None, progress: false, record: true };

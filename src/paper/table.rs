@@ -71,14 +71,24 @@ fn num(v: f64) -> String {
         return "n/a".into();
     }
     let a = v.abs();
-    if a != 0.0 && !(1e-3..1e5).contains(&a) { format!("{v:.4e}") } else { format!("{v:.5}") }
+    if a != 0.0 && !(1e-2..1e5).contains(&a) { format!("{v:.4e}") } else { format!("{v:.5}") }
 }
 
+/// A relative difference in percent: two decimals, or two significant digits below 0.01 %.
 fn pct(v: Option<f64>) -> String {
     match v {
-        Some(x) if x.is_finite() => format!("{:+.2} %", 100.0 * x),
+        Some(x) if x.is_finite() => {
+            let p = 100.0 * x;
+            if p != 0.0 && p.abs() < 0.01 { format!("{p:+.1e} %") } else { format!("{p:+.2} %") }
+        }
         _ => "-".into(),
     }
+}
+
+/// A tolerance in percent: one decimal, or two significant digits below 0.1 %.
+fn tol(t: f64) -> String {
+    let p = 100.0 * t;
+    if p < 0.1 { format!("{p:.1e} %") } else { format!("{p:.1} %") }
 }
 
 /// The table as Markdown text, with the explanations of the rows that differ as numbered notes.
@@ -97,7 +107,7 @@ pub fn format(rows: &[Row]) -> String {
         }
         let _ = writeln!(
             out,
-            "| {} | {} | {} | {} | {} | {} | {} | {} | {:.1} % | {} |",
+            "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |",
             r.case,
             r.quantity,
             r.unit.label(),
@@ -106,7 +116,7 @@ pub fn format(rows: &[Row]) -> String {
             num(r.computed),
             pct(r.relative_to_paper()),
             pct(r.relative_to_exact()),
-            100.0 * r.tolerance,
+            tol(r.tolerance),
             verdict
         );
     }

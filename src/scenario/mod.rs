@@ -4,6 +4,7 @@
 
 pub mod build;
 pub mod events;
+pub mod heat_case;
 pub mod paper;
 pub mod schema;
 pub mod validate;
@@ -61,15 +62,28 @@ impl fmt::Display for Invalid<'_> {
 
 /// Parse a scenario from TOML text; `file` names it in messages.
 pub fn parse(text: &str, file: &str) -> Result<Scenario, InputError> {
-    let scenario: Scenario =
-        toml::from_str(text).map_err(|e| InputError::Parse { file: file.to_string(), message: e.to_string() })?;
+    let scenario: Scenario = toml::from_str(text).map_err(|e| parse_error(file, e))?;
     let problems = validate::validate(&scenario);
     if problems.is_empty() { Ok(scenario) } else { Err(InputError::Invalid { file: file.to_string(), problems }) }
+}
+
+/// The error of a TOML file that does not parse (the message has line and column).
+pub(crate) fn parse_error(file: &str, e: toml::de::Error) -> InputError {
+    InputError::Parse { file: file.to_string(), message: e.to_string() }
 }
 
 /// Read, parse and validate a scenario file.
 pub fn load(path: &Path) -> Result<Scenario, InputError> {
     let file = path.display().to_string();
     let text = std::fs::read_to_string(path).map_err(|source| InputError::Io { file: file.clone(), source })?;
+    if heat_case::is_heat_case(&text) {
+        let stem = path.file_stem().and_then(|s| s.to_str()).unwrap_or("CASE");
+        return Err(InputError::Parse {
+            file,
+            message: format!(
+                "a heat-conduction case (it has a [rod] section), not a wire scenario: run it with `ohl paper {stem}`"
+            ),
+        });
+    }
     parse(&text, &file)
 }

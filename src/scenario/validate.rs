@@ -26,14 +26,14 @@ impl fmt::Display for Problem {
 }
 
 /// Collects problems.
-struct Check(Vec<Problem>);
+pub(crate) struct Check(pub(crate) Vec<Problem>);
 
 impl Check {
-    fn fail(&mut self, field: &str, value: impl fmt::Display, allowed: &str) {
+    pub(crate) fn fail(&mut self, field: &str, value: impl fmt::Display, allowed: &str) {
         self.0.push(Problem { field: field.into(), value: value.to_string(), allowed: allowed.into() });
     }
     /// `x` finite and `> 0`.
-    fn positive(&mut self, field: &str, x: f64) -> bool {
+    pub(crate) fn positive(&mut self, field: &str, x: f64) -> bool {
         let ok = x.is_finite() && x > 0.0;
         if !ok {
             self.fail(field, x, "must be a finite number > 0");
@@ -41,7 +41,7 @@ impl Check {
         ok
     }
     /// `x` finite and `>= 0`.
-    fn non_negative(&mut self, field: &str, x: f64) -> bool {
+    pub(crate) fn non_negative(&mut self, field: &str, x: f64) -> bool {
         let ok = x.is_finite() && x >= 0.0;
         if !ok {
             self.fail(field, x, "must be a finite number >= 0");
@@ -49,7 +49,7 @@ impl Check {
         ok
     }
     /// `lo <= x <= hi`.
-    fn within(&mut self, field: &str, x: f64, lo: f64, hi: f64, allowed: &str) -> bool {
+    pub(crate) fn within(&mut self, field: &str, x: f64, lo: f64, hi: f64, allowed: &str) -> bool {
         let ok = x.is_finite() && x >= lo && x <= hi;
         if !ok {
             self.fail(field, x, allowed);
