@@ -165,18 +165,7 @@ pub fn run_heat_case(text: &str, file: &str, name: &str, out_dir: Option<&Path>)
                 HeatReferenceKind::ThermalForce => expansion(u_exact, true),
             });
             let conv = |v: f64| if ch.unit == UnitSpec::Kn { v / 1e3 } else { v };
-            Row {
-                case: name.to_string(),
-                quantity: ch.quantity.clone(),
-                unit: ch.unit,
-                paper: ch.paper,
-                exact: exact.map(conv),
-                computed: conv(si),
-                tolerance: ch.tolerance,
-                compare: ch.compare,
-                source: ch.source.clone(),
-                explanation: ch.explanation.clone(),
-            }
+            Row::from_check(name, ch, conv(si), exact.map(conv))
         })
         .collect();
 

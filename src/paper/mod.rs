@@ -116,18 +116,7 @@ pub fn run_case(path: &Path, out_dir: Option<&Path>) -> Result<CaseReport, Paper
                 .reference
                 .and_then(|k| reference::reference(k, &plan, &ch.extract, &probe))
                 .map(|v| to_unit(v, ch.unit, &plan, l));
-            Row {
-                case: name.clone(),
-                quantity: ch.quantity.clone(),
-                unit: ch.unit,
-                paper: ch.paper,
-                exact,
-                computed,
-                tolerance: ch.tolerance,
-                compare: ch.compare,
-                source: ch.source.clone(),
-                explanation: ch.explanation.clone(),
-            }
+            Row::from_check(&name, ch, computed, exact)
         })
         .collect();
     let mut figure_stem = None;

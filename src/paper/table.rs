@@ -8,7 +8,7 @@
 
 use std::fmt::Write;
 
-use crate::scenario::paper::{CompareSpec, UnitSpec};
+use crate::scenario::paper::{CheckSpec, CompareSpec, UnitSpec};
 
 /// One row of the table.
 #[derive(Clone, Debug, PartialEq)]
@@ -36,6 +36,22 @@ pub struct Row {
 }
 
 impl Row {
+    /// The row of the check `ch` of `case` with the computed value and the reference, both already in the
+    /// check's unit.
+    pub fn from_check<X, R>(case: &str, ch: &CheckSpec<X, R>, computed: f64, exact: Option<f64>) -> Row {
+        Row {
+            case: case.to_string(),
+            quantity: ch.quantity.clone(),
+            unit: ch.unit,
+            paper: ch.paper,
+            exact,
+            computed,
+            tolerance: ch.tolerance,
+            compare: ch.compare,
+            source: ch.source.clone(),
+            explanation: ch.explanation.clone(),
+        }
+    }
     /// `(computed - paper) / |paper|`.
     pub fn relative_to_paper(&self) -> Option<f64> {
         self.paper.map(|p| (self.computed - p) / p.abs())

@@ -49,7 +49,7 @@
 
 use serde::Deserialize;
 
-use super::paper::{CompareSpec, UnitSpec};
+use super::paper::CheckSpec;
 use super::validate::{Check, Problem};
 use super::{InputError, parse_error};
 use crate::heat::HeatBoundary;
@@ -219,35 +219,8 @@ pub enum HeatReferenceKind {
     ThermalForce,
 }
 
-/// One checked value (see [`crate::scenario::paper::CheckSpec`], whose fields these mirror).
-#[derive(Clone, Debug, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct HeatCheckSpec {
-    /// what it is
-    pub quantity: String,
-    /// the paper's value, in `unit`, if it prints one
-    #[serde(default)]
-    pub paper: Option<f64>,
-    /// unit of the row: `"one"` for `u`, times and strains, `"kn"` for forces
-    pub unit: UnitSpec,
-    /// where in the paper
-    pub source: String,
-    /// how the computed value is extracted
-    pub extract: HeatExtractSpec,
-    /// an independent reference
-    #[serde(default)]
-    pub reference: Option<HeatReferenceKind>,
-    /// relative tolerance [-], > 0
-    pub tolerance: f64,
-    /// why that tolerance
-    pub justification: String,
-    /// `"match"` (default) or `"report"`
-    #[serde(default)]
-    pub compare: CompareSpec,
-    /// why the value differs from the paper, when it is known to
-    #[serde(default)]
-    pub explanation: Option<String>,
-}
+/// One checked value of a heat case.
+pub type HeatCheckSpec = CheckSpec<HeatExtractSpec, HeatReferenceKind>;
 
 /// The `[paper]` section of a heat case.
 #[derive(Clone, Debug, Deserialize)]
@@ -326,15 +299,7 @@ pub fn validate(h: &HeatCase) -> Vec<Problem> {
     }
     for (k, ch) in h.paper.checks.iter().enumerate() {
         let f = |name: &str| format!("paper.checks[{k}].{name}");
-        if let Some(v) = ch.paper
-            && !v.is_finite()
-        {
-            c.fail(&f("paper"), v, "must be a finite number");
-        }
-        if ch.paper.is_none() && ch.reference.is_none() && ch.compare == CompareSpec::Match {
-            c.fail(&f("paper"), "(missing)", "a \"match\" check needs a paper value or a reference");
-        }
-        c.within(&f("tolerance"), ch.tolerance, f64::MIN_POSITIVE, 10.0, "must be a relative tolerance in (0, 10]");
+        c.check_row(&f, ch.paper, ch.reference.is_some(), ch.compare, ch.tolerance);
         if !known(&ch.extract.run) {
             c.fail(&f("extract.run"), format!("{:?}", ch.extract.run), &format!("must be one of {}", labels()));
         }

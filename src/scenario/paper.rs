@@ -189,10 +189,12 @@ pub enum CompareSpec {
     Report,
 }
 
-/// One checked value.
+/// One checked value. Generic over how the computed value is extracted (`X`) and which reference it is
+/// compared with (`R`): a wire case uses [`ExtractSpec`] and [`ReferenceKind`], a heat case
+/// ([`crate::scenario::heat_case`]) its own.
 #[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
-pub struct CheckSpec {
+pub struct CheckSpec<X = ExtractSpec, R = ReferenceKind> {
     /// what it is
     pub quantity: String,
     /// the paper's value, in `unit`; absent where the paper prints none (then the computed value is
@@ -204,10 +206,10 @@ pub struct CheckSpec {
     /// where in the paper it is printed
     pub source: String,
     /// how the computed value is extracted
-    pub extract: ExtractSpec,
+    pub extract: X,
     /// an independent reference value, if one exists
-    #[serde(default)]
-    pub reference: Option<ReferenceKind>,
+    #[serde(default = "none")]
+    pub reference: Option<R>,
     /// relative tolerance against the paper's value (or the reference's, without one) [-], > 0
     pub tolerance: f64,
     /// why that tolerance
@@ -221,6 +223,10 @@ pub struct CheckSpec {
     /// dimensionless time `tau` at which the paper prints the value (places its marker in the figure)
     #[serde(default)]
     pub paper_tau: Option<f64>,
+}
+
+fn none<R>() -> Option<R> {
+    None
 }
 
 /// A figure panel kind.

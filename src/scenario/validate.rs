@@ -56,6 +56,26 @@ impl Check {
         }
         ok
     }
+    /// The fields every `[[paper.checks]]` row has, wire or heat case: a finite paper value, a paper value
+    /// or a reference for a `"match"` row, a tolerance in (0, 10]. `f` makes the field's path.
+    pub(crate) fn check_row(
+        &mut self,
+        f: &dyn Fn(&str) -> String,
+        paper: Option<f64>,
+        has_reference: bool,
+        compare: CompareSpec,
+        tolerance: f64,
+    ) {
+        if let Some(v) = paper
+            && !v.is_finite()
+        {
+            self.fail(&f("paper"), v, "must be a finite number");
+        }
+        if paper.is_none() && !has_reference && compare == CompareSpec::Match {
+            self.fail(&f("paper"), "(missing)", "a \"match\" check needs a paper value or a reference");
+        }
+        self.within(&f("tolerance"), tolerance, f64::MIN_POSITIVE, 10.0, "must be a relative tolerance in (0, 10]");
+    }
     fn finite3(&mut self, field: &str, v: [f64; 3]) -> bool {
         let ok = v.iter().all(|c| c.is_finite());
         if !ok {
@@ -406,15 +426,7 @@ fn check_paper(c: &mut Check, s: &Scenario, end: Option<f64>) {
     let hi = end.unwrap_or(f64::INFINITY);
     for (k, ch) in p.checks.iter().enumerate() {
         let f = |name: &str| format!("paper.checks[{k}].{name}");
-        if let Some(v) = ch.paper
-            && !v.is_finite()
-        {
-            c.fail(&f("paper"), v, "must be a finite number");
-        }
-        if ch.paper.is_none() && ch.reference.is_none() && ch.compare == CompareSpec::Match {
-            c.fail(&f("paper"), "(missing)", "a \"match\" check needs a paper value or a reference");
-        }
-        c.within(&f("tolerance"), ch.tolerance, f64::MIN_POSITIVE, 10.0, "must be a relative tolerance in (0, 10]");
+        c.check_row(&f, ch.paper, ch.reference.is_some(), ch.compare, ch.tolerance);
         let x = &ch.extract;
         let needs_component = matches!(
             x.kind,

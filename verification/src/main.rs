@@ -84,15 +84,7 @@ fn main() -> ExitCode {
     let wall = t0.elapsed().as_secs_f64();
     for r in &reports {
         println!("\n== {} ({}) : {}", r.name, r.title, if r.passed() { "PASS" } else { "FAIL" });
-        for c in &r.checks {
-            println!(
-                "  [{}] {}: expected {}; observed {}",
-                if c.pass { "pass" } else { "FAIL" },
-                c.what,
-                c.expected,
-                c.observed
-            );
-        }
+        print!("{}", r.check_lines());
     }
     if what == "all" {
         let path = out.join("REPORT.md");

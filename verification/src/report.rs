@@ -121,6 +121,22 @@ impl StudyReport {
         !self.checks.is_empty() && self.checks.iter().all(|c| c.pass)
     }
 
+    /// One line per check: `  [pass] what: expected ...; observed ...`.
+    pub fn check_lines(&self) -> String {
+        self.checks
+            .iter()
+            .map(|c| {
+                format!(
+                    "  [{}] {}: expected {}; observed {}\n",
+                    if c.pass { "pass" } else { "FAIL" },
+                    c.what,
+                    c.expected,
+                    c.observed
+                )
+            })
+            .collect()
+    }
+
     /// Write the tables' CSVs.
     pub fn write_tables(&self, dir: &Path) -> Result<(), String> {
         self.tables.iter().try_for_each(|t| t.write_csv(dir))

@@ -13,15 +13,7 @@ fn every_study_passes_at_the_coarse_budget() {
     for s in STUDIES {
         let r = run_study(s, Budget::Coarse, &dir);
         println!("{} ({:.1} s): {}", s.name, r.wall_s, if r.passed() { "PASS" } else { "FAIL" });
-        for c in &r.checks {
-            println!(
-                "  [{}] {}: expected {}; observed {}",
-                if c.pass { "pass" } else { "FAIL" },
-                c.what,
-                c.expected,
-                c.observed
-            );
-        }
+        print!("{}", r.check_lines());
         if !r.passed() {
             failed.push(s.name);
         }
