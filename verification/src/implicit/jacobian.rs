@@ -8,9 +8,9 @@
 //! derivative. All nodes are taken as exposed and all segments as intact or broken per `Wire::intact`.
 
 use crate::dual::{D, dot};
+use faer::sparse::Pair;
 use ohl::scheme::{Explicit, WindGate, WindLoad};
 use ohl::wire::tension::LawKind;
-use std::collections::BTreeMap;
 
 /// Indices of the unknowns: `Some(first index)` for a free node, `None` for a support.
 pub fn unknown_index(s: &Explicit) -> (Vec<Option<usize>>, usize) {
@@ -100,12 +100,17 @@ pub fn segment_forces(s: &Explicit, j: usize) -> ([D; 3], [D; 3]) {
     (fa, fb)
 }
 
-/// Accumulated entries of `dF/dx + cv dF/dv - cm M` over the free nodes (rows and columns as given by
-/// [`unknown_index`]). Panics (internal misuse) if a wind gate other than `Always` is set.
-pub fn assemble(s: &Explicit, cv: f64, cm: f64) -> BTreeMap<(usize, usize), f64> {
+/// Entries of `dF/dx + cv dF/dv - cm M` over the free nodes (rows and columns as given by
+/// [`unknown_index`]), in assembly order: segment by segment the 3x3 blocks of its two end nodes, then the
+/// mass diagonal. A position appears once per contribution (the sparse matrix sums them). `pattern` gets
+/// the positions, `values` the numbers (both cleared first); the pattern depends only on which nodes are
+/// free, so it can be factored symbolically once ([`super::SparseLu`]). Panics (internal misuse) if a wind
+/// gate other than `Always` is set.
+pub fn assemble(s: &Explicit, cv: f64, cm: f64, pattern: &mut Vec<Pair<usize, usize>>, values: &mut Vec<f64>) {
     assert_eq!(s.loads.wind_gate, WindGate::Always, "the implicit reference does not model the downwind gate");
     let (idx, _) = unknown_index(s);
-    let mut m = BTreeMap::new();
+    pattern.clear();
+    values.clear();
     for j in 0..s.wire.segments() {
         let (fa, fb) = segment_forces(s, j);
         for (row_node, f) in [(j, &fa), (j + 1, &fb)] {
@@ -114,23 +119,21 @@ pub fn assemble(s: &Explicit, cv: f64, cm: f64) -> BTreeMap<(usize, usize), f64>
                 let Some(c0) = idx[col_node] else { continue };
                 for k in 0..3 {
                     for l in 0..3 {
-                        let val = f[k].d[3 * side + l] + cv * f[k].d[6 + 3 * side + l];
-                        *m.entry((r0 + k, c0 + l)).or_insert(0.0) += val;
+                        pattern.push(Pair::new(r0 + k, c0 + l));
+                        values.push(f[k].d[3 * side + l] + cv * f[k].d[6 + 3 * side + l]);
                     }
                 }
             }
         }
     }
-    if cm != 0.0 {
-        for (i, o) in idx.iter().enumerate() {
-            if let Some(r0) = o {
-                for k in 0..3 {
-                    *m.entry((r0 + k, r0 + k)).or_insert(0.0) -= cm * s.wire.mass[i];
-                }
+    for (i, o) in idx.iter().enumerate() {
+        if let Some(r0) = o {
+            for k in 0..3 {
+                pattern.push(Pair::new(r0 + k, r0 + k));
+                values.push(-cm * s.wire.mass[i]);
             }
         }
     }
-    m
 }
 
 /// Largest difference [N] between the replica's nodal forces (plus gravity and prescribed forces) and

@@ -24,16 +24,45 @@ pub mod newton;
 
 use faer::Mat;
 use faer::linalg::solvers::Solve;
-use faer::sparse::{SparseColMat, Triplet};
-use std::collections::BTreeMap;
+use faer::sparse::linalg::solvers::{Lu, SymbolicLu};
+use faer::sparse::{Argsort, Pair, SparseColMat, SymbolicSparseColMat};
 
-/// Solve the sparse system given by accumulated entries `(row, col) -> value` with right side `b`.
-pub fn sparse_solve(n: usize, entries: &BTreeMap<(usize, usize), f64>, b: &[f64]) -> Result<Vec<f64>, String> {
-    let trips: Vec<Triplet<usize, usize, f64>> = entries.iter().map(|(&(r, c), &v)| Triplet::new(r, c, v)).collect();
-    let a = SparseColMat::<usize, f64>::try_new_from_triplets(n, n, &trips).map_err(|e| format!("{e:?}"))?;
-    let lu = a.sp_lu().map_err(|e| format!("sparse LU failed: {e:?}"))?;
-    let rhs = Mat::from_fn(n, 1, |i, _| b[i]);
-    let x = lu.solve(&rhs);
-    let out: Vec<f64> = (0..n).map(|i| x[(i, 0)]).collect();
-    if out.iter().all(|v| v.is_finite()) { Ok(out) } else { Err("singular Jacobian".into()) }
+/// Sparse LU of matrices that share one pattern (the Jacobian's, which depends only on which nodes are
+/// free): the compressed structure, the order that sums duplicate entries, and the symbolic factorisation
+/// (fill-reducing ordering, elimination structure) are computed once by [`SparseLu::new`]; each
+/// [`SparseLu::solve`] only fills the values and factors numerically.
+#[derive(Clone, Debug)]
+pub struct SparseLu {
+    n: usize,
+    entries: usize,
+    structure: SymbolicSparseColMat<usize>,
+    order: Argsort<usize>,
+    symbolic: SymbolicLu<usize>,
+}
+
+impl SparseLu {
+    /// The solver for `n x n` matrices with entries at `pattern` (in assembly order; repeated positions
+    /// are summed).
+    pub fn new(n: usize, pattern: &[Pair<usize, usize>]) -> Result<Self, String> {
+        let (structure, order) =
+            SymbolicSparseColMat::try_new_from_indices(n, n, pattern).map_err(|e| format!("{e:?}"))?;
+        let symbolic = SymbolicLu::try_new(structure.as_ref()).map_err(|e| format!("symbolic LU failed: {e:?}"))?;
+        Ok(SparseLu { n, entries: pattern.len(), structure, order, symbolic })
+    }
+
+    /// Solve `A x = b` where `values` are the entries of `A` in the order of the pattern.
+    ///
+    /// # Panics
+    /// If `values` or `b` do not match the pattern and the size (internal misuse).
+    pub fn solve(&self, values: &[f64], b: &[f64]) -> Result<Vec<f64>, String> {
+        assert_eq!(values.len(), self.entries, "one value per pattern entry");
+        assert_eq!(b.len(), self.n, "one right-hand side per unknown");
+        let a = SparseColMat::new_from_argsort(self.structure.clone(), &self.order, values)
+            .map_err(|e| format!("{e:?}"))?;
+        let lu = Lu::try_new_with_symbolic(self.symbolic.clone(), a.as_ref())
+            .map_err(|e| format!("sparse LU failed: {e:?}"))?;
+        let x = lu.solve(Mat::from_fn(self.n, 1, |i, _| b[i]));
+        let out: Vec<f64> = (0..self.n).map(|i| x[(i, 0)]).collect();
+        if out.iter().all(|v| v.is_finite()) { Ok(out) } else { Err("singular Jacobian".into()) }
+    }
 }

@@ -11,8 +11,8 @@
 //! ones, and with the velocity-dependent forces (Kelvin-Voigt rate, wind damping (2.6)) taken at the new
 //! level, fully implicitly: no lag, unlike the explicit kernel.
 
+use super::SparseLu;
 use super::jacobian::{assemble, unknown_index};
-use super::sparse_solve;
 use ohl::scheme::Explicit;
 
 /// The integrator state. The wrapped `Explicit` only evaluates forces (its `wire.x` and `wire.v` are
@@ -29,6 +29,8 @@ pub struct Newmark {
     pub newton_iterations: usize,
     /// convergence tolerance on the largest nodal residual [N]
     pub tol_n: f64,
+    /// the sparse LU of the iteration matrix, whose pattern stays fixed (created on the first step)
+    lu: Option<SparseLu>,
 }
 
 impl Newmark {
@@ -38,7 +40,7 @@ impl Newmark {
         let mut f = [vec![0.0; n1], vec![0.0; n1], vec![0.0; n1]];
         sys.net_force(&mut f);
         let a = std::array::from_fn(|k| (0..n1).map(|i| sys.wire.free[i] * f[k][i] / sys.wire.mass[i]).collect());
-        Newmark { sys, a, time_s: 0.0, newton_iterations: 0, tol_n }
+        Newmark { sys, a, time_s: 0.0, newton_iterations: 0, tol_n, lu: None }
     }
 
     /// One step of length `dt` [s]; returns the Newton iterations used.
@@ -58,6 +60,7 @@ impl Newmark {
                 }
             }
         };
+        let (mut pattern, mut values) = (Vec::new(), Vec::new());
         for it in 1..=30 {
             set_state(&mut self.sys, &anew);
             self.sys.net_force(&mut f);
@@ -78,7 +81,11 @@ impl Newmark {
                 return Ok(it - 1);
             }
             // A dx = G with A = dF/dx + 2/dt dF/dv - 4/dt^2 M = -dG/dx; then a_{n+1} += 4/dt^2 dx.
-            let dx = sparse_solve(n, &assemble(&self.sys, 2.0 / dt, 4.0 / (dt * dt)), &g)?;
+            assemble(&self.sys, 2.0 / dt, 4.0 / (dt * dt), &mut pattern, &mut values);
+            if self.lu.is_none() {
+                self.lu = Some(SparseLu::new(n, &pattern)?);
+            }
+            let dx = self.lu.as_ref().expect("created above").solve(&values, &g)?;
             for (i, o) in idx.iter().enumerate() {
                 if let Some(r) = o {
                     for k in 0..3 {

@@ -3,8 +3,8 @@
 //! and a backtracking line search (halve the step while the largest residual does not fall) that is
 //! inactive near the solution, where full steps give quadratic convergence.
 
+use super::SparseLu;
 use super::jacobian::{assemble, unknown_index};
-use super::sparse_solve;
 use crate::setup::max_residual;
 use ohl::scheme::Explicit;
 
@@ -27,6 +27,8 @@ pub fn solve_static(s: &mut Explicit, tol_n: f64, max_iterations: usize) -> Resu
     let mut hist = vec![max_residual(s)];
     let mut factors = Vec::new();
     let mut f = [vec![0.0; s.wire.nodes()], vec![0.0; s.wire.nodes()], vec![0.0; s.wire.nodes()]];
+    let (mut pattern, mut values) = (Vec::new(), Vec::new());
+    let mut lu: Option<SparseLu> = None;
     for _ in 0..max_iterations {
         if *hist.last().unwrap() < tol_n {
             return Ok(NewtonReport { residual_history: hist, step_factors: factors });
@@ -40,7 +42,11 @@ pub fn solve_static(s: &mut Explicit, tol_n: f64, max_iterations: usize) -> Resu
                 }
             }
         }
-        let dx = sparse_solve(n, &assemble(s, 0.0, 0.0), &rhs)?;
+        assemble(s, 0.0, 0.0, &mut pattern, &mut values);
+        if lu.is_none() {
+            lu = Some(SparseLu::new(n, &pattern)?);
+        }
+        let dx = lu.as_ref().expect("created above").solve(&values, &rhs)?;
         let x0 = s.wire.x.clone();
         let r0 = *hist.last().unwrap();
         let mut lambda = 1.0;
