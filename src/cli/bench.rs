@@ -81,7 +81,11 @@ pub fn main(args: BenchArgs) -> ExitCode {
     }
     let (reps, node_steps) = if args.quick { (3, 2.0e6) } else { (args.reps, args.node_steps) };
     let machine = bench::machine();
-    let build = if cfg!(target_feature = "avx2") { "release, avx2" } else { "release, x86-64 baseline (sse2)" };
+    let build = match (cfg!(target_feature = "avx2"), ohl::scheme::explicit::kernel_instruction_set()) {
+        (true, _) => "release, built for avx2",
+        (false, "avx2") => "release, baseline build, kernel passes in their avx2 copies (runtime detected)",
+        _ => "release, baseline build (sse2), kernel passes in their baseline copies",
+    };
     println!("ohl bench: {} ({build}), load {}, {}, git {}", machine.cpu, machine.load, machine.date, machine.git);
 
     let p = bench::measure_primitives();

@@ -116,6 +116,25 @@ pub struct Instability {
     pub reason: InstabilityReason,
 }
 
+/// Whether the passes compiled for AVX2 may run here: the processor reports AVX2, and the environment
+/// variable `OHL_NO_AVX2` is not set (to measure or compare the baseline copy).
+fn avx2_available() -> bool {
+    #[cfg(target_arch = "x86_64")]
+    {
+        std::is_x86_feature_detected!("avx2") && std::env::var_os("OHL_NO_AVX2").is_none()
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        false
+    }
+}
+
+/// The instruction set the kernel's passes run with on this machine: `"avx2"` (the AVX2 copies) or
+/// `"baseline"` (x86-64 SSE2, or the target's baseline elsewhere).
+pub fn kernel_instruction_set() -> &'static str {
+    if avx2_available() { "avx2" } else { "baseline" }
+}
+
 fn describe(r: &InstabilityReason) -> String {
     match r {
         InstabilityReason::NonFinite => "velocity or position is not finite (NaN or infinity)".into(),
@@ -164,6 +183,8 @@ pub struct Explicit {
     fs: [Vec<f64>; 3],
     /// half the segment load `P / 2` [N], padded like `fs`
     es: [Vec<f64>; 3],
+    /// run the passes compiled for AVX2 (detected at construction; see [`Explicit::step`])
+    avx2: bool,
 }
 
 impl Explicit {
@@ -182,6 +203,7 @@ impl Explicit {
             dt_prev: 0.0,
             fs: z(),
             es: z(),
+            avx2: avx2_available(),
         }
     }
 
@@ -192,6 +214,11 @@ impl Explicit {
     /// smoothing differences, and smoothing fused with the drift. The variant of each pass (law, wind,
     /// gate, uniform load, damping, prescribed forces) is chosen here, once per step, so the node loops
     /// carry no branch on the scenario's options.
+    ///
+    /// On x86-64 processors with AVX2 the same passes run from copies compiled for AVX2 (4 doubles per
+    /// vector instead of SSE2's 2), chosen once at construction. Both copies perform the same IEEE
+    /// operations in the same order (Rust neither contracts to FMA nor reassociates), so the results are
+    /// bitwise identical; a test checks it.
     pub fn step(&mut self, dt: f64) -> Result<(), Instability> {
         debug_assert!(dt > 0.0 && dt <= self.params.dt_s * (1.0 + 1e-12));
         self.compute_segment_forces();
@@ -202,14 +229,14 @@ impl Explicit {
         let none = [const { Vec::new() }; 3];
         let f = extra.as_ref().unwrap_or(&none);
         let ok = match (extra.is_some(), damp, smooth) {
-            (false, false, false) => self.kick_drift::<false, false, false>(kick, dt, f),
-            (false, true, false) => self.kick_drift::<false, true, false>(kick, dt, f),
-            (true, false, false) => self.kick_drift::<true, false, false>(kick, dt, f),
-            (true, true, false) => self.kick_drift::<true, true, false>(kick, dt, f),
-            (false, false, true) => self.kick_drift::<false, false, true>(kick, dt, f),
-            (false, true, true) => self.kick_drift::<false, true, true>(kick, dt, f),
-            (true, false, true) => self.kick_drift::<true, false, true>(kick, dt, f),
-            (true, true, true) => self.kick_drift::<true, true, true>(kick, dt, f),
+            (false, false, false) => self.node_pass::<false, false, false>(kick, dt, f),
+            (false, true, false) => self.node_pass::<false, true, false>(kick, dt, f),
+            (true, false, false) => self.node_pass::<true, false, false>(kick, dt, f),
+            (true, true, false) => self.node_pass::<true, true, false>(kick, dt, f),
+            (false, false, true) => self.node_pass::<false, false, true>(kick, dt, f),
+            (false, true, true) => self.node_pass::<false, true, true>(kick, dt, f),
+            (true, false, true) => self.node_pass::<true, false, true>(kick, dt, f),
+            (true, true, true) => self.node_pass::<true, true, true>(kick, dt, f),
         };
         self.nodal_force = extra;
         if let Some(g) = self.ground {
@@ -253,17 +280,41 @@ impl Explicit {
 
     fn dispatch_law<W: SegmentLoad>(&mut self, load: &W, q: [f64; 3]) {
         match (self.wire.conductor.law, q != [0.0; 3]) {
-            (LawKind::TensionOnly, true) => self.segment_pass::<TensionOnly, W, true>(load, q),
-            (LawKind::TensionOnly, false) => self.segment_pass::<TensionOnly, W, false>(load, q),
-            (LawKind::Linear, true) => self.segment_pass::<Linear, W, true>(load, q),
-            (LawKind::Linear, false) => self.segment_pass::<Linear, W, false>(load, q),
+            (LawKind::TensionOnly, true) => self.segment_forces::<TensionOnly, W, true>(load, q),
+            (LawKind::TensionOnly, false) => self.segment_forces::<TensionOnly, W, false>(load, q),
+            (LawKind::Linear, true) => self.segment_forces::<Linear, W, true>(load, q),
+            (LawKind::Linear, false) => self.segment_forces::<Linear, W, false>(load, q),
         }
+    }
+
+    /// The segment pass, from the AVX2 copy where the processor has it.
+    fn segment_forces<L: TensionLaw, W: SegmentLoad, const UNIFORM: bool>(&mut self, load: &W, q: [f64; 3]) {
+        #[cfg(target_arch = "x86_64")]
+        if self.avx2 {
+            // SAFETY: `avx2` is set only where the processor reports AVX2 (`avx2_available`).
+            return unsafe { self.segment_pass_avx2::<L, W, UNIFORM>(load, q) };
+        }
+        self.segment_pass::<L, W, UNIFORM>(load, q)
+    }
+
+    /// The segment pass compiled for AVX2.
+    #[cfg(target_arch = "x86_64")]
+    #[inline(never)]
+    #[target_feature(enable = "avx2")]
+    fn segment_pass_avx2<L: TensionLaw, W: SegmentLoad, const UNIFORM: bool>(&mut self, load: &W, q: [f64; 3]) {
+        self.segment_pass_body::<L, W, UNIFORM>(load, q)
+    }
+
+    /// The segment pass for the baseline instruction set.
+    #[inline(never)]
+    fn segment_pass<L: TensionLaw, W: SegmentLoad, const UNIFORM: bool>(&mut self, load: &W, q: [f64; 3]) {
+        self.segment_pass_body::<L, W, UNIFORM>(load, q)
     }
 
     /// `UNIFORM = false` skips the uniform load `q L` (all of `q` zero): the sum `P + 0 L` it saves can
     /// differ from `P` only in the sign of a zero.
-    #[inline(never)]
-    fn segment_pass<L: TensionLaw, W: SegmentLoad, const UNIFORM: bool>(&mut self, load: &W, q: [f64; 3]) {
+    #[inline(always)]
+    fn segment_pass_body<L: TensionLaw, W: SegmentLoad, const UNIFORM: bool>(&mut self, load: &W, q: [f64; 3]) {
         let w = &self.wire;
         let n = w.segments();
         let ea = w.conductor.axial_stiffness_n;
@@ -309,6 +360,45 @@ impl Explicit {
         }
     }
 
+    /// The node pass ([`Explicit::kick_drift`]), from the AVX2 copy where the processor has it.
+    fn node_pass<const EXTRA: bool, const DAMP: bool, const SMOOTH: bool>(
+        &mut self,
+        kick: f64,
+        dt: f64,
+        extra: &[Vec<f64>; 3],
+    ) -> bool {
+        #[cfg(target_arch = "x86_64")]
+        if self.avx2 {
+            // SAFETY: `avx2` is set only where the processor reports AVX2 (`avx2_available`).
+            return unsafe { self.node_pass_avx2::<EXTRA, DAMP, SMOOTH>(kick, dt, extra) };
+        }
+        self.node_pass_baseline::<EXTRA, DAMP, SMOOTH>(kick, dt, extra)
+    }
+
+    /// The node pass compiled for AVX2.
+    #[cfg(target_arch = "x86_64")]
+    #[inline(never)]
+    #[target_feature(enable = "avx2")]
+    fn node_pass_avx2<const EXTRA: bool, const DAMP: bool, const SMOOTH: bool>(
+        &mut self,
+        kick: f64,
+        dt: f64,
+        extra: &[Vec<f64>; 3],
+    ) -> bool {
+        self.kick_drift::<EXTRA, DAMP, SMOOTH>(kick, dt, extra)
+    }
+
+    /// The node pass for the baseline instruction set.
+    #[inline(never)]
+    fn node_pass_baseline<const EXTRA: bool, const DAMP: bool, const SMOOTH: bool>(
+        &mut self,
+        kick: f64,
+        dt: f64,
+        extra: &[Vec<f64>; 3],
+    ) -> bool {
+        self.kick_drift::<EXTRA, DAMP, SMOOTH>(kick, dt, extra)
+    }
+
     /// Pass 2 over nodes: `v += kick a` on free nodes, then (without smoothing) `r += dt v` in the same
     /// loop; returns false if any speed is beyond the bound or not finite. `EXTRA` adds the prescribed
     /// nodal forces; `DAMP = false` drops the mass damping `- zeta v` (zeta = 0: the term can change only
@@ -316,7 +406,7 @@ impl Explicit {
     ///
     /// Each operation is the one of the unfused passes, in the same order, so the result is identical:
     /// `a = (F / m + g_k) - zeta v`, `v + (kick free) a`, `x + dt v`.
-    #[inline(never)]
+    #[inline(always)]
     fn kick_drift<const EXTRA: bool, const DAMP: bool, const SMOOTH: bool>(
         &mut self,
         kick: f64,
@@ -585,10 +675,9 @@ mod tests {
         }
     }
 
-    #[test]
-    fn fused_kernel_is_bitwise_identical_to_the_unfused_passes() {
-        // The benchmark configurations, then every option the fused loops specialise on: mass damping,
-        // a uniform load, prescribed nodal forces, a shortened step, a break, the downwind gate, ground.
+    /// The benchmark configurations, then every option the passes specialise on: mass damping, a uniform
+    /// load, prescribed nodal forces, a break, the downwind gate, ground contact.
+    fn option_cases() -> Vec<(String, Explicit)> {
         let mut cases: Vec<(String, Explicit)> = Config::ALL.map(|c| (c.name().to_string(), c.solver(40))).into();
         let mut s = Config::Wind3d.solver(41);
         s.params.mass_damping_per_s = 0.3;
@@ -599,6 +688,13 @@ mod tests {
         s.ground = Some(Ground { height_m: -0.05, restitution: 0.6 });
         s.wire.break_segment(20);
         cases.push(("all options".into(), s));
+        cases
+    }
+
+    #[test]
+    fn fused_kernel_is_bitwise_identical_to_the_unfused_passes() {
+        // The option cases (`option_cases`), with shortened steps.
+        let cases = option_cases();
         for (name, mut fused) in cases {
             let mut reference = fused.clone();
             let dt = fused.params.dt_s;
@@ -608,6 +704,27 @@ mod tests {
                 assert_eq!(fused.step(h).is_ok(), ok, "{name}: stability verdicts differ at step {step}");
             }
             assert_bitwise(&fused, &reference, &name);
+        }
+    }
+
+    #[test]
+    fn avx2_copies_are_bitwise_identical_to_the_baseline() {
+        if !avx2_available() {
+            eprintln!("no AVX2 here (or OHL_NO_AVX2 set): only the baseline copy runs, nothing to compare");
+            return;
+        }
+        // The option cases (`option_cases`), 400 steps with shortened steps.
+        let cases = option_cases();
+        for (name, mut wide) in cases {
+            wide.avx2 = true;
+            let mut baseline = wide.clone();
+            baseline.avx2 = false;
+            let dt = wide.params.dt_s;
+            for step in 0..400 {
+                let h = if step % 7 == 3 { 0.37 * dt } else { dt };
+                assert_eq!(wide.step(h).is_ok(), baseline.step(h).is_ok(), "{name}: verdicts differ at step {step}");
+            }
+            assert_bitwise(&wide, &baseline, &name);
         }
     }
 }

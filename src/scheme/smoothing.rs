@@ -16,7 +16,7 @@
 
 /// First half of (3.3): the padded differences `diff[k] = intact[k-1] (v[k] - v[k-1])`, `k = 1..=N`, and
 /// `diff[0] = diff[N+1] = 0`, for one velocity component `v` (length `N + 1`); `diff` has length `N + 2`.
-#[inline]
+#[inline(always)]
 pub fn differences(v: &[f64], diff: &mut [f64], intact: &[f64]) {
     let n = intact.len();
     let v = &v[..n + 1];
