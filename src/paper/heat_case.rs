@@ -83,8 +83,10 @@ pub fn run_rod(case: &HeatCase, spec: &RunSpec) -> HeatRun {
     let mut rod = HeatRod::two_halves(case.rod.segments, ul, ur, spec.boundary.closure());
     let h = rod.spacing();
     let dt = spec.step_ratio * h * h;
-    let expected_steps = (case.stop.max_time.min(2.0) / dt).ceil().max(1.0);
-    let every = ((expected_steps / 400.0) as usize).max(1);
+    // About 400 samples up to the exact equalisation time (a diverging run stops earlier, a run past the
+    // cap later: the history then has fewer or more samples).
+    let t_expected = slowest_mode_time(ul, ur, case.stop.spread).clamp(dt, case.stop.max_time);
+    let every = ((t_expected / dt / 400.0) as usize).max(1);
     let mut profile_times: Vec<f64> = case.profile_times.clone();
     profile_times.sort_by(f64::total_cmp);
     let mut next_profile = 0;
