@@ -130,17 +130,20 @@ impl Writers {
     }
 }
 
-fn probe(solver: &Explicit) -> Probe {
-    let w = &solver.wire;
-    let n = w.segments();
-    Probe {
-        t_s: solver.time_s,
-        support_tension_n: [solver.segment_tension(0), solver.segment_tension(n - 1)],
-        mean_temperature_k: w.temperature_k.iter().sum::<f64>() / n as f64,
-        rest_length_m: w.total_rest_length(),
-        reference_length_m: w.reference_length.iter().sum(),
-        mass_kg: w.total_mass(),
-        wind_scale: solver.loads.wind_scale,
+impl Probe {
+    /// The probe of the solver's current state.
+    pub fn of(solver: &Explicit) -> Probe {
+        let w = &solver.wire;
+        let n = w.segments();
+        Probe {
+            t_s: solver.time_s,
+            support_tension_n: [solver.segment_tension(0), solver.segment_tension(n - 1)],
+            mean_temperature_k: w.temperature_k.iter().sum::<f64>() / n as f64,
+            rest_length_m: w.total_rest_length(),
+            reference_length_m: w.reference_length.iter().sum(),
+            mass_kg: w.total_mass(),
+            wind_scale: solver.loads.wind_scale,
+        }
     }
 }
 
@@ -217,7 +220,7 @@ pub fn run(plan: Plan, opts: &RunOptions) -> Result<Outcome, RunError> {
                 }
                 if opts.record {
                     samples.push(last);
-                    probes.push(probe(&solver));
+                    probes.push(Probe::of(&solver));
                 }
                 while next_sample <= t + tol {
                     next_sample += plan.sample_interval_s;

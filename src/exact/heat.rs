@@ -42,6 +42,19 @@ use std::f64::consts::PI;
 /// Fourier terms or 5 images).
 pub const T_SWITCH: f64 = 0.01;
 
+/// Spread `max u - min u` of the two-halves solution carried by its slowest Fourier mode,
+/// `a_1 cos(pi s) e^{-pi^2 t}` with `a_1 = 2 (u_left - u_right) / pi`: `2 |a_1| e^{-pi^2 t}`. Once the next
+/// mode (`k = 3`, decaying as `e^{-9 pi^2 t}`) has died out this is the spread of the solution itself.
+pub fn slowest_mode_spread(u_left: f64, u_right: f64, t: f64) -> f64 {
+    4.0 * (u_left - u_right).abs() / PI * (-PI * PI * t).exp()
+}
+
+/// The time at which [`slowest_mode_spread`] falls to `spread`: the exact time to equalise to within
+/// `spread` (for `spread` well below the initial difference).
+pub fn equalisation_time(u_left: f64, u_right: f64, spread: f64) -> f64 {
+    (4.0 * (u_left - u_right).abs() / (PI * spread)).ln() / (PI * PI)
+}
+
 /// Temperature `u(s, t)` of the insulated rod of unit length whose left half starts at `u_left` and right
 /// half at `u_right` (any temperature unit), at dimensionless position `s` and dimensionless time `t >= 0`.
 /// Accurate to about `1e-15 (|u_left| + |u_right|)` for every `t > 0`.
@@ -171,6 +184,21 @@ fn erfc_large(x: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn equalisation_time_is_where_the_series_spread_reaches_the_threshold() {
+        // Independent route: the full series' spread u(0, t) - u(1, t) at the predicted time.
+        let (ul, ur) = (473.15 / 273.15, 268.15 / 273.15);
+        for spread in [1e-3, 1e-6, 1e-9] {
+            let t = equalisation_time(ul, ur, spread);
+            let series = two_halves(ul, ur, 0.0, t) - two_halves(ul, ur, 1.0, t);
+            // The k = 3 mode adds a relative e^{-8 pi^2 t} / 3 (below 1e-24 here); the series itself is
+            // accurate to about 1e-15 (|uL| + |uR|) per value (module doc), twice that for the difference.
+            let bound = 1e-12 * spread + 2e-15 * (ul + ur);
+            assert!((series - spread).abs() < bound, "spread {spread}: series gives {series:e} at t = {t}");
+            assert!((slowest_mode_spread(ul, ur, t) / spread - 1.0).abs() < 1e-12);
+        }
+    }
 
     /// Dimensionless temperatures of test 5.4: 473.15 K / 273.15 K and 268.15 K / 273.15 K.
     const UL: f64 = 473.15 / 273.15;

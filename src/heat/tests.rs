@@ -76,8 +76,7 @@ fn paper_test_5_4_all_options() {
                     // Rounding bound as in `conservation_with_asymmetric_data`.
                     assert!((rod.mean() - U_EQ).abs() < 5e-12, "mean drifted by {:e}", rod.mean() - U_EQ);
                     assert!((node_average(&rod) - U_EQ).abs() < 5e-12);
-                    let a1 = 2.0 * (UL - UR) / PI;
-                    let t_eq = (2.0 * a1 / 1e-6).ln() / (PI * PI);
+                    let t_eq = crate::exact::heat::equalisation_time(UL, UR, 1e-6);
                     assert!((t - t_eq).abs() < 2e-3, "equalised at {t}, slowest mode predicts {t_eq}");
                 }
                 // The data are odd about s = 1/2 and both closures are mirror-symmetric: the centre node, and so

@@ -52,7 +52,7 @@ impl Series {
                 mid[k].push(o.summary.final_midspan_displacement_m[k]);
             }
             max_tension.push(o.summary.final_max_tension_n);
-            probes.push(final_probe(o));
+            probes.push(Probe::of(&o.solver));
         }
         Series { t, mid, max_tension, probes }
     }
@@ -73,22 +73,6 @@ impl Series {
                 self.probes[k.min(self.probes.len() - 1)]
             }
         }
-    }
-}
-
-/// The state at the end of the run, as a probe.
-fn final_probe(o: &Outcome) -> Probe {
-    let s = &o.solver;
-    let w = &s.wire;
-    let n = w.segments();
-    Probe {
-        t_s: s.time_s,
-        support_tension_n: [s.segment_tension(0), s.segment_tension(n - 1)],
-        mean_temperature_k: w.temperature_k.iter().sum::<f64>() / n as f64,
-        rest_length_m: w.total_rest_length(),
-        reference_length_m: w.reference_length.iter().sum(),
-        mass_kg: w.total_mass(),
-        wind_scale: s.loads.wind_scale,
     }
 }
 

@@ -5,20 +5,19 @@
 //!
 //! References: the exact equalisation temperature is the mean of the halves (heat is conserved by
 //! insulated ends); the exact time to equalise follows from the slowest Fourier mode of the exact
-//! solution ([`crate::exact::heat`]), `2 |a_1| e^{-pi^2 t} = spread` with `a_1 = 2 (u_L - u_R) / pi`; the
-//! figure draws the exact profiles `u(s, t)` beside the computed ones.
+//! solution ([`crate::exact::heat::equalisation_time`]); the figure draws the exact profiles `u(s, t)`
+//! beside the computed ones.
 //!
 //! Time here is the dimensionless `t = kappa t_phys / l^2` of (5.1); the figure and the notes state the
 //! physical time of one unit ([`crate::heat::scale`]).
 
-use std::f64::consts::PI;
 use std::io::Write;
 use std::path::Path;
 use std::time::Instant;
 
 use super::table::Row;
 use super::{CaseReport, PaperError};
-use crate::exact::heat::two_halves;
+use crate::exact::heat::{equalisation_time, slowest_mode_spread, two_halves};
 use crate::heat::HeatRod;
 use crate::heat::expansion::{thermal_force, thermal_strain};
 use crate::heat::scale::{conduction_time_scale_s, thermal_diffusivity};
@@ -85,7 +84,7 @@ pub fn run_rod(case: &HeatCase, spec: &RunSpec) -> HeatRun {
     let dt = spec.step_ratio * h * h;
     // About 400 samples up to the exact equalisation time (a diverging run stops earlier, a run past the
     // cap later: the history then has fewer or more samples).
-    let t_expected = slowest_mode_time(ul, ur, case.stop.spread).clamp(dt, case.stop.max_time);
+    let t_expected = equalisation_time(ul, ur, case.stop.spread).clamp(dt, case.stop.max_time);
     let every = ((t_expected / dt / 400.0) as usize).max(1);
     let mut profile_times: Vec<f64> = case.profile_times.clone();
     profile_times.sort_by(f64::total_cmp);
@@ -125,12 +124,6 @@ pub fn run_rod(case: &HeatCase, spec: &RunSpec) -> HeatRun {
     HeatRun { spec: spec.clone(), ending, history, profiles }
 }
 
-/// The exact time at which the spread of the two-halves solution falls to `spread` (slowest mode).
-pub fn slowest_mode_time(u_left: f64, u_right: f64, spread: f64) -> f64 {
-    let a1 = 2.0 * (u_left - u_right) / PI;
-    (2.0 * a1.abs() / spread).ln() / (PI * PI)
-}
-
 /// Run a heat case from its TOML text; with `out_dir`, write `<out_dir>/<name>.png`, `.svg`, `.csv` and
 /// `<name>_profiles.csv`.
 pub fn run_heat_case(text: &str, file: &str, name: &str, out_dir: Option<&Path>) -> Result<CaseReport, PaperError> {
@@ -162,7 +155,7 @@ pub fn run_heat_case(text: &str, file: &str, name: &str, out_dir: Option<&Path>)
             };
             let exact = ch.reference.map(|k| match k {
                 HeatReferenceKind::ExactEqualisation => u_exact,
-                HeatReferenceKind::SlowestModeTime => slowest_mode_time(ul, ur, case.stop.spread),
+                HeatReferenceKind::SlowestModeTime => equalisation_time(ul, ur, case.stop.spread),
                 HeatReferenceKind::ThermalStrain => expansion(u_exact, false),
                 HeatReferenceKind::ThermalForce => expansion(u_exact, true),
             });
@@ -250,9 +243,8 @@ fn charts(case: &HeatCase, runs: &[HeatRun], ul: f64, ur: f64, unit_s: f64) -> V
         ..Default::default()
     };
     let t_end = runs.iter().map(HeatRun::ending_time).fold(0.0, f64::max);
-    let a1 = 2.0 * (ul - ur).abs() / PI;
     let slow: Vec<(f64, f64)> =
-        (1..=200).map(|j| t_end * j as f64 / 200.0).map(|t| (t, 2.0 * a1 * (-PI * PI * t).exp())).collect();
+        (1..=200).map(|j| t_end * j as f64 / 200.0).map(|t| (t, slowest_mode_spread(ul, ur, t))).collect();
     b.series.push(Series::new("exact slowest mode 2|a1| exp(-pi^2 t)", slow, Style::Dashed, 7));
     for (k, r) in runs.iter().enumerate() {
         let pts =

@@ -280,21 +280,21 @@ impl Explicit {
 
     fn dispatch_law<W: SegmentLoad>(&mut self, load: &W, q: [f64; 3]) {
         match (self.wire.conductor.law, q != [0.0; 3]) {
-            (LawKind::TensionOnly, true) => self.segment_forces::<TensionOnly, W, true>(load, q),
-            (LawKind::TensionOnly, false) => self.segment_forces::<TensionOnly, W, false>(load, q),
-            (LawKind::Linear, true) => self.segment_forces::<Linear, W, true>(load, q),
-            (LawKind::Linear, false) => self.segment_forces::<Linear, W, false>(load, q),
+            (LawKind::TensionOnly, true) => self.segment_pass::<TensionOnly, W, true>(load, q),
+            (LawKind::TensionOnly, false) => self.segment_pass::<TensionOnly, W, false>(load, q),
+            (LawKind::Linear, true) => self.segment_pass::<Linear, W, true>(load, q),
+            (LawKind::Linear, false) => self.segment_pass::<Linear, W, false>(load, q),
         }
     }
 
     /// The segment pass, from the AVX2 copy where the processor has it.
-    fn segment_forces<L: TensionLaw, W: SegmentLoad, const UNIFORM: bool>(&mut self, load: &W, q: [f64; 3]) {
+    fn segment_pass<L: TensionLaw, W: SegmentLoad, const UNIFORM: bool>(&mut self, load: &W, q: [f64; 3]) {
         #[cfg(target_arch = "x86_64")]
         if self.avx2 {
             // SAFETY: `avx2` is set only where the processor reports AVX2 (`avx2_available`).
             return unsafe { self.segment_pass_avx2::<L, W, UNIFORM>(load, q) };
         }
-        self.segment_pass::<L, W, UNIFORM>(load, q)
+        self.segment_pass_baseline::<L, W, UNIFORM>(load, q)
     }
 
     /// The segment pass compiled for AVX2.
@@ -307,7 +307,7 @@ impl Explicit {
 
     /// The segment pass for the baseline instruction set.
     #[inline(never)]
-    fn segment_pass<L: TensionLaw, W: SegmentLoad, const UNIFORM: bool>(&mut self, load: &W, q: [f64; 3]) {
+    fn segment_pass_baseline<L: TensionLaw, W: SegmentLoad, const UNIFORM: bool>(&mut self, load: &W, q: [f64; 3]) {
         self.segment_pass_body::<L, W, UNIFORM>(load, q)
     }
 
