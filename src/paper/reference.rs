@@ -37,7 +37,7 @@ fn quantity(x: &ExtractSpec) -> Quantity {
 /// The reference value [SI], or `None` where the reference does not define the extracted quantity.
 pub fn reference(kind: ReferenceKind, plan: &Plan, x: &ExtractSpec, p: &Probe) -> Option<f64> {
     let w = &plan.solver.wire;
-    let ea = w.conductor.axial_stiffness_n;
+    let ea = w.axial_stiffness_n[0];
     let (a, b) = (plan.left_support_m, plan.right_support_m);
     let g = plan.solver.loads.gravity_m_per_s2;
     let l0 = p.rest_length_m;

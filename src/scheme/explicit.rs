@@ -159,6 +159,38 @@ pub struct Diagnostics {
     pub max_tension_segment: usize,
 }
 
+/// One definition, two compiled copies: `fn NAME[generics][generic args](args) -> R = BODY;` defines the
+/// method `NAME` that calls the `#[inline(always)]` method `BODY` through a copy compiled for AVX2 where the
+/// processor has it (chosen at construction, [`Explicit::new`]) and through a copy for the baseline
+/// instruction set otherwise. Both copies perform the same IEEE operations in the same order, so their
+/// results are bitwise identical (tested); only the vector width differs.
+macro_rules! isa_dispatch {
+    (
+        $(#[$doc:meta])*
+        fn $name:ident [$($g:tt)*] [$($ga:tt)*] ($($arg:ident: $ty:ty),* $(,)?) -> $ret:ty = $body:ident;
+    ) => {
+        $(#[$doc])*
+        fn $name<$($g)*>(&mut self, $($arg: $ty),*) -> $ret {
+            #[cfg(target_arch = "x86_64")]
+            #[inline(never)]
+            #[target_feature(enable = "avx2")]
+            fn avx2<$($g)*>(s: &mut Explicit, $($arg: $ty),*) -> $ret {
+                s.$body::<$($ga)*>($($arg),*)
+            }
+            #[inline(never)]
+            fn baseline<$($g)*>(s: &mut Explicit, $($arg: $ty),*) -> $ret {
+                s.$body::<$($ga)*>($($arg),*)
+            }
+            #[cfg(target_arch = "x86_64")]
+            if self.avx2 {
+                // SAFETY: `avx2` is set only where the processor reports AVX2 (`avx2_available`).
+                return unsafe { avx2::<$($ga)*>(self, $($arg),*) };
+            }
+            baseline::<$($ga)*>(self, $($arg),*)
+        }
+    };
+}
+
 /// The explicit solver: the wire, its loads and numerics, the clock, and preallocated scratch.
 #[derive(Clone, Debug)]
 pub struct Explicit {
@@ -179,6 +211,10 @@ pub struct Explicit {
     pub nodal_force: Option<[Vec<f64>; 3]>,
     /// length of the last drift `dt_{n-1/2}` [s] (0 before the first step)
     dt_prev: f64,
+    /// `fs`, `es` and `max_tension_n` hold the segment pass of the current state ([`Explicit::evaluate_forces`])
+    fresh: bool,
+    /// largest segment tension of the last segment pass [N]
+    max_tension_n: f64,
     /// segment tension force `T t` [N], padded: index `j + 1` for segment `j`, zero at 0 and `N + 1`
     fs: [Vec<f64>; 3],
     /// half the segment load `P / 2` [N], padded like `fs`
@@ -201,6 +237,8 @@ impl Explicit {
             ground: None,
             nodal_force: None,
             dt_prev: 0.0,
+            fresh: false,
+            max_tension_n: 0.0,
             fs: z(),
             es: z(),
             avx2: avx2_available(),
@@ -221,7 +259,10 @@ impl Explicit {
     /// bitwise identical; a test checks it.
     pub fn step(&mut self, dt: f64) -> Result<(), Instability> {
         debug_assert!(dt > 0.0 && dt <= self.params.dt_s * (1.0 + 1e-12));
-        self.compute_segment_forces();
+        if !self.fresh {
+            self.compute_segment_forces();
+        }
+        self.fresh = false;
         let kick = 0.5 * (self.dt_prev + dt);
         let damp = self.params.mass_damping_per_s != 0.0;
         let smooth = self.params.smoothing > 0.0;
@@ -246,6 +287,37 @@ impl Explicit {
         self.time_s += dt;
         self.steps += 1;
         if ok { Ok(()) } else { Err(self.locate_instability()) }
+    }
+
+    /// Evaluate the segment pass (tension and distributed loads) of the current state, so that what is
+    /// read of it at this time level ([`Explicit::max_tension_n`], [`Explicit::support_forces`],
+    /// [`Explicit::diagnostics`]) costs nothing and the next [`Explicit::step`] does not repeat it. The
+    /// state must not be changed between this call and the step (a change made through the public
+    /// fields would not be seen by the step: call this again after it).
+    pub fn evaluate_forces(&mut self) {
+        self.compute_segment_forces();
+        self.fresh = true;
+    }
+
+    /// Largest segment tension [N] at the current level: Kelvin-Voigt (3.4) with the strain rate at
+    /// `n - 1/2`, the value the step's kick uses. Requires [`Explicit::evaluate_forces`] at this level
+    /// (panics otherwise: internal misuse).
+    pub fn max_tension_n(&self) -> f64 {
+        assert!(self.fresh, "max_tension_n needs evaluate_forces at this time level");
+        self.max_tension_n
+    }
+
+    /// The force the wire applies to each fixed node (support) [N], `(node, [f1, f2, f3])`, at the current
+    /// level: the tension of the adjacent segments, their distributed loads' shares and the node's lumped
+    /// weight, i.e. minus the reaction the support provides. At a static equilibrium their sum is the total
+    /// external load on the line (weight, wind, uniform load). Requires [`Explicit::evaluate_forces`] at
+    /// this level (panics otherwise: internal misuse). Writes into `out` (cleared first).
+    pub fn support_forces(&self, out: &mut Vec<(usize, [f64; 3])>) {
+        assert!(self.fresh, "support_forces needs evaluate_forces at this time level");
+        out.clear();
+        for i in self.wire.fixed_nodes() {
+            out.push((i, [0, 1, 2].map(|k| self.node_force(k, i))));
+        }
     }
 
     /// Length of the last step `dt_{n-1/2}` [s].
@@ -279,7 +351,7 @@ impl Explicit {
     }
 
     fn dispatch_law<W: SegmentLoad>(&mut self, load: &W, q: [f64; 3]) {
-        match (self.wire.conductor.law, q != [0.0; 3]) {
+        match (self.wire.law, q != [0.0; 3]) {
             (LawKind::TensionOnly, true) => self.segment_pass::<TensionOnly, W, true>(load, q),
             (LawKind::TensionOnly, false) => self.segment_pass::<TensionOnly, W, false>(load, q),
             (LawKind::Linear, true) => self.segment_pass::<Linear, W, true>(load, q),
@@ -287,28 +359,10 @@ impl Explicit {
         }
     }
 
-    /// The segment pass, from the AVX2 copy where the processor has it.
-    fn segment_pass<L: TensionLaw, W: SegmentLoad, const UNIFORM: bool>(&mut self, load: &W, q: [f64; 3]) {
-        #[cfg(target_arch = "x86_64")]
-        if self.avx2 {
-            // SAFETY: `avx2` is set only where the processor reports AVX2 (`avx2_available`).
-            return unsafe { self.segment_pass_avx2::<L, W, UNIFORM>(load, q) };
-        }
-        self.segment_pass_baseline::<L, W, UNIFORM>(load, q)
-    }
-
-    /// The segment pass compiled for AVX2.
-    #[cfg(target_arch = "x86_64")]
-    #[inline(never)]
-    #[target_feature(enable = "avx2")]
-    fn segment_pass_avx2<L: TensionLaw, W: SegmentLoad, const UNIFORM: bool>(&mut self, load: &W, q: [f64; 3]) {
-        self.segment_pass_body::<L, W, UNIFORM>(load, q)
-    }
-
-    /// The segment pass for the baseline instruction set.
-    #[inline(never)]
-    fn segment_pass_baseline<L: TensionLaw, W: SegmentLoad, const UNIFORM: bool>(&mut self, load: &W, q: [f64; 3]) {
-        self.segment_pass_body::<L, W, UNIFORM>(load, q)
+    isa_dispatch! {
+        /// The segment pass ([`Explicit::segment_pass_body`]), from the AVX2 copy where the processor has it.
+        fn segment_pass[L: TensionLaw, W: SegmentLoad, const UNIFORM: bool][L, W, UNIFORM](load: &W, q: [f64; 3]) -> ()
+            = segment_pass_body;
     }
 
     /// `UNIFORM = false` skips the uniform load `q L` (all of `q` zero): the sum `P + 0 L` it saves can
@@ -317,8 +371,9 @@ impl Explicit {
     fn segment_pass_body<L: TensionLaw, W: SegmentLoad, const UNIFORM: bool>(&mut self, load: &W, q: [f64; 3]) {
         let w = &self.wire;
         let n = w.segments();
-        let ea = w.conductor.axial_stiffness_n;
-        let eta = w.conductor.internal_friction_n_s;
+        let ea = &w.axial_stiffness_n[..n];
+        let eta = &w.internal_friction_n_s[..n];
+        let mut tmax = 0.0_f64;
         let (x1a, x1b) = (&w.x[0][..n], &w.x[0][1..n + 1]);
         let (x2a, x2b) = (&w.x[1][..n], &w.x[1][1..n + 1]);
         let (x3a, x3b) = (&w.x[2][..n], &w.x[2][1..n + 1]);
@@ -341,7 +396,8 @@ impl Explicit {
             let e = len * inv_l0 - 1.0;
             let dv = [v1b[j] - v1a[j], v2b[j] - v2a[j], v3b[j] - v3a[j]];
             let edot = (dv[0] * t[0] + dv[1] * t[1] + dv[2] * t[2]) * inv_l0;
-            let tension = L::tension(ea, eta, e, edot) * intact[j];
+            let tension = L::tension(ea[j], eta[j], e, edot) * intact[j];
+            tmax = if tension > tmax { tension } else { tmax };
             fs1[j] = tension * t[0];
             fs2[j] = tension * t[1];
             fs3[j] = tension * t[2];
@@ -358,45 +414,14 @@ impl Explicit {
                 es3[j] = h * p[2];
             }
         }
+        self.max_tension_n = tmax;
     }
 
-    /// The node pass ([`Explicit::kick_drift`]), from the AVX2 copy where the processor has it.
-    fn node_pass<const EXTRA: bool, const DAMP: bool, const SMOOTH: bool>(
-        &mut self,
-        kick: f64,
-        dt: f64,
-        extra: &[Vec<f64>; 3],
-    ) -> bool {
-        #[cfg(target_arch = "x86_64")]
-        if self.avx2 {
-            // SAFETY: `avx2` is set only where the processor reports AVX2 (`avx2_available`).
-            return unsafe { self.node_pass_avx2::<EXTRA, DAMP, SMOOTH>(kick, dt, extra) };
-        }
-        self.node_pass_baseline::<EXTRA, DAMP, SMOOTH>(kick, dt, extra)
-    }
-
-    /// The node pass compiled for AVX2.
-    #[cfg(target_arch = "x86_64")]
-    #[inline(never)]
-    #[target_feature(enable = "avx2")]
-    fn node_pass_avx2<const EXTRA: bool, const DAMP: bool, const SMOOTH: bool>(
-        &mut self,
-        kick: f64,
-        dt: f64,
-        extra: &[Vec<f64>; 3],
-    ) -> bool {
-        self.kick_drift::<EXTRA, DAMP, SMOOTH>(kick, dt, extra)
-    }
-
-    /// The node pass for the baseline instruction set.
-    #[inline(never)]
-    fn node_pass_baseline<const EXTRA: bool, const DAMP: bool, const SMOOTH: bool>(
-        &mut self,
-        kick: f64,
-        dt: f64,
-        extra: &[Vec<f64>; 3],
-    ) -> bool {
-        self.kick_drift::<EXTRA, DAMP, SMOOTH>(kick, dt, extra)
+    isa_dispatch! {
+        /// The node pass ([`Explicit::kick_drift`]), from the AVX2 copy where the processor has it.
+        fn node_pass[const EXTRA: bool, const DAMP: bool, const SMOOTH: bool][EXTRA, DAMP, SMOOTH](
+            kick: f64, dt: f64, extra: &[Vec<f64>; 3]) -> bool
+            = kick_drift;
     }
 
     /// Pass 2 over nodes: `v += kick a` on free nodes, then (without smoothing) `r += dt v` in the same
@@ -534,10 +559,14 @@ impl Explicit {
 
     /// Energies, synchronised velocity and the largest tension at the current time level.
     ///
-    /// Not on the hot path: recomputes the segment forces to get `a^n`, then `v^n = v^{n-1/2} +
-    /// dt_{n-1/2}/2 a^n` (the first half of the next kick, the velocity-Verlet synchronisation).
+    /// Not on the hot path: uses the segment forces of [`Explicit::evaluate_forces`] (or computes them,
+    /// without marking them fresh for the step, if they are not) to get `a^n`, then `v^n = v^{n-1/2} +
+    /// dt_{n-1/2}/2 a^n` (the first half of the next kick, the velocity-Verlet synchronisation). The largest
+    /// tension is the segment pass's, the value the kick uses.
     pub fn diagnostics(&mut self) -> Diagnostics {
-        self.compute_segment_forces();
+        if !self.fresh {
+            self.compute_segment_forces();
+        }
         let w = &self.wire;
         let n = w.segments();
         let half = 0.5 * self.dt_prev;
@@ -555,10 +584,9 @@ impl Explicit {
             d.kinetic_j += 0.5 * w.mass[i] * v2;
             d.potential_j += w.mass[i] * g * w.x[2][i];
         }
-        let ea = w.conductor.axial_stiffness_n;
         for j in 0..n {
-            let e = w.strain(j);
-            let energy = match w.conductor.law {
+            let (ea, e) = (w.axial_stiffness_n[j], w.strain(j));
+            let energy = match w.law {
                 LawKind::TensionOnly => TensionOnly::energy_density(ea, e),
                 LawKind::Linear => Linear::energy_density(ea, e),
             };
@@ -607,14 +635,14 @@ impl Explicit {
     /// Tension of segment `j` [N] at the current level (Kelvin-Voigt, strain rate at `n - 1/2`).
     pub fn segment_tension(&self, j: usize) -> f64 {
         let w = &self.wire;
-        let (ea, eta) = (w.conductor.axial_stiffness_n, w.conductor.internal_friction_n_s);
+        let (ea, eta) = (w.axial_stiffness_n[j], w.internal_friction_n_s[j]);
         let (a, b) = (w.position(j), w.position(j + 1));
         let d = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
         let len = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
         let dv = [0, 1, 2].map(|k| w.v[k][j + 1] - w.v[k][j]);
         let edot = (dv[0] * d[0] + dv[1] * d[1] + dv[2] * d[2]) / (len * w.rest_length[j]);
         let e = len / w.rest_length[j] - 1.0;
-        let t = match w.conductor.law {
+        let t = match w.law {
             LawKind::TensionOnly => TensionOnly::tension(ea, eta, e, edot),
             LawKind::Linear => Linear::tension(ea, eta, e, edot),
         };

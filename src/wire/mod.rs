@@ -16,7 +16,8 @@ pub mod tension;
 /// Default reference temperature [K]: 268.15 K = -5 C, the ambient temperature of section 5.4.
 pub const REFERENCE_TEMPERATURE_K: f64 = 268.15;
 
-/// Properties of the conductor shared by all segments.
+/// Properties of a conductor: the material a uniform wire is built from ([`Wire::new`]); each segment
+/// keeps its own copy of them, so a line may join conductors of different kinds.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Conductor {
     /// axial stiffness `EA` [N]
@@ -27,11 +28,29 @@ pub struct Conductor {
     pub law: tension::LawKind,
 }
 
-/// The discrete wire: node and segment arrays, each a contiguous `Vec<f64>` per component.
+/// How a node is held.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Constraint {
+    /// the node moves under the forces on it
+    Free,
+    /// the node is held at its position (a dead-end support); the force the wire applies to it is the
+    /// support load ([`crate::scheme::Explicit::support_forces`])
+    Fixed,
+}
+
+/// The discrete line: node and segment arrays, each a contiguous `Vec<f64>` per component. Every
+/// segment carries its own material (axial stiffness, internal friction, mass, stress-free length), and
+/// every node its own [`Constraint`]; a single span is a line whose two end nodes are fixed.
 #[derive(Clone, Debug)]
 pub struct Wire {
-    /// conductor properties
-    pub conductor: Conductor,
+    /// constitutive law of every segment (chosen once per run: the kernel is specialised on it)
+    pub law: tension::LawKind,
+    /// how each node is held, length `N + 1`
+    pub constraint: Vec<Constraint>,
+    /// segment axial stiffness `EA_{i+1/2}` [N], length `N`
+    pub axial_stiffness_n: Vec<f64>,
+    /// segment Kelvin-Voigt internal friction `eta_{i+1/2}` [N s], eq. (3.4), length `N`
+    pub internal_friction_n_s: Vec<f64>,
     /// node positions `x1, x2, x3` [m], each of length `N + 1`
     pub x: [Vec<f64>; 3],
     /// node velocities `v1, v2, v3` [m/s] at the last half step `n - 1/2`, each of length `N + 1`
@@ -40,7 +59,7 @@ pub struct Wire {
     pub mass: Vec<f64>,
     /// `1 / m_i` [1/kg]
     pub inv_mass: Vec<f64>,
-    /// 1.0 for a free node, 0.0 for a fixed support node [-]
+    /// 1.0 for a free node, 0.0 for a fixed one [-] (the kernel's form of [`Wire::constraint`])
     pub free: Vec<f64>,
     /// segment stress-free length `l0_{i+1/2}` [m], length `N` (thermal strain scales it)
     pub rest_length: Vec<f64>,
@@ -71,16 +90,20 @@ impl Wire {
         assert!(n_nodes >= 3, "a wire needs at least two segments");
         assert!(x.iter().all(|c| c.len() == n_nodes) && rest_length.len() == n_nodes - 1);
         let segment_mass: Vec<f64> = rest_length.iter().map(|l| l * linear_density_kg_per_m).collect();
-        let mut free = vec![1.0; n_nodes];
-        free[0] = 0.0;
-        free[n_nodes - 1] = 0.0;
+        let n = n_nodes - 1;
+        let mut constraint = vec![Constraint::Free; n_nodes];
+        constraint[0] = Constraint::Fixed;
+        constraint[n] = Constraint::Fixed;
         let mut wire = Wire {
-            conductor,
+            law: conductor.law,
+            free: constraint.iter().map(|c| if *c == Constraint::Free { 1.0 } else { 0.0 }).collect(),
+            constraint,
+            axial_stiffness_n: vec![conductor.axial_stiffness_n; n],
+            internal_friction_n_s: vec![conductor.internal_friction_n_s; n],
             v: [vec![0.0; n_nodes], vec![0.0; n_nodes], vec![0.0; n_nodes]],
             x,
             mass: vec![0.0; n_nodes],
             inv_mass: vec![0.0; n_nodes],
-            free,
             reference_length: rest_length.clone(),
             rest_length,
             segment_mass,
@@ -113,6 +136,17 @@ impl Wire {
             self.mass[i] = 0.5 * (left + right);
             self.inv_mass[i] = 1.0 / self.mass[i];
         }
+    }
+
+    /// Indices of the fixed nodes (the supports), in node order.
+    pub fn fixed_nodes(&self) -> impl Iterator<Item = usize> + '_ {
+        self.constraint.iter().enumerate().filter(|(_, c)| **c == Constraint::Fixed).map(|(i, _)| i)
+    }
+
+    /// Hold node `i` fixed or let it move.
+    pub fn set_constraint(&mut self, i: usize, c: Constraint) {
+        self.constraint[i] = c;
+        self.free[i] = if c == Constraint::Free { 1.0 } else { 0.0 };
     }
 
     /// Position of node `i` [m].

@@ -65,7 +65,7 @@ pub fn segment_forces(s: &Explicit, j: usize) -> ([D; 3], [D; 3]) {
     let xb: [D; 3] = std::array::from_fn(|k| D::var(w.x[k][j + 1], 3 + k));
     let va: [D; 3] = std::array::from_fn(|k| D::var(w.v[k][j], 6 + k));
     let vb: [D; 3] = std::array::from_fn(|k| D::var(w.v[k][j + 1], 9 + k));
-    let (ea, eta) = (w.conductor.axial_stiffness_n, w.conductor.internal_friction_n_s);
+    let (ea, eta) = (w.axial_stiffness_n[j], w.internal_friction_n_s[j]);
     let l0 = w.rest_length[j];
     let d = sub(&xb, &xa);
     let len = dot(&d, &d).sqrt();
@@ -75,7 +75,7 @@ pub fn segment_forces(s: &Explicit, j: usize) -> ([D; 3], [D; 3]) {
     let dv = sub(&vb, &va);
     let edot = (1.0 / l0) * dot(&dv, &t);
     let raw = ea * e + eta * edot;
-    let tension = match w.conductor.law {
+    let tension = match w.law {
         LawKind::Linear => raw,
         LawKind::TensionOnly => {
             if e.v > 0.0 {

@@ -36,8 +36,8 @@ fn parts(s: &Explicit) -> Vec<[Vec<f64>; 3]> {
         _ => unreachable!("the energy study uses the aerodynamic wind"),
     };
     let wind0 = Aerodynamic { mu_over_u: 0.0, ..wind };
-    let (ea, eta) = (w.conductor.axial_stiffness_n, w.conductor.internal_friction_n_s);
     for j in 0..n {
+        let (ea, eta) = (w.axial_stiffness_n[j], w.internal_friction_n_s[j]);
         let (a, b) = (w.position(j), w.position(j + 1));
         let d = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
         let len = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();

@@ -153,7 +153,7 @@ pub fn run(budget: Budget, dir: &Path) -> Result<StudyReport, String> {
     for (i, v) in probe.wire.v[0].iter_mut().enumerate() {
         *v = 0.3 * (i as f64).sin();
     }
-    probe.wire.conductor.internal_friction_n_s = 50.0;
+    probe.wire.internal_friction_n_s.fill(50.0);
     let gap = replica_gap(&mut probe);
     rep.check("Jacobian replica vs library forces", "< 1e-9 N", sci(gap), gap < 1e-9);
 
