@@ -2,4 +2,5 @@
 
 pub mod bench;
 pub mod paper;
+pub mod progress;
 pub mod run;

@@ -3,7 +3,9 @@
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-use ohl::run::{RunError, RunOptions, run};
+use ohl::run::{RunError, RunOptions, run_observed};
+
+use super::progress::Progress;
 use ohl::scenario;
 
 /// Arguments of `ohl run`.
@@ -30,8 +32,9 @@ pub fn main(args: RunArgs) -> ExitCode {
         }
     };
     let plan = scenario::build(&sc);
-    let opts = RunOptions { out_dir: Some(out.clone()), progress: true, record: false };
-    match run(plan, &opts) {
+    let opts = RunOptions { out_dir: Some(out.clone()), record: false };
+    let mut progress = Progress::new(plan.stop);
+    match run_observed(plan, &opts, &mut [&mut progress]) {
         Ok(o) => {
             if !quiet {
                 let s = &o.summary;

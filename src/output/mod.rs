@@ -1,12 +1,29 @@
-//! Output files of a run: `timeseries.csv` ([`timeseries`]), `snapshots.csv` ([`snapshots`]) and
-//! `summary.json` ([`summary`]), and the comparison plots of [`plot`]. Writers flush as they go, so a run stopped by an instability leaves
-//! readable files behind.
+//! What a run produces. Each output is an observer of the run loop ([`crate::run::Observer`]), one per
+//! file:
+//!
+//! - [`timeseries`]: `timeseries.csv`, a row per sample interval (probes and support forces included);
+//! - [`snapshots`]: `snapshots.csv`, the whole wire at the snapshot times and at the end;
+//! - [`peaks`]: peaks of tension, probe displacements and support forces, every time level, per phase;
+//! - [`recorder`]: the same samples and shapes in memory;
+//! - [`summary`]: `summary.json`, written whole at the end;
+//!
+//! with their building blocks: [`clock`] (when an output acts, without moving the clock), [`probe`]
+//! (Lagrangian points) and [`rows`] (CSV files that only ever hold whole rows). The comparison plots
+//! are [`plot`].
 
+pub mod clock;
+pub mod peaks;
 pub mod plot;
+pub mod probe;
+pub mod recorder;
+pub mod rows;
 pub mod snapshots;
 pub mod summary;
 pub mod timeseries;
 
-pub use snapshots::SnapshotWriter;
-pub use summary::{Peak, Summary};
-pub use timeseries::{Sample, TimeseriesWriter};
+pub use peaks::{Peak, Peaks};
+pub use probe::ProbePoint;
+pub use recorder::{Probe, Recorder, Shape};
+pub use snapshots::Snapshots;
+pub use summary::Summary;
+pub use timeseries::{Sample, Timeseries};

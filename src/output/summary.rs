@@ -1,17 +1,9 @@
-//! `summary.json`: the outcome of a run in one small JSON object.
+//! `summary.json`: the outcome of a run in one JSON object, written whole or not at all (a temporary
+//! file renamed into place, [`super::rows::write_atomically`]).
 
 use serde::Serialize;
 
-/// The extreme of one component of the mid-span displacement.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
-pub struct Peak {
-    /// the displacement of largest magnitude, with its sign [m]
-    pub value_m: f64,
-    /// when it occurred [s]
-    pub time_s: f64,
-    /// when it occurred, dimensionless `tau = t U / l` [-]
-    pub tau: f64,
-}
+pub use super::peaks::{Peak, PeakForce, Phase, SupportPeaks};
 
 /// Details of an instability, as written to the summary.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -24,6 +16,41 @@ pub struct InstabilityReport {
     pub reason: String,
 }
 
+/// One support (a fixed node).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct SupportSummary {
+    /// node index
+    pub node: usize,
+    /// position of the support [m]
+    pub position_m: [f64; 3],
+    /// force the wire applies to the support at the end `[F1, F2, F3]` [N]
+    pub final_force_n: [f64; 3],
+    /// its peaks from `peaks_from_s` on, every time level
+    pub peaks: SupportPeaks,
+}
+
+/// One probe (a Lagrangian point; the first is mid-span).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct ProbeSummary {
+    /// name
+    pub name: String,
+    /// fraction of the unstretched length from the first node [-]
+    pub at_fraction: f64,
+    /// displacement from the chord point at the same fraction at the end [m]
+    pub final_displacement_m: [f64; 3],
+    /// largest-magnitude displacement per component from `peaks_from_s` on, every time level [m]
+    pub peak_displacement_m: [Peak; 3],
+}
+
+/// An event applied during the run.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct EventRecord {
+    /// when [s]
+    pub time_s: f64,
+    /// what was done
+    pub what: String,
+}
+
 /// Everything `summary.json` holds.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Summary {
@@ -31,8 +58,11 @@ pub struct Summary {
     pub name: String,
     /// "completed" (end time reached), "settled", "not_settled" (time cap reached) or "unstable"
     pub status: String,
-    /// true if the run ended because the wire settled
+    /// true if the run ended because the wire settled (after its last event)
     pub settled: bool,
+    /// when the settled stretch began [s] (present when settled)
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub settled_since_s: Option<f64>,
     /// time at the end of the run [s]
     pub final_time_s: f64,
     /// dimensionless end time `tau` [-]
@@ -41,9 +71,11 @@ pub struct Summary {
     pub final_midspan_displacement_m: [f64; 3],
     /// largest segment tension at the end [N]
     pub final_max_tension_n: f64,
-    /// largest-magnitude mid-span displacement per component, over all steps
+    /// the peaks below count from this time [s]: the first event's time, or 0 without events
+    pub peaks_from_s: f64,
+    /// largest-magnitude mid-span displacement per component, every time level from `peaks_from_s` on
     pub peak_midspan_displacement_m: [Peak; 3],
-    /// largest segment tension over all samples [N]
+    /// largest segment tension, every time level from `peaks_from_s` on [N]
     pub peak_max_tension_n: f64,
     /// when it occurred [s]
     pub peak_max_tension_time_s: f64,
@@ -63,6 +95,14 @@ pub struct Summary {
     pub wall_time_s: f64,
     /// throughput of the time loop, nodes x steps / wall time [1/s]
     pub node_steps_per_second: f64,
+    /// the supports, in node order
+    pub supports: Vec<SupportSummary>,
+    /// the probes (mid-span first)
+    pub probes: Vec<ProbeSummary>,
+    /// the phases between events, each with its own peaks (every time level)
+    pub phases: Vec<Phase>,
+    /// the events applied
+    pub events: Vec<EventRecord>,
     /// present when the run was stopped as unstable
     #[serde(skip_serializing_if = "Option::is_none")]
     pub instability: Option<InstabilityReport>,

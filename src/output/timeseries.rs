@@ -1,16 +1,23 @@
-//! `timeseries.csv`: one row per sample interval.
+//! `timeseries.csv`: one row per sample interval, taken at the first time level at or after each
+//! multiple of the interval (the row records the level's actual time; sampling never moves the clock).
 //!
 //! Columns: `t_s` [s], `tau` [-] (`t U / l`), `mid_dx1_m`, `mid_dx2_m`, `mid_dx3_m` [m] (mid-span point
-//! minus the chord midpoint), `max_tension_n` [N], `kinetic_j`, `elastic_j`, `potential_j` [J]
-//! (gravity and uniform load), `total_j` [J] (their sum).
+//! minus the chord midpoint), `max_tension_n` [N] (largest segment tension, the kernel's value),
+//! `kinetic_j`, `elastic_j`, `potential_j` [J] (gravity and uniform load), `total_j` [J] (their sum); then
+//! for each named probe `NAME_dx1_m`, `NAME_dx2_m`, `NAME_dx3_m` [m] (see [`super::probe`]); then for each
+//! support `k` (fixed nodes in node order) `support{k}_f1_n`, `support{k}_f2_n`, `support{k}_f3_n` [N],
+//! the force the wire applies to the support (tension plus the node's share of the loads and weight).
 
-use std::fs::File;
-use std::io::BufWriter;
 use std::path::Path;
 
 use serde::Serialize;
 
-/// One row of the time series.
+use super::clock::{LANDING, SampleClock};
+use super::probe::ProbePoint;
+use super::rows::RowFile;
+use crate::run::{Control, Level, Observer, OutputError};
+
+/// One row of the time series (its fixed columns).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
 pub struct Sample {
     /// time `t` [s]
@@ -35,20 +42,105 @@ pub struct Sample {
     pub total_j: f64,
 }
 
-/// Writes `timeseries.csv`, flushing after every row.
-pub struct TimeseriesWriter {
-    w: csv::Writer<BufWriter<File>>,
+impl Sample {
+    /// The fixed columns at a level; `mid` is the mid-span probe.
+    pub fn of(level: &Level, mid: &ProbePoint) -> Sample {
+        let s = level.solver;
+        let d = s.level_diagnostics();
+        let m = mid.displacement(&s.wire);
+        Sample {
+            t_s: level.t_s,
+            tau: level.tau(),
+            mid_dx1_m: m[0],
+            mid_dx2_m: m[1],
+            mid_dx3_m: m[2],
+            max_tension_n: s.max_tension_n(),
+            kinetic_j: d.kinetic_j,
+            elastic_j: d.elastic_j,
+            potential_j: d.potential_j,
+            total_j: d.kinetic_j + d.elastic_j + d.potential_j,
+        }
+    }
 }
 
-impl TimeseriesWriter {
-    /// Create the file (with its header, written with the first row).
-    pub fn create(path: &Path) -> std::io::Result<Self> {
-        Ok(TimeseriesWriter { w: csv::Writer::from_writer(BufWriter::new(File::create(path)?)) })
-    }
+/// Writes `timeseries.csv`, one committed row per sample.
+pub struct Timeseries {
+    file: RowFile,
+    clock: SampleClock,
+    mid: ProbePoint,
+    probes: Vec<ProbePoint>,
+    forces: Vec<(usize, [f64; 3])>,
+}
 
-    /// Append a row.
-    pub fn write(&mut self, s: &Sample) -> std::io::Result<()> {
-        self.w.serialize(s).map_err(std::io::Error::other)?;
-        self.w.flush()
+impl Timeseries {
+    /// Create `path` for samples every `interval_s` [s] of the mid-span probe `mid`, the other `probes`
+    /// and `supports` supports.
+    pub fn create(
+        path: &Path,
+        interval_s: f64,
+        mid: ProbePoint,
+        probes: Vec<ProbePoint>,
+        supports: usize,
+    ) -> Result<Self, OutputError> {
+        let mut header: Vec<String> = [
+            "t_s",
+            "tau",
+            "mid_dx1_m",
+            "mid_dx2_m",
+            "mid_dx3_m",
+            "max_tension_n",
+            "kinetic_j",
+            "elastic_j",
+            "potential_j",
+            "total_j",
+        ]
+        .map(String::from)
+        .into();
+        for p in &probes {
+            header.extend((1..=3).map(|k| format!("{}_dx{k}_m", p.name)));
+        }
+        for s in 0..supports {
+            header.extend((1..=3).map(|k| format!("support{s}_f{k}_n")));
+        }
+        let file = RowFile::create(path, &header).map_err(OutputError::at(path))?;
+        Ok(Timeseries { file, clock: SampleClock::new(interval_s), mid, probes, forces: Vec::new() })
+    }
+}
+
+impl Observer for Timeseries {
+    fn observe(&mut self, level: &Level) -> Result<Control, OutputError> {
+        if !self.clock.due(level.t_s, LANDING * level.solver.params.dt_s) {
+            return Ok(Control::Continue);
+        }
+        let s = Sample::of(level, &self.mid);
+        let f = &mut self.file;
+        for x in [
+            s.t_s,
+            s.tau,
+            s.mid_dx1_m,
+            s.mid_dx2_m,
+            s.mid_dx3_m,
+            s.max_tension_n,
+            s.kinetic_j,
+            s.elastic_j,
+            s.potential_j,
+            s.total_j,
+        ] {
+            f.number(x);
+        }
+        for p in &self.probes {
+            for x in p.displacement(&level.solver.wire) {
+                f.number(x);
+            }
+        }
+        level.solver.support_forces(&mut self.forces);
+        for (_, force) in &self.forces {
+            for x in force {
+                f.number(*x);
+            }
+        }
+        f.end_row();
+        f.commit().map_err(OutputError::at(&f.path().to_path_buf()))?;
+        Ok(Control::Continue)
     }
 }

@@ -64,6 +64,10 @@ pub struct Plan {
     pub events: Vec<EventSpec>,
     /// the ground plane, if the scenario has one (on the solver from the start if it is active)
     pub ground: Option<GroundSpec>,
+    /// named probes besides mid-span: (name, fraction of the unstretched length [-])
+    pub probes: Vec<(String, f64)>,
+    /// the run's peaks count from this time [s]; default the first event's time (0 without events)
+    pub peaks_from_s: Option<f64>,
 }
 
 impl Plan {
@@ -230,6 +234,8 @@ pub fn build(s: &Scenario) -> Plan {
         tau_speed_m_per_s: s.output.tau_speed_m_per_s,
         events,
         ground: s.ground.clone(),
+        probes: s.output.probes.iter().map(|p| (p.name.clone(), p.at_fraction)).collect(),
+        peaks_from_s: s.output.peaks_from_s,
     }
 }
 

@@ -296,9 +296,19 @@ pub struct OutputSpec {
     /// interval between rows of `timeseries.csv` [s], > 0; default 0.05
     #[serde(default = "default_sample")]
     pub sample_interval_s: f64,
-    /// times at which the whole shape goes to `snapshots.csv` [s]; the run steps exactly onto them
+    /// times at which the whole shape goes to `snapshots.csv` [s]: taken at the first time step at or
+    /// after each (the rows record the actual time; outputs never shorten a step); the final state is
+    /// always written too
     #[serde(default)]
     pub snapshot_times_s: Vec<f64>,
+    /// named points of the wire followed in `timeseries.csv` and `summary.json`, besides mid-span
+    #[serde(default)]
+    pub probes: Vec<ProbeSpec>,
+    /// the peaks of `summary.json` count from this time [s], >= 0; default: the first event's time (so a
+    /// settle-then-break run reports the break's peaks), or 0 without events. Every phase between events
+    /// has its own peaks in `summary.json` regardless.
+    #[serde(default)]
+    pub peaks_from_s: Option<f64>,
     /// speed `U` [m/s] of the dimensionless time `tau = t U / l` (l = chord length); default 20 (the
     /// paper's wind speed, section 4)
     #[serde(default = "default_tau_speed")]
@@ -310,9 +320,21 @@ impl Default for OutputSpec {
         OutputSpec {
             sample_interval_s: default_sample(),
             snapshot_times_s: Vec::new(),
+            probes: Vec::new(),
+            peaks_from_s: None,
             tau_speed_m_per_s: default_tau_speed(),
         }
     }
+}
+
+/// A named point of the wire at a fixed Lagrangian coordinate.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ProbeSpec {
+    /// name: letters, digits and `_`, not `mid` (the mid-span probe every run has); used in column names
+    pub name: String,
+    /// position as a fraction `f` of the unstretched length from the left support [-], in [0, 1]
+    pub at_fraction: f64,
 }
 
 fn default_sample() -> f64 {

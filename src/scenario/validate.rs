@@ -301,6 +301,22 @@ pub fn validate(s: &Scenario) -> Vec<Problem> {
             "must be in [0, end time] (duration.end_time_s or duration.until_settled.max_time_s)",
         );
     }
+    for (k, p) in out.probes.iter().enumerate() {
+        let field = |f: &str| format!("output.probes[{k}].{f}");
+        let name_ok = !p.name.is_empty()
+            && p.name.chars().all(|ch| ch.is_ascii_alphanumeric() || ch == '_')
+            && p.name != crate::output::probe::MIDSPAN;
+        if !name_ok {
+            c.fail(&field("name"), format!("{:?}", p.name), "must be letters, digits and _ only, and not \"mid\"");
+        }
+        if out.probes[..k].iter().any(|q| q.name == p.name) {
+            c.fail(&field("name"), format!("{:?}", p.name), "must differ from the names of the earlier probes");
+        }
+        c.within(&field("at_fraction"), p.at_fraction, 0.0, 1.0, "must be a fraction of the span in [0, 1]");
+    }
+    if let Some(t) = out.peaks_from_s {
+        c.within("output.peaks_from_s", t, 0.0, end.unwrap_or(f64::INFINITY), "must be in [0, end time] [s]");
+    }
     check_ground_and_events(&mut c, s, end);
     check_paper(&mut c, s, end);
     c.0

@@ -22,8 +22,7 @@ pub fn scenario(text: &str) -> ohl::scenario::Scenario {
 /// Run a scenario in memory (no files), recording the time series.
 pub fn run_in_memory(text: &str) -> Outcome {
     let plan = scenario::build(&scenario(text));
-    run(plan, &RunOptions { out_dir: None, progress: false, record: true })
-        .unwrap_or_else(|e| panic!("run failed: {e}"))
+    run(plan, &RunOptions { out_dir: None, record: true }).unwrap_or_else(|e| panic!("run failed: {e}"))
 }
 
 /// Least-squares slope of log(err) against log(N): the observed order is minus this slope.

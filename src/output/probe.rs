@@ -1,0 +1,74 @@
+//! Probes: named points of the wire at a fixed Lagrangian coordinate `s = f S` (a fraction `f` of the
+//! unstretched length from the first node), followed through the run.
+//!
+//! A probe between nodes `a` and `a + 1` at the local fraction `w` of segment `a` is at
+//! `r = (1 - w) r_a + w r_{a+1}`, exactly at node `a` when `w = 0` (mid-span of an even grid) and the mean
+//! of the two middle nodes for an odd grid. Its displacement is measured from the point at the same
+//! fraction of the chord between the first and the last node, `(1 - f) A + f B` (for mid-span the chord
+//! midpoint, the paper's reference in every figure).
+
+use crate::wire::Wire;
+
+/// Name of the probe every run has: the mid-span point `f = 1/2`.
+pub const MIDSPAN: &str = "mid";
+
+/// A named Lagrangian point.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ProbePoint {
+    /// name, used in column names (`NAME_dx1_m`, ...)
+    pub name: String,
+    /// fraction `f` of the unstretched length from the first node [-], in [0, 1]
+    pub at_fraction: f64,
+    /// segment holding the point
+    segment: usize,
+    /// local fraction `w` in that segment [-]
+    weight: f64,
+    /// the chord point the displacement is measured from [m]
+    reference_m: [f64; 3],
+}
+
+impl ProbePoint {
+    /// The probe at fraction `f` of the wire's unstretched length, for a wire whose end nodes are at
+    /// `a` and `b` [m] at the start.
+    pub fn new(name: &str, f: f64, wire: &Wire) -> Self {
+        let n = wire.segments();
+        let lengths = &wire.reference_length;
+        let (segment, weight) = if lengths.iter().all(|l| l.to_bits() == lengths[0].to_bits()) {
+            // Equal segments: exact integer arithmetic on f N (f = 1/2 lands on node N/2 for even N).
+            let fn_ = f * n as f64;
+            let j = (fn_.floor() as usize).min(n - 1);
+            (j, fn_ - j as f64)
+        } else {
+            let target = f * lengths.iter().sum::<f64>();
+            let mut s = 0.0;
+            let mut found = (n - 1, 1.0);
+            for (j, l) in lengths.iter().enumerate() {
+                if target <= s + l {
+                    found = (j, ((target - s) / l).clamp(0.0, 1.0));
+                    break;
+                }
+                s += l;
+            }
+            found
+        };
+        let (a, b) = (wire.position(0), wire.position(n));
+        let reference_m = [0, 1, 2].map(|k| (1.0 - f) * a[k] + f * b[k]);
+        ProbePoint { name: name.to_string(), at_fraction: f, segment, weight, reference_m }
+    }
+
+    /// Position of the point [m].
+    pub fn position(&self, wire: &Wire) -> [f64; 3] {
+        let (j, w) = (self.segment, self.weight);
+        if w == 0.0 {
+            return wire.position(j);
+        }
+        let (a, b) = (wire.position(j), wire.position(j + 1));
+        [0, 1, 2].map(|k| (1.0 - w) * a[k] + w * b[k])
+    }
+
+    /// Displacement from the chord point at the same fraction [m].
+    pub fn displacement(&self, wire: &Wire) -> [f64; 3] {
+        let p = self.position(wire);
+        [0, 1, 2].map(|k| p[k] - self.reference_m[k])
+    }
+}

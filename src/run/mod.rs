@@ -1,0 +1,249 @@
+//! The run: a short loop that steps the solver, applies the events due, and notifies its observers
+//! ([`Observer`]) at every time level. Everything a run produces (time series, snapshots, peaks, the
+//! settle criterion, the in-memory record, a progress display) is an observer; none of them can change
+//! the state, so asking for more output never changes the trajectory.
+//!
+//! Time handling: steps have the nominal length `dt` of (3.7), except the step that lands exactly on an
+//! event time or the end time, which is shortened (the scheme's kick uses the mean of consecutive steps,
+//! so this keeps second order). Outputs never shorten a step: they act at the first level at or after
+//! their times ([`crate::output::clock`]). Events due at a level are applied on arrival, before the level
+//! is observed ([`crate::events`]). A run until settled stops at the first level where the settle
+//! criterion holds and no event is pending.
+
+pub mod observer;
+pub mod settle;
+
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+use crate::events::EventState;
+use crate::output::clock::LANDING;
+use crate::output::rows::write_atomically;
+use crate::output::summary::{EventRecord, InstabilityReport, ProbeSummary, SupportSummary};
+use crate::output::{Peaks, ProbePoint, Recorder, Sample, Snapshots, Summary, Timeseries};
+use crate::scenario::Plan;
+use crate::scenario::build::Stop;
+use crate::scheme::{Explicit, Instability};
+
+pub use crate::output::{Probe, Shape};
+pub use observer::{Control, Ending, Level, Observer, OutputError};
+pub use settle::Settle;
+
+/// Run `solver` and its `timeline` until `stop`, notifying `observers` at every time level (`tau_per_s`
+/// [1/s] converts time to the paper's `tau`). Returns how the run ended, or the first output error.
+pub fn run_loop<'o>(
+    solver: &mut Explicit,
+    timeline: &mut EventState,
+    stop: Stop,
+    tau_per_s: f64,
+    observers: &mut [&mut (dyn Observer + 'o)],
+) -> Result<Ending, OutputError> {
+    let (dt, horizon) = (solver.params.dt_s, stop.horizon_s());
+    let tol = LANDING * dt;
+    let ending = loop {
+        let t = solver.time_s;
+        let applied = timeline.apply_due(solver, t, tol);
+        if applied > 0 {
+            let what = timeline.log[timeline.log.len() - applied..].iter().map(|(_, w)| w.as_str());
+            let what = what.collect::<Vec<_>>().join("; ");
+            observers.iter_mut().for_each(|o| o.event(t, &what));
+        }
+        timeline.before_step(solver, t);
+        solver.evaluate_forces();
+        let level = Level { solver, t_s: t, tau_per_s };
+        let mut settled = false;
+        for o in observers.iter_mut() {
+            settled |= o.observe(&level)? == Control::Settled;
+        }
+        if settled && timeline.next_time().is_none() {
+            break Ending::Settled;
+        }
+        if t >= horizon - tol {
+            break if matches!(stop, Stop::Settled { .. }) { Ending::NotSettled } else { Ending::Completed };
+        }
+        let target = timeline.next_time().unwrap_or(horizon).min(horizon);
+        let h = if target - t <= dt * (1.0 + 1.0e-12) { target - t } else { dt };
+        if let Err(e) = solver.step(h) {
+            break Ending::Unstable(e);
+        }
+        if h < dt {
+            solver.time_s = target;
+        }
+        timeline.after_step(solver, h);
+    };
+    if matches!(ending, Ending::Unstable(_)) {
+        solver.evaluate_forces();
+    }
+    let level = Level { solver, t_s: solver.time_s, tau_per_s };
+    for o in observers.iter_mut() {
+        o.finish(&level, &ending)?;
+    }
+    Ok(ending)
+}
+
+/// How to run a plan with the standard outputs ([`run`]).
+#[derive(Clone, Debug, Default)]
+pub struct RunOptions {
+    /// directory for `timeseries.csv`, `snapshots.csv` and `summary.json` (none: nothing is written)
+    pub out_dir: Option<PathBuf>,
+    /// keep the time series in memory in [`Outcome::samples`] (with [`Outcome::probes`]) and the shapes
+    /// at the snapshot times in [`Outcome::shapes`]
+    pub record: bool,
+}
+
+/// What a run produced.
+#[derive(Clone, Debug)]
+pub struct Outcome {
+    /// the summary (also written to `summary.json`)
+    pub summary: Summary,
+    /// the time series, if [`RunOptions::record`] was set
+    pub samples: Vec<Sample>,
+    /// recorded with each sample, if [`RunOptions::record`] was set
+    pub probes: Vec<Probe>,
+    /// the shapes at the snapshot times, if [`RunOptions::record`] was set
+    pub shapes: Vec<Shape>,
+    /// the events applied: (time [s], what was done)
+    pub events: Vec<(f64, String)>,
+    /// the solver at the end of the run
+    pub solver: Explicit,
+}
+
+/// Why a run did not complete.
+#[derive(Debug, thiserror::Error)]
+pub enum RunError {
+    /// An output file could not be written.
+    #[error(transparent)]
+    Io(#[from] OutputError),
+    /// The scheme went unstable; the outcome up to that point is attached (and was written).
+    #[error("{instability}")]
+    Unstable {
+        /// where and why
+        instability: Instability,
+        /// the run up to the failure
+        outcome: Box<Outcome>,
+    },
+}
+
+/// Run a plan to its end with the standard outputs.
+pub fn run(plan: Plan, opts: &RunOptions) -> Result<Outcome, RunError> {
+    run_observed(plan, opts, &mut [])
+}
+
+/// [`run`] with further observers (a progress display, a custom output) after the standard ones.
+pub fn run_observed<'o>(
+    plan: Plan,
+    opts: &RunOptions,
+    extra: &mut [&mut (dyn Observer + 'o)],
+) -> Result<Outcome, RunError> {
+    let mut solver = plan.solver.clone();
+    let wire = &solver.wire;
+    let mid = ProbePoint::new(crate::output::probe::MIDSPAN, 0.5, wire);
+    let named: Vec<ProbePoint> = plan.probes.iter().map(|(name, f)| ProbePoint::new(name, *f, wire)).collect();
+    let all_probes: Vec<ProbePoint> = std::iter::once(mid.clone()).chain(named.iter().cloned()).collect();
+    let supports: Vec<(usize, [f64; 3])> = wire.fixed_nodes().map(|i| (i, wire.position(i))).collect();
+    let from_s = plan.peaks_from_s.unwrap_or_else(|| plan.events.first().map_or(0.0, |e| e.time_s()));
+    let mut peaks = Peaks::new(from_s, all_probes.clone(), supports.len());
+    let mut settle = match plan.stop {
+        Stop::Settled { fraction, window_s, .. } => Some(Settle::new(fraction, window_s)),
+        Stop::EndTime(_) => None,
+    };
+    let mut recorder =
+        opts.record.then(|| Recorder::new(plan.sample_interval_s, plan.snapshot_times_s.clone(), mid.clone()));
+    let (mut series, mut snaps) = match &opts.out_dir {
+        Some(d) => {
+            std::fs::create_dir_all(d).map_err(OutputError::at(d))?;
+            let ts = Timeseries::create(&d.join("timeseries.csv"), plan.sample_interval_s, mid, named, supports.len())?;
+            (Some(ts), Some(Snapshots::create(&d.join("snapshots.csv"), plan.snapshot_times_s.clone())?))
+        }
+        None => (None, None),
+    };
+    let mut timeline = EventState::new(&plan);
+    let started = Instant::now();
+    let ending = {
+        let mut observers: Vec<&mut (dyn Observer + 'o)> = vec![&mut peaks];
+        observers.extend(settle.as_mut().map(|o| o as &mut dyn Observer));
+        observers.extend(recorder.as_mut().map(|o| o as &mut dyn Observer));
+        observers.extend(series.as_mut().map(|o| o as &mut dyn Observer));
+        observers.extend(snaps.as_mut().map(|o| o as &mut dyn Observer));
+        for o in extra.iter_mut() {
+            observers.push(&mut **o);
+        }
+        run_loop(&mut solver, &mut timeline, plan.stop, plan.tau(1.0), &mut observers)?
+    };
+    let wall = started.elapsed().as_secs_f64();
+
+    let t = solver.time_s;
+    let last = Sample::of(&Level { solver: &solver, t_s: t, tau_per_s: plan.tau(1.0) }, &all_probes[0]);
+    let mut forces = Vec::new();
+    solver.support_forces(&mut forces);
+    let n = solver.wire.segments();
+    let run_peaks = &peaks.run;
+    let summary = Summary {
+        name: plan.name.clone(),
+        status: ending.status().into(),
+        settled: ending == Ending::Settled,
+        settled_since_s: settle.as_ref().and_then(|s| s.settled_since_s).filter(|_| ending == Ending::Settled),
+        final_time_s: t,
+        final_tau: plan.tau(t),
+        final_midspan_displacement_m: [last.mid_dx1_m, last.mid_dx2_m, last.mid_dx3_m],
+        final_max_tension_n: last.max_tension_n,
+        peaks_from_s: peaks.from_s(),
+        peak_midspan_displacement_m: run_peaks.probes[0],
+        peak_max_tension_n: run_peaks.max_tension.value_n,
+        peak_max_tension_time_s: run_peaks.max_tension.time_s,
+        final_kinetic_j: last.kinetic_j,
+        steps: solver.steps,
+        segments: n,
+        dt_s: solver.params.dt_s,
+        courant: plan.courant,
+        wave_speed_m_per_s: plan.wave_speed_m_per_s,
+        wall_time_s: wall,
+        node_steps_per_second: if wall > 0.0 { (n + 1) as f64 * solver.steps as f64 / wall } else { 0.0 },
+        supports: supports
+            .iter()
+            .zip(&forces)
+            .zip(&run_peaks.supports)
+            .map(|(((node, position_m), (_, f)), p)| SupportSummary {
+                node: *node,
+                position_m: *position_m,
+                final_force_n: *f,
+                peaks: p.clone(),
+            })
+            .collect(),
+        probes: all_probes
+            .iter()
+            .zip(&run_peaks.probes)
+            .map(|(p, peak)| ProbeSummary {
+                name: p.name.clone(),
+                at_fraction: p.at_fraction,
+                final_displacement_m: p.displacement(&solver.wire),
+                peak_displacement_m: *peak,
+            })
+            .collect(),
+        phases: peaks.phases.clone(),
+        events: timeline.log.iter().map(|(t, w)| EventRecord { time_s: *t, what: w.clone() }).collect(),
+        instability: match &ending {
+            Ending::Unstable(f) => Some(InstabilityReport { time_s: f.time_s, node: f.node, reason: f.to_string() }),
+            _ => None,
+        },
+    };
+    if let Some(d) = &opts.out_dir {
+        write_summary(d, &summary)?;
+    }
+    let (samples, probes, shapes) = match recorder {
+        Some(r) => (r.rows, r.probes, r.shapes),
+        None => Default::default(),
+    };
+    let outcome = Outcome { summary, samples, probes, shapes, events: timeline.log, solver };
+    match ending {
+        Ending::Unstable(instability) => Err(RunError::Unstable { instability, outcome: Box::new(outcome) }),
+        _ => Ok(outcome),
+    }
+}
+
+/// Write `dir/summary.json` whole or not at all.
+pub fn write_summary(dir: &Path, s: &Summary) -> Result<(), OutputError> {
+    let p = dir.join("summary.json");
+    let text = serde_json::to_string_pretty(s).map_err(std::io::Error::other).map_err(OutputError::at(&p))?;
+    write_atomically(&p, &(text + "\n")).map_err(OutputError::at(&p))
+}
