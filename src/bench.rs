@@ -278,7 +278,7 @@ impl RunTiming {
 pub fn measure_run(n: usize, reps: usize, out_dir: &Path) -> Result<RunTiming, RunError> {
     let sc = scenario::parse(&weight_release_scenario(n), "<bench>")
         .unwrap_or_else(|e| panic!("built-in benchmark scenario rejected: {e}"));
-    let plan = scenario::build(&sc);
+    let plan = scenario::build(&sc).unwrap_or_else(|e| panic!("built-in benchmark scenario rejected: {e:?}"));
     let opts = RunOptions { out_dir: Some(out_dir.to_path_buf()), record: false };
     let (mut run_s, mut steps, mut rows) = (f64::INFINITY, 0, 0);
     for _ in 0..reps.max(1) {

@@ -30,7 +30,7 @@ fn the_readme_scenario_example_is_valid_and_runs() {
     let with_events = format!("{}\n{}", blocks[0], blocks[1]);
     ohl::scenario::parse(&with_events, "README.md (events block)").unwrap_or_else(|e| panic!("{e}"));
     // And the scenario runs (a short piece of it) without instability.
-    let mut plan = ohl::scenario::build(&sc);
+    let mut plan = ohl::scenario::plan(&sc, "README.md").unwrap_or_else(|e| panic!("{e}"));
     plan.stop = ohl::scenario::build::Stop::EndTime(0.5);
     let opts = ohl::run::RunOptions { out_dir: None, record: false };
     ohl::run::run(plan, &opts).unwrap_or_else(|e| panic!("{e}"));

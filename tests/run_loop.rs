@@ -36,7 +36,7 @@ fn a_run_until_settled_applies_a_later_break_and_reports_the_breaks_peaks() {
     // the run must then settle again, and the summary's peaks must be those from the break on.
     let text = format!("{}{SETTLE}[[events]]\ntime_s = 60.0\naction = \"break\"\nat_fraction = 0.5\n", damped_wire(20));
     let dir = std::env::temp_dir().join(format!("ohl_settle_break_{}", std::process::id()));
-    let plan = scenario::build(&common::scenario(&text));
+    let plan = scenario::plan(&common::scenario(&text), "<test>").expect("valid");
     let o = run(plan, &RunOptions { out_dir: Some(dir.clone()), record: true }).expect("stable");
     let s = &o.summary;
     println!(

@@ -24,14 +24,13 @@ pub struct RunArgs {
 /// Run the command; exit 0 on success, 1 if unstable or output failed, 2 on invalid input.
 pub fn main(args: RunArgs) -> ExitCode {
     let RunArgs { scenario: path, out, quiet } = args;
-    let sc = match scenario::load(&path) {
-        Ok(s) => s,
+    let plan = match scenario::load(&path).and_then(|sc| scenario::plan(&sc, &path.display().to_string())) {
+        Ok(p) => p,
         Err(e) => {
             eprintln!("error: {e}");
             return ExitCode::from(2);
         }
     };
-    let plan = scenario::build(&sc);
     let opts = RunOptions { out_dir: Some(out.clone()), record: false };
     let mut progress = Progress::new(plan.stop);
     match run_observed(plan, &opts, &mut [&mut progress]) {

@@ -13,7 +13,6 @@
 //! Initial nodal temperatures: the mean of the adjacent segments (the end nodes take their segment's).
 
 use crate::heat::{HeatBoundary, HeatRod};
-use crate::scenario::events::HeatBoundarySpec;
 use crate::wire::Wire;
 
 /// Heat conduction running along the wire.
@@ -27,13 +26,7 @@ pub struct Conduction {
 
 impl Conduction {
     /// Start from the wire's segment temperatures, holding `nodes` at `hold_k` [K].
-    pub fn start(
-        wire: &Wire,
-        nodes: std::ops::Range<usize>,
-        hold_k: f64,
-        per_s: f64,
-        boundary: HeatBoundarySpec,
-    ) -> Self {
+    pub fn start(wire: &Wire, nodes: std::ops::Range<usize>, hold_k: f64, per_s: f64, boundary: HeatBoundary) -> Self {
         let n = wire.segments();
         let t = &wire.temperature_k;
         let u0: Vec<f64> = (0..=n)
@@ -43,12 +36,7 @@ impl Conduction {
                 i => 0.5 * (t[i - 1] + t[i]),
             })
             .collect();
-        let b = match boundary {
-            HeatBoundarySpec::LagrangeQuadratic => HeatBoundary::LagrangeQuadratic,
-            HeatBoundarySpec::Linear => HeatBoundary::Linear,
-            HeatBoundarySpec::ZeroFlux => HeatBoundary::ZeroFlux,
-        };
-        let mut rod = HeatRod::new(u0, b);
+        let mut rod = HeatRod::new(u0, boundary);
         if nodes.start < nodes.end {
             rod.hold(nodes, hold_k);
         }

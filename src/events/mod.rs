@@ -18,35 +18,29 @@
 //! - `ground`: contact with the `[ground]` plane on or off (section 4.4).
 
 pub mod conduction;
+pub mod event;
 pub mod gust;
 pub mod ramp;
 
 use crate::scenario::Plan;
-use crate::scenario::events::{EventSpec, GateSpec, GroundSpec, break_segment, node_range, segment_range};
-use crate::scheme::{Explicit, Ground, WindGate};
+use crate::scheme::{Explicit, Ground};
 
 pub use conduction::Conduction;
+pub use event::{Action, Event};
 pub use gust::Gust;
 pub use ramp::Ramp;
 
 /// The timeline and the processes running.
 #[derive(Clone, Debug)]
 pub struct EventState {
-    events: Vec<EventSpec>,
+    events: Vec<Event>,
     next: usize,
-    ground: Option<GroundSpec>,
+    ground: Option<Ground>,
     gust: Option<Gust>,
     ramps: Vec<Ramp>,
     conduction: Option<Conduction>,
     /// events applied so far: (time [s], description)
     pub log: Vec<(f64, String)>,
-}
-
-fn gate(g: GateSpec) -> WindGate {
-    match g {
-        GateSpec::Always => WindGate::Always,
-        GateSpec::Downwind => WindGate::Downwind,
-    }
 }
 
 impl EventState {
@@ -55,7 +49,7 @@ impl EventState {
         EventState {
             events: plan.events.clone(),
             next: 0,
-            ground: plan.ground.clone(),
+            ground: plan.ground,
             gust: None,
             ramps: Vec::new(),
             conduction: None,
@@ -65,51 +59,47 @@ impl EventState {
 
     /// Time of the next event not yet applied [s].
     pub fn next_time(&self) -> Option<f64> {
-        self.events.get(self.next).map(|e| e.time_s())
+        self.events.get(self.next).map(|e| e.time_s)
     }
 
     /// Apply every event due at or before `t + tol` [s]; returns how many were applied.
     pub fn apply_due(&mut self, solver: &mut Explicit, t: f64, tol: f64) -> usize {
         let mut count = 0;
         while let Some(e) = self.events.get(self.next).cloned() {
-            if e.time_s() > t + tol {
+            if e.time_s > t + tol {
                 break;
             }
             self.next += 1;
             count += 1;
-            let text = self.apply(solver, &e, t);
+            let text = self.apply(solver, &e.action, e.time_s, t);
             self.log.push((t, text));
         }
         count
     }
 
-    fn apply(&mut self, solver: &mut Explicit, e: &EventSpec, t: f64) -> String {
-        let n = solver.wire.segments();
-        match *e {
-            EventSpec::Break { at_fraction, .. } => {
-                let j = break_segment(at_fraction, n);
+    fn apply(&mut self, solver: &mut Explicit, a: &Action, at_s: f64, t: f64) -> String {
+        match a.clone() {
+            Action::Break { segment: j } => {
                 solver.wire.break_segment(j);
                 format!("break of segment {j} (between nodes {j} and {})", j + 1)
             }
-            EventSpec::Ice { linear_density_kg_per_m, range, .. } => {
-                let r = segment_range(range, n);
-                let text = format!("linear density {linear_density_kg_per_m:+} kg/m on segments {r:?}");
-                solver.wire.add_linear_density(r, linear_density_kg_per_m);
+            Action::Ice { segments: r, delta_kg_per_m } => {
+                let text = format!("linear density {delta_kg_per_m:+} kg/m on segments {r:?}");
+                solver.wire.add_linear_density(r, delta_kg_per_m);
                 text
             }
-            EventSpec::Wind { scale, gate: g, .. } => {
+            Action::Wind { scale, gate } => {
                 self.gust = None;
                 solver.loads.wind_scale = scale;
-                solver.loads.wind_gate = gate(g);
-                format!("wind multiplier {scale}, gate {g:?}")
+                solver.loads.wind_gate = gate;
+                format!("wind multiplier {scale}, gate {gate:?}")
             }
-            EventSpec::Gust { period_s, amplitude, gate: g, time_s } => {
-                self.gust = Some(Gust { start_s: time_s, period_s, amplitude });
-                solver.loads.wind_gate = gate(g);
-                format!("gust (4.5): period {period_s} s, amplitude {amplitude}, gate {g:?}")
+            Action::Gust { period_s, amplitude, gate } => {
+                self.gust = Some(Gust { start_s: at_s, period_s, amplitude });
+                solver.loads.wind_gate = gate;
+                format!("gust (4.5): period {period_s} s, amplitude {amplitude}, gate {gate:?}")
             }
-            EventSpec::Temperature { temperature_k, range, ramp_s, .. } => {
-                let r = segment_range(range, n);
+            Action::Temperature { segments: r, temperature_k, ramp_s } => {
                 let text = format!("temperature {temperature_k} K on segments {r:?} (ramp {ramp_s} s)");
                 self.conduction = None;
                 self.ramps.retain(|p| p.first + p.from_k.len() <= r.start || p.first >= r.end);
@@ -127,8 +117,7 @@ impl EventState {
                 }
                 text
             }
-            EventSpec::HeatConduction { hold_range, hold_temperature_k, heat_time_per_s, boundary, .. } => {
-                let nodes = node_range(hold_range, n);
+            Action::HeatConduction { hold_nodes: nodes, hold_temperature_k, heat_time_per_s, boundary } => {
                 let text = format!(
                     "heat conduction (5.2), nodes {nodes:?} held at {hold_temperature_k} K, \
                      {heat_time_per_s} units of dimensionless heat time per second, boundary {boundary:?}"
@@ -138,16 +127,12 @@ impl EventState {
                     Some(Conduction::start(&solver.wire, nodes, hold_temperature_k, heat_time_per_s, boundary));
                 text
             }
-            EventSpec::HeatConductionOff { .. } => {
+            Action::HeatConductionOff => {
                 self.conduction = None;
                 "heat conduction off".into()
             }
-            EventSpec::Ground { on, .. } => {
-                solver.ground = if on {
-                    self.ground.as_ref().map(|g| Ground { height_m: g.height_m, restitution: g.restitution })
-                } else {
-                    None
-                };
+            Action::Ground { on } => {
+                solver.ground = if on { self.ground } else { None };
                 format!("ground contact {}", if on { "on" } else { "off" })
             }
         }

@@ -100,7 +100,7 @@ pub fn run_case(path: &Path, out_dir: Option<&Path>) -> Result<CaseReport, Paper
     }
     let sc = scenario::parse(&text, &file)?;
     let Some(spec) = sc.paper.clone() else { return Err(PaperError::NotACase(file)) };
-    let plan = scenario::build(&sc);
+    let plan = scenario::plan(&sc, &file)?;
     let opts = RunOptions { out_dir: None, record: true };
     let o = run(plan.clone(), &opts).map_err(|e| PaperError::Run { file: file.clone(), source: Box::new(e) })?;
     let cols = extract::Series::of(&o);

@@ -1,9 +1,11 @@
 //! From a validated scenario to a ready solver: derived quantities (`EA`, wave speed, time step), the
 //! initial shape with equally spaced nodes, the loads and the run plan.
 
-use super::events::{EventSpec, GroundSpec};
+use super::events::{EventSpec, GateSpec, HeatBoundarySpec, break_segment, node_range, segment_range};
 use super::schema::{Scenario, ShapeSpec, TensionLawSpec, WindLawSpec};
-use crate::scheme::courant;
+use super::validate::Problem;
+use crate::events::{Action, Event};
+use crate::heat::HeatBoundary;
 use crate::scheme::{Explicit, Ground, Loads, StepParams, WindGate, WindLoad};
 use crate::wire::aero::{Aerodynamic, UniformNormal};
 use crate::wire::tension::LawKind;
@@ -61,9 +63,9 @@ pub struct Plan {
     /// speed of the dimensionless time `tau = t U / l` [m/s]
     pub tau_speed_m_per_s: f64,
     /// the event timeline, sorted by time (stable: events at the same time keep the file's order)
-    pub events: Vec<EventSpec>,
+    pub events: Vec<Event>,
     /// the ground plane, if the scenario has one (on the solver from the start if it is active)
-    pub ground: Option<GroundSpec>,
+    pub ground: Option<Ground>,
     /// named probes besides mid-span: (name, fraction of the unstretched length [-])
     pub probes: Vec<(String, f64)>,
     /// the run's peaks count from this time [s]; default the first event's time (0 without events)
@@ -144,19 +146,65 @@ fn initial_nodes(s: &Scenario) -> ([Vec<f64>; 3], f64) {
     }
 }
 
-/// Build the solver and run plan of a validated scenario.
-///
-/// Panics only if the scenario was not validated first (internal misuse).
-pub fn build(s: &Scenario) -> Plan {
+fn gate(g: GateSpec) -> WindGate {
+    match g {
+        GateSpec::Always => WindGate::Always,
+        GateSpec::Downwind => WindGate::Downwind,
+    }
+}
+
+/// The event of an `[[events]]` table on an `n`-segment wire: span fractions resolved to indices.
+fn event(e: &EventSpec, n: usize) -> Event {
+    let action = match *e {
+        EventSpec::Break { at_fraction, .. } => Action::Break { segment: break_segment(at_fraction, n) },
+        EventSpec::Ice { linear_density_kg_per_m, range, .. } => {
+            Action::Ice { segments: segment_range(range, n), delta_kg_per_m: linear_density_kg_per_m }
+        }
+        EventSpec::Wind { scale, gate: g, .. } => Action::Wind { scale, gate: gate(g) },
+        EventSpec::Gust { period_s, amplitude, gate: g, .. } => Action::Gust { period_s, amplitude, gate: gate(g) },
+        EventSpec::Temperature { temperature_k, range, ramp_s, .. } => {
+            Action::Temperature { segments: segment_range(range, n), temperature_k, ramp_s }
+        }
+        EventSpec::HeatConduction { hold_range, hold_temperature_k, heat_time_per_s, boundary, .. } => {
+            Action::HeatConduction {
+                hold_nodes: node_range(hold_range, n),
+                hold_temperature_k,
+                heat_time_per_s,
+                boundary: match boundary {
+                    HeatBoundarySpec::LagrangeQuadratic => HeatBoundary::LagrangeQuadratic,
+                    HeatBoundarySpec::Linear => HeatBoundary::Linear,
+                    HeatBoundarySpec::ZeroFlux => HeatBoundary::ZeroFlux,
+                },
+            }
+        }
+        EventSpec::HeatConductionOff { .. } => Action::HeatConductionOff,
+        EventSpec::Ground { on, .. } => Action::Ground { on },
+    };
+    Event { time_s: e.time_s(), action }
+}
+
+/// The one conversion of a scenario into a solver and its run plan: every field is checked
+/// ([`super::validate`]) and, if all are valid, the model is built from the quantities the checks derived
+/// (`EA`, chord, length, wave speed, time step). Errors list every problem found.
+pub fn build(s: &Scenario) -> Result<Plan, Vec<Problem>> {
+    let (problems, d) = super::validate::check(s);
+    if !problems.is_empty() {
+        return Err(problems);
+    }
+    let missing = |what: &str| Problem {
+        field: what.into(),
+        value: "(not derived)".into(),
+        allowed: "internal error: validation passed without deriving it; please report".into(),
+    };
+    let ea = d.ea_n.ok_or_else(|| vec![missing("conductor.axial_stiffness_n")])?;
+    let chord_m = d.chord_m.ok_or_else(|| vec![missing("geometry.right_support_m")])?;
+    let length = d.length_m.ok_or_else(|| vec![missing("geometry.unstretched_length_m")])?;
+    let c = d.wave_speed_m_per_s.ok_or_else(|| vec![missing("conductor.linear_density_kg_per_m")])?;
+    let dt = d.dt_s.ok_or_else(|| vec![missing("numerics.courant")])?;
     let cd = &s.conductor;
-    let ea = cd.axial_stiffness_n.unwrap_or_else(|| {
-        let (e, d) = (cd.youngs_modulus_pa.expect("validated"), cd.diameter_m.expect("validated"));
-        e * std::f64::consts::PI * d * d / 4.0
-    });
     let rho = cd.linear_density_kg_per_m;
     let n = s.geometry.segments;
-    let (x, shape_length) = initial_nodes(s);
-    let length = s.geometry.unstretched_length_m.unwrap_or(shape_length);
+    let (x, _) = initial_nodes(s);
     let ds = length / n as f64;
     let law = match cd.tension_law {
         TensionLawSpec::TensionOnly => LawKind::TensionOnly,
@@ -168,8 +216,6 @@ pub fn build(s: &Scenario) -> Plan {
     wire.reference_temperature_k = cd.reference_temperature_k;
     wire.temperature_k.fill(cd.reference_temperature_k);
 
-    let c = courant::wave_speed(ea, rho);
-    let dt = courant::time_step(s.numerics.courant, ds, c);
     let wind = s.loads.wind.as_ref().map(|w| {
         let norm: f64 = w.direction.iter().map(|v| v * v).sum::<f64>().sqrt();
         let direction = w.direction.map(|v| v / norm);
@@ -177,11 +223,11 @@ pub fn build(s: &Scenario) -> Plan {
         match w.law {
             WindLawSpec::UniformNormal => WindLoad::UniformNormal(UniformNormal {
                 direction,
-                pressure_n_per_m: w.pressure_n_per_m.expect("validated"),
+                pressure_n_per_m: w.pressure_n_per_m.unwrap_or(0.0),
                 mu_over_u,
             }),
             WindLawSpec::Aerodynamic => {
-                let qd = 0.5 * w.air_density_kg_per_m3 * w.speed_m_per_s.powi(2) * cd.diameter_m.expect("validated");
+                let qd = 0.5 * w.air_density_kg_per_m3 * w.speed_m_per_s.powi(2) * cd.diameter_m.unwrap_or(0.0);
                 WindLoad::Aerodynamic(Aerodynamic {
                     direction,
                     qd_cn: qd * w.normal_coefficient,
@@ -209,23 +255,23 @@ pub fn build(s: &Scenario) -> Plan {
         (None, Some(st)) => {
             Stop::Settled { fraction: st.kinetic_energy_fraction, window_s: st.window_s, max_time_s: st.max_time_s }
         }
-        (None, None) => unreachable!("validated"),
+        (None, None) => return Err(vec![missing("duration")]),
     };
     let mut snaps = s.output.snapshot_times_s.clone();
     snaps.sort_by(f64::total_cmp);
     snaps.dedup();
     let (a, b) = (s.geometry.left_support_m, s.geometry.right_support_m);
-    let mut events = s.events.clone();
-    events.sort_by(|p, q| p.time_s().total_cmp(&q.time_s()));
+    let mut events: Vec<Event> = s.events.iter().map(|e| event(e, n)).collect();
+    events.sort_by(|p, q| p.time_s.total_cmp(&q.time_s));
     let mut solver = Explicit::new(wire, loads, params);
     solver.ground =
         s.ground.as_ref().filter(|g| g.active).map(|g| Ground { height_m: g.height_m, restitution: g.restitution });
-    Plan {
+    Ok(Plan {
         name: s.name.clone().unwrap_or_else(|| "scenario".into()),
         solver,
         left_support_m: a,
         right_support_m: b,
-        chord_m: (0..3).map(|k| (b[k] - a[k]).powi(2)).sum::<f64>().sqrt(),
+        chord_m,
         wave_speed_m_per_s: c,
         courant: s.numerics.courant,
         stop,
@@ -233,10 +279,10 @@ pub fn build(s: &Scenario) -> Plan {
         snapshot_times_s: snaps,
         tau_speed_m_per_s: s.output.tau_speed_m_per_s,
         events,
-        ground: s.ground.clone(),
+        ground: s.ground.as_ref().map(|g| Ground { height_m: g.height_m, restitution: g.restitution }),
         probes: s.output.probes.iter().map(|p| (p.name.clone(), p.at_fraction)).collect(),
         peaks_from_s: s.output.peaks_from_s,
-    }
+    })
 }
 
 #[cfg(test)]

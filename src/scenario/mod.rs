@@ -72,6 +72,11 @@ pub(crate) fn parse_error(file: &str, e: toml::de::Error) -> InputError {
     InputError::Parse { file: file.to_string(), message: e.to_string() }
 }
 
+/// Build a parsed scenario into its plan ([`build::build`]), naming `file` in the error.
+pub fn plan(s: &Scenario, file: &str) -> Result<Plan, InputError> {
+    build(s).map_err(|problems| InputError::Invalid { file: file.to_string(), problems })
+}
+
 /// Read, parse and validate a scenario file.
 pub fn load(path: &Path) -> Result<Scenario, InputError> {
     let file = path.display().to_string();

@@ -90,7 +90,29 @@ pub const MAX_SEGMENTS: usize = 10_000_000;
 
 /// All problems of a scenario; empty when it is valid.
 pub fn validate(s: &Scenario) -> Vec<Problem> {
+    check(s).0
+}
+
+/// The quantities validation derives on the way, each `None` where its inputs were invalid. The builder
+/// uses these and derives none of them again.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct Derived {
+    /// axial stiffness `EA` [N]
+    pub ea_n: Option<f64>,
+    /// chord length `|B - A|` [m]
+    pub chord_m: Option<f64>,
+    /// unstretched length `S` [m]
+    pub length_m: Option<f64>,
+    /// wave speed `c` [m/s]
+    pub wave_speed_m_per_s: Option<f64>,
+    /// nominal time step (3.7) [s]
+    pub dt_s: Option<f64>,
+}
+
+/// Every problem of a scenario, and what was derived from its valid parts.
+pub(crate) fn check(s: &Scenario) -> (Vec<Problem>, Derived) {
     let mut c = Check(Vec::new());
+    let mut derived = Derived::default();
 
     // Conductor.
     let cd = &s.conductor;
@@ -231,12 +253,16 @@ pub fn validate(s: &Scenario) -> Vec<Problem> {
     }
     // Stability limits need EA, rho0, the segment length: check them only when those are valid.
     let length = g.unstretched_length_m.or(shape_length);
+    derived.ea_n = ea;
+    derived.chord_m = chord;
+    derived.length_m = length.filter(|l| l.is_finite() && *l > 0.0);
     if let (Some(ea), true, true, Some(len)) = (ea, rho_ok, n_ok, length)
         && len.is_finite()
         && len > 0.0
     {
         let cw = courant::wave_speed(ea, cd.linear_density_kg_per_m);
         let ds = len / g.segments as f64;
+        derived.wave_speed_m_per_s = Some(cw);
         if courant_ok && eta_ok {
             let z = courant::friction_number(ea, nm.eta_n_s, cw, ds);
             let limit = courant::stable_courant(z);
@@ -252,6 +278,7 @@ pub fn validate(s: &Scenario) -> Vec<Problem> {
                 );
             }
             let dt = courant::time_step(nm.courant, ds, cw);
+            derived.dt_s = Some(dt);
             if zeta_ok && nm.mass_damping_per_s * dt >= 1.0 {
                 c.fail(
                     "numerics.mass_damping_per_s",
@@ -319,7 +346,7 @@ pub fn validate(s: &Scenario) -> Vec<Problem> {
     }
     check_ground_and_events(&mut c, s, end);
     check_paper(&mut c, s, end);
-    c.0
+    (c.0, derived)
 }
 
 fn range_ok(c: &mut Check, field: &str, r: [f64; 2]) -> bool {

@@ -21,7 +21,7 @@ pub fn scenario(text: &str) -> ohl::scenario::Scenario {
 
 /// Run a scenario in memory (no files), recording the time series.
 pub fn run_in_memory(text: &str) -> Outcome {
-    let plan = scenario::build(&scenario(text));
+    let plan = scenario::plan(&scenario(text), "<test>").unwrap_or_else(|e| panic!("{e}"));
     run(plan, &RunOptions { out_dir: None, record: true }).unwrap_or_else(|e| panic!("run failed: {e}"))
 }
 
