@@ -9,8 +9,9 @@
 //! or after each multiple of the sample interval and record the actual time. The mid-span peaks are
 //! tracked every step.
 
-use std::io::IsTerminal;
+use std::fmt;
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
 use std::time::Instant;
 
 use crate::events::EventState;
@@ -20,16 +21,30 @@ use crate::scenario::Plan;
 use crate::scenario::build::Stop;
 use crate::scheme::{Explicit, Instability};
 
+/// A progress hook: called at every time-series sample with the simulated time `t` [s] and the run's
+/// horizon [s] (its end time, or the longest it may run when it stops on settling).
+pub type Progress = Arc<dyn Fn(f64, f64) + Send + Sync>;
+
 /// How to run.
-#[derive(Clone, Debug, Default)]
+#[derive(Clone, Default)]
 pub struct RunOptions {
     /// directory for `timeseries.csv`, `snapshots.csv` and `summary.json` (none: nothing is written)
     pub out_dir: Option<PathBuf>,
-    /// show a progress bar (only drawn when stderr is a terminal)
-    pub progress: bool,
+    /// called as the run advances (the applications draw a progress bar with it); none: silent
+    pub progress: Option<Progress>,
     /// keep the time series in memory in [`Outcome::samples`] (with [`Outcome::probes`]) and the shapes
     /// at the snapshot times in [`Outcome::shapes`]
     pub record: bool,
+}
+
+impl fmt::Debug for RunOptions {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_struct("RunOptions")
+            .field("out_dir", &self.out_dir)
+            .field("progress", &self.progress.as_ref().map(|_| "hook"))
+            .field("record", &self.record)
+            .finish()
+    }
 }
 
 /// Quantities recorded beside each time-series sample (in memory only, with [`RunOptions::record`]).
@@ -162,15 +177,6 @@ pub fn run(plan: Plan, opts: &RunOptions) -> Result<Outcome, RunError> {
     // Landing tolerance: a target closer than this is taken as reached.
     let tol = 1.0e-9 * dt;
 
-    let bar = (opts.progress && std::io::stderr().is_terminal()).then(|| {
-        let b = indicatif::ProgressBar::new(1000);
-        b.set_style(
-            indicatif::ProgressStyle::with_template("{bar:40} {percent:>3}% t = {msg} s, eta {eta}")
-                .expect("static template"),
-        );
-        b
-    });
-
     let mut samples = Vec::new();
     let mut probes = Vec::new();
     let mut shapes = Vec::new();
@@ -239,9 +245,8 @@ pub fn run(plan: Plan, opts: &RunOptions) -> Result<Outcome, RunError> {
                     below_since = None;
                 }
             }
-            if let Some(b) = &bar {
-                b.set_position((1000.0 * t / horizon) as u64);
-                b.set_message(format!("{t:.3}"));
+            if let Some(p) = &opts.progress {
+                p(t, horizon);
             }
         }
         while snap_idx < plan.snapshot_times_s.len() && plan.snapshot_times_s[snap_idx] <= t + tol {
@@ -276,9 +281,6 @@ pub fn run(plan: Plan, opts: &RunOptions) -> Result<Outcome, RunError> {
         events.after_step(&mut solver, step);
     }
     let wall = started.elapsed().as_secs_f64();
-    if let Some(b) = bar {
-        b.finish_and_clear();
-    }
 
     let t = solver.time_s;
     let status = match (&failure, plan.stop, settled) {

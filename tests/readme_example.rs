@@ -32,6 +32,6 @@ fn the_readme_scenario_example_is_valid_and_runs() {
     // And the scenario runs (a short piece of it) without instability.
     let mut plan = ohl::scenario::build(&sc);
     plan.stop = ohl::scenario::build::Stop::EndTime(0.5);
-    let opts = ohl::run::RunOptions { out_dir: None, progress: false, record: false };
+    let opts = ohl::run::RunOptions { out_dir: None, record: false, ..Default::default() };
     ohl::run::run(plan, &opts).unwrap_or_else(|e| panic!("{e}"));
 }

@@ -1,8 +1,7 @@
 //! Output files of a run: `timeseries.csv` ([`timeseries`]), `snapshots.csv` ([`snapshots`]) and
-//! `summary.json` ([`summary`]), and the comparison plots of [`plot`]. Writers flush as they go, so a run stopped by an instability leaves
+//! `summary.json` ([`summary`]). Writers flush as they go, so a run stopped by an instability leaves
 //! readable files behind.
 
-pub mod plot;
 pub mod snapshots;
 pub mod summary;
 pub mod timeseries;

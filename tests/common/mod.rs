@@ -22,7 +22,7 @@ pub fn scenario(text: &str) -> ohl::scenario::Scenario {
 /// Run a scenario in memory (no files), recording the time series.
 pub fn run_in_memory(text: &str) -> Outcome {
     let plan = scenario::build(&scenario(text));
-    run(plan, &RunOptions { out_dir: None, progress: false, record: true })
+    run(plan, &RunOptions { out_dir: None, record: true, ..Default::default() })
         .unwrap_or_else(|e| panic!("run failed: {e}"))
 }
 

@@ -5,6 +5,8 @@ use std::process::ExitCode;
 
 use ohl::run::{RunError, RunOptions, run};
 use ohl::scenario;
+use ohl_app::paper::heat_spec;
+use ohl_app::progress::Bar;
 
 /// Arguments of `ohl run`.
 #[derive(clap::Args)]
@@ -22,6 +24,10 @@ pub struct RunArgs {
 /// Run the command; exit 0 on success, 1 if unstable or output failed, 2 on invalid input.
 pub fn main(args: RunArgs) -> ExitCode {
     let RunArgs { scenario: path, out, quiet } = args;
+    if let Some(message) = heat_case_refusal(&path) {
+        eprintln!("error: {}: {message}", path.display());
+        return ExitCode::from(2);
+    }
     let sc = match scenario::load(&path) {
         Ok(s) => s,
         Err(e) => {
@@ -30,8 +36,13 @@ pub fn main(args: RunArgs) -> ExitCode {
         }
     };
     let plan = scenario::build(&sc);
-    let opts = RunOptions { out_dir: Some(out.clone()), progress: true, record: false };
-    match run(plan, &opts) {
+    let bar = Bar::for_plan(&plan);
+    let opts = RunOptions { out_dir: Some(out.clone()), progress: bar.as_ref().map(Bar::hook), record: false };
+    let result = run(plan, &opts);
+    if let Some(b) = bar {
+        b.finish();
+    }
+    match result {
         Ok(o) => {
             if !quiet {
                 let s = &o.summary;
@@ -58,4 +69,14 @@ pub fn main(args: RunArgs) -> ExitCode {
             ExitCode::from(1)
         }
     }
+}
+
+/// A heat-conduction case (a file with a `[rod]` section) is not a wire scenario: the message points to
+/// `ohl paper`. None for anything else (including a file that cannot be read: `scenario::load` says so).
+fn heat_case_refusal(path: &std::path::Path) -> Option<String> {
+    let text = std::fs::read_to_string(path).ok()?;
+    heat_spec::is_heat_case(&text).then(|| {
+        let stem = path.file_stem().and_then(|s| s.to_str()).unwrap_or("CASE");
+        format!("a heat-conduction case (it has a [rod] section), not a wire scenario: run it with `ohl paper {stem}`")
+    })
 }
