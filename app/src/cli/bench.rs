@@ -34,7 +34,7 @@ pub struct BenchArgs {
     #[arg(long)]
     no_run: bool,
     /// only run `STEPS` steps of `CONFIG` at `N` segments and exit (the fixed workload of
-    /// `benches/instructions.sh`), e.g. `wind_3d:1000:2000`
+    /// `app/benches/instructions.sh`), e.g. `wind_3d:1000:2000`
     #[arg(long, value_name = "CONFIG:N:STEPS")]
     fixed: Option<String>,
 }
