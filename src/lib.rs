@@ -11,13 +11,14 @@
 //! - [`scenario`]: scenario files, their validation and their translation into a solver;
 //! - [`output`]: the files a run writes; [`run`] drives a run;
 //! - [`exact`]: exact static solutions the scheme is verified against.
+//!
+//! The library holds the model only: the command line `ohl`, the paper cases, the plots, the benchmark
+//! and the progress bar are the applications of the `ohl-app` crate (`app/`).
 
-pub mod bench;
 pub mod events;
 pub mod exact;
 pub mod heat;
 pub mod output;
-pub mod paper;
 pub mod run;
 pub mod scenario;
 pub mod scheme;

@@ -7,7 +7,7 @@ use common::*;
 
 const WIRE: &str = r#"
     [conductor]
-    axial_stiffness_n = 791900.54
+    axial_stiffness_n = 792000.54
     linear_density_kg_per_m = 1.0
     [geometry]
     left_support_m = [0.0, 0.0, 0.0]

@@ -8,12 +8,10 @@
 //! - [`summary`]: `summary.json`, written whole at the end;
 //!
 //! with their building blocks: [`clock`] (when an output acts, without moving the clock), [`probe`]
-//! (Lagrangian points) and [`rows`] (CSV files that only ever hold whole rows). The comparison plots
-//! are [`plot`].
+//! (Lagrangian points) and [`rows`] (CSV files that only ever hold whole rows).
 
 pub mod clock;
 pub mod peaks;
-pub mod plot;
 pub mod probe;
 pub mod recorder;
 pub mod rows;

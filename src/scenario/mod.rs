@@ -4,8 +4,6 @@
 
 pub mod build;
 pub mod events;
-pub mod heat_case;
-pub mod paper;
 pub mod schema;
 pub mod validate;
 
@@ -68,7 +66,7 @@ pub fn parse(text: &str, file: &str) -> Result<Scenario, InputError> {
 }
 
 /// The error of a TOML file that does not parse (the message has line and column).
-pub(crate) fn parse_error(file: &str, e: toml::de::Error) -> InputError {
+pub fn parse_error(file: &str, e: toml::de::Error) -> InputError {
     InputError::Parse { file: file.to_string(), message: e.to_string() }
 }
 
@@ -81,14 +79,5 @@ pub fn plan(s: &Scenario, file: &str) -> Result<Plan, InputError> {
 pub fn load(path: &Path) -> Result<Scenario, InputError> {
     let file = path.display().to_string();
     let text = std::fs::read_to_string(path).map_err(|source| InputError::Io { file: file.clone(), source })?;
-    if heat_case::is_heat_case(&text) {
-        let stem = path.file_stem().and_then(|s| s.to_str()).unwrap_or("CASE");
-        return Err(InputError::Parse {
-            file,
-            message: format!(
-                "a heat-conduction case (it has a [rod] section), not a wire scenario: run it with `ohl paper {stem}`"
-            ),
-        });
-    }
     parse(&text, &file)
 }

@@ -6,7 +6,6 @@
 use serde::Deserialize;
 
 pub use super::events::{EventSpec, GateSpec, GroundSpec, HeatBoundarySpec};
-pub use super::paper::PaperSpec;
 
 /// A complete scenario.
 #[derive(Clone, Debug, Deserialize)]
@@ -42,9 +41,10 @@ pub struct Scenario {
     /// the event timeline (breaks, ice, wind and gusts, temperature, heat conduction, ground contact)
     #[serde(default)]
     pub events: Vec<EventSpec>,
-    /// the paper values a case of `paper_cases/` checks (ignored by `ohl run`)
+    /// the `[paper]` table of a case of `paper_cases/`: checks read by the paper tool (`ohl paper`, in the
+    /// `ohl-app` crate); ignored by the library, which does not know its schema
     #[serde(default)]
-    pub paper: Option<PaperSpec>,
+    pub paper: Option<toml::Value>,
 }
 
 /// Constitutive law selector.

@@ -4,7 +4,6 @@
 use std::fmt;
 
 use super::events::EventSpec;
-use super::paper::{CompareSpec, ExtractKind};
 use super::schema::{Scenario, ShapeSpec, WindLawSpec};
 use crate::scheme::courant;
 
@@ -25,15 +24,17 @@ impl fmt::Display for Problem {
     }
 }
 
-/// Collects problems.
-pub(crate) struct Check(pub(crate) Vec<Problem>);
+/// Collects problems (also used by the validators of the files the applications read).
+#[derive(Debug, Default)]
+pub struct Check(pub Vec<Problem>);
 
 impl Check {
-    pub(crate) fn fail(&mut self, field: &str, value: impl fmt::Display, allowed: &str) {
+    /// Record that `field` = `value` is not allowed, with what is.
+    pub fn fail(&mut self, field: &str, value: impl fmt::Display, allowed: &str) {
         self.0.push(Problem { field: field.into(), value: value.to_string(), allowed: allowed.into() });
     }
     /// `x` finite and `> 0`.
-    pub(crate) fn positive(&mut self, field: &str, x: f64) -> bool {
+    pub fn positive(&mut self, field: &str, x: f64) -> bool {
         let ok = x.is_finite() && x > 0.0;
         if !ok {
             self.fail(field, x, "must be a finite number > 0");
@@ -41,7 +42,7 @@ impl Check {
         ok
     }
     /// `x` finite and `>= 0`.
-    pub(crate) fn non_negative(&mut self, field: &str, x: f64) -> bool {
+    pub fn non_negative(&mut self, field: &str, x: f64) -> bool {
         let ok = x.is_finite() && x >= 0.0;
         if !ok {
             self.fail(field, x, "must be a finite number >= 0");
@@ -49,32 +50,12 @@ impl Check {
         ok
     }
     /// `lo <= x <= hi`.
-    pub(crate) fn within(&mut self, field: &str, x: f64, lo: f64, hi: f64, allowed: &str) -> bool {
+    pub fn within(&mut self, field: &str, x: f64, lo: f64, hi: f64, allowed: &str) -> bool {
         let ok = x.is_finite() && x >= lo && x <= hi;
         if !ok {
             self.fail(field, x, allowed);
         }
         ok
-    }
-    /// The fields every `[[paper.checks]]` row has, wire or heat case: a finite paper value, a paper value
-    /// or a reference for a `"match"` row, a tolerance in (0, 10]. `f` makes the field's path.
-    pub(crate) fn check_row(
-        &mut self,
-        f: &dyn Fn(&str) -> String,
-        paper: Option<f64>,
-        has_reference: bool,
-        compare: CompareSpec,
-        tolerance: f64,
-    ) {
-        if let Some(v) = paper
-            && !v.is_finite()
-        {
-            self.fail(&f("paper"), v, "must be a finite number");
-        }
-        if paper.is_none() && !has_reference && compare == CompareSpec::Match {
-            self.fail(&f("paper"), "(missing)", "a \"match\" check needs a paper value or a reference");
-        }
-        self.within(&f("tolerance"), tolerance, f64::MIN_POSITIVE, 10.0, "must be a relative tolerance in (0, 10]");
     }
     fn finite3(&mut self, field: &str, v: [f64; 3]) -> bool {
         let ok = v.iter().all(|c| c.is_finite());
@@ -345,7 +326,6 @@ pub(crate) fn check(s: &Scenario) -> (Vec<Problem>, Derived) {
         c.within("output.peaks_from_s", t, 0.0, end.unwrap_or(f64::INFINITY), "must be in [0, end time] [s]");
     }
     check_ground_and_events(&mut c, s, end);
-    check_paper(&mut c, s, end);
     (c.0, derived)
 }
 
@@ -458,42 +438,6 @@ fn check_ground_and_events(c: &mut Check, s: &Scenario, end: Option<f64>) {
                     c.fail(&f("action"), "\"ground\"", "needs a [ground] section (height_m, restitution)");
                 }
             }
-        }
-    }
-}
-
-/// `[paper]`: tolerances, extractors and windows.
-fn check_paper(c: &mut Check, s: &Scenario, end: Option<f64>) {
-    let Some(p) = &s.paper else { return };
-    c.positive("paper.length_scale_m", p.length_scale_m);
-    let hi = end.unwrap_or(f64::INFINITY);
-    for (k, ch) in p.checks.iter().enumerate() {
-        let f = |name: &str| format!("paper.checks[{k}].{name}");
-        c.check_row(&f, ch.paper, ch.reference.is_some(), ch.compare, ch.tolerance);
-        let x = &ch.extract;
-        let needs_component = matches!(
-            x.kind,
-            ExtractKind::Midspan
-                | ExtractKind::MidspanPeak
-                | ExtractKind::MidspanPeakTime
-                | ExtractKind::MidspanFirstExtreme
-                | ExtractKind::MidspanFirstExtremeTime
-                | ExtractKind::MidspanAmplitude
-        );
-        if needs_component && x.component.is_none() {
-            c.fail(
-                &f("extract.component"),
-                "(missing)",
-                "required for the midspan extractors: \"x1\", \"x2\" or \"x3\"",
-            );
-        }
-        if let Some(t) = x.at_s {
-            c.within(&f("extract.at_s"), t, 0.0, hi, "must be in [0, end time]");
-        }
-        if let Some(w) = x.window_s
-            && !(w[0].is_finite() && w[1].is_finite() && 0.0 <= w[0] && w[0] < w[1] && w[1] <= hi)
-        {
-            c.fail(&f("extract.window_s"), format!("{w:?}"), "must be [t0, t1] with 0 <= t0 < t1 <= end time");
         }
     }
 }

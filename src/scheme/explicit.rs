@@ -693,7 +693,7 @@ impl Explicit {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::bench::Config;
+    use crate::scheme::configs::Config;
 
     /// The step as first written (three unfused passes: kick, smoothing, drift), kept as the reference
     /// that the fused kernel must reproduce bit for bit.

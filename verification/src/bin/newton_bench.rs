@@ -47,7 +47,7 @@ fn main() {
         std::fs::create_dir_all(&out)?;
         let mut f = std::fs::File::create(&path)?;
         writeln!(f, "n,iterations,final_residual_n,wall_s,cpu")?;
-        let cpu = ohl::bench::machine().cpu;
+        let cpu = ohl_app::bench::machine().cpu;
         for (n, it, res, wall) in &rows {
             writeln!(f, "{n},{it},{res:.3e},{wall:.4e},\"{cpu}\"")?;
         }

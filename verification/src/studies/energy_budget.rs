@@ -17,10 +17,10 @@
 
 use crate::report::{Budget, StudyReport, Table, sci};
 use crate::setup::{G_M_PER_S2, SPAN_M, aerodynamic_wind, loads, params, straight_wire};
-use ohl::output::plot::{Chart, Series, Style, render};
 use ohl::scheme::{Explicit, WindLoad};
 use ohl::wire::aero::{Aerodynamic, SegmentLoad};
 use ohl::wire::tension::{LawKind, TensionLaw, TensionOnly};
+use ohl_app::plot::{Chart, Series, Style, render};
 use std::path::Path;
 
 const TERMS: [&str; 6] =

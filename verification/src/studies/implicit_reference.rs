@@ -19,9 +19,9 @@ use crate::report::{Budget, StudyReport, Table, sci};
 use crate::setup::{
     Case, G_M_PER_S2, RHO_KG_PER_M, SPAN_M, aerodynamic_wind, loads, params, positions, straight_wire, wave_speed,
 };
-use ohl::output::plot::{Chart, Series, Style, render};
 use ohl::scheme::Explicit;
 use ohl::wire::tension::LawKind;
+use ohl_app::plot::{Chart, Series, Style, render};
 use rayon::prelude::*;
 use std::path::Path;
 

@@ -35,10 +35,10 @@ use crate::report::{Budget, StudyReport, Table, sci};
 use crate::setup::{
     EA_N, G_M_PER_S2, P_N_PER_M, RHO_KG_PER_M, SPAN_M, WIND_U_M_PER_S, loads, params, uniform_wind, wave_speed,
 };
-use ohl::output::plot::{Chart, Series, Style, render};
 use ohl::scheme::Explicit;
 use ohl::wire::tension::LawKind;
 use ohl::wire::{Conductor, Wire};
+use ohl_app::plot::{Chart, Series, Style, render};
 use rayon::prelude::*;
 use std::f64::consts::{FRAC_PI_2, PI};
 use std::path::Path;

@@ -11,9 +11,9 @@
 
 use crate::report::{Budget, StudyReport, Table, f3, sci};
 use crate::setup::{EA_N, G_M_PER_S2, SPAN_M, loads, params, straight_wire, uniform_wind, wave_speed};
-use ohl::output::plot::{Chart, Series, Style, render};
 use ohl::scheme::{Explicit, courant};
 use ohl::wire::tension::LawKind;
+use ohl_app::plot::{Chart, Series, Style, render};
 use rayon::prelude::*;
 use std::path::Path;
 

@@ -17,7 +17,7 @@ use crate::convergence::{gci, ls_order, three_grid_order};
 use crate::implicit::newton::solve_static;
 use crate::report::{Budget, StudyReport, Table, sci};
 use crate::setup::{Case, SPAN_M, explicit_for, max_distance, positions, settle};
-use ohl::output::plot::{Chart, Series, Style, render};
+use ohl_app::plot::{Chart, Series, Style, render};
 use rayon::prelude::*;
 use std::path::Path;
 

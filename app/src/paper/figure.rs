@@ -1,6 +1,6 @@
 //! The figure of a case and the CSV it is drawn from.
 //!
-//! Panel kinds (generic, chosen in the case file; see [`crate::scenario::paper::PanelKind`]): the history
+//! Panel kinds (generic, chosen in the case file; see [`crate::paper::spec::PanelKind`]): the history
 //! of a mid-span component in the paper's dimensionless units (displacement / l against `tau = t U /
 //! l`; the axis labels give the conversion to metres and seconds), a mid-span trajectory, the shapes at
 //! the snapshot times, tension histories and the mean temperature. The paper's values are drawn as
@@ -12,10 +12,10 @@ use std::path::Path;
 
 use super::extract::Series as Columns;
 use super::table::Row;
-use crate::output::plot::{Chart, PlotError, Series, Style, render};
-use crate::run::Outcome;
-use crate::scenario::Plan;
-use crate::scenario::paper::{ExtractKind, PanelKind, PanelSpec, PaperSpec, UnitSpec};
+use crate::paper::spec::{ExtractKind, PanelKind, PanelSpec, PaperSpec, UnitSpec};
+use crate::plot::{Chart, PlotError, Series, Style, render};
+use ohl::run::Outcome;
+use ohl::scenario::Plan;
 
 /// Time axis of a panel: values and label.
 fn time_axis(plan: &Plan, unit: UnitSpec, scale: f64) -> (f64, String) {

@@ -1,15 +1,15 @@
-//! Running a heat case ([`crate::scenario::heat_case`]): the paper's test 5.4, an insulated rod whose
+//! Running a heat case ([`crate::paper::heat_spec`]): the paper's test 5.4, an insulated rod whose
 //! halves start at different temperatures, advanced by (5.2) with each of the case's boundary closures
 //! until it equalises (spread of the nodal temperatures below the case's threshold), diverges, or reaches
 //! the time cap; then the thermal expansion (5.5)-(5.6) of the equalised wire.
 //!
 //! References: the exact equalisation temperature is the mean of the halves (heat is conserved by
 //! insulated ends); the exact time to equalise follows from the slowest Fourier mode of the exact
-//! solution ([`crate::exact::heat::equalisation_time`]); the figure draws the exact profiles `u(s, t)`
+//! solution ([`ohl::exact::heat::equalisation_time`]); the figure draws the exact profiles `u(s, t)`
 //! beside the computed ones.
 //!
 //! Time here is the dimensionless `t = kappa t_phys / l^2` of (5.1); the figure and the notes state the
-//! physical time of one unit ([`crate::heat::scale`]).
+//! physical time of one unit ([`ohl::heat::scale`]).
 
 use std::io::Write;
 use std::path::Path;
@@ -17,13 +17,13 @@ use std::time::Instant;
 
 use super::table::Row;
 use super::{CaseReport, PaperError};
-use crate::exact::heat::{equalisation_time, slowest_mode_spread, two_halves};
-use crate::heat::HeatRod;
-use crate::heat::expansion::{thermal_force, thermal_strain};
-use crate::heat::scale::{conduction_time_scale_s, thermal_diffusivity};
-use crate::output::plot::{Chart, Series, Style, render};
-use crate::scenario::heat_case::{self, HeatCase, HeatExtractKind, HeatReferenceKind, RunSpec};
-use crate::scenario::paper::UnitSpec;
+use crate::paper::heat_spec::{self, HeatCase, HeatExtractKind, HeatReferenceKind, RunSpec};
+use crate::paper::spec::UnitSpec;
+use crate::plot::{Chart, Series, Style, render};
+use ohl::exact::heat::{equalisation_time, slowest_mode_spread, two_halves};
+use ohl::heat::HeatRod;
+use ohl::heat::expansion::{thermal_force, thermal_strain};
+use ohl::heat::scale::{conduction_time_scale_s, thermal_diffusivity};
 
 /// How a run ended.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -128,7 +128,7 @@ pub fn run_rod(case: &HeatCase, spec: &RunSpec) -> HeatRun {
 /// `<name>_profiles.csv`.
 pub fn run_heat_case(text: &str, file: &str, name: &str, out_dir: Option<&Path>) -> Result<CaseReport, PaperError> {
     let started = Instant::now();
-    let case = heat_case::parse(text, file)?;
+    let case = heat_spec::parse(text, file)?;
     let runs: Vec<HeatRun> = case.runs.iter().map(|r| run_rod(&case, r)).collect();
     let ts = case.rod.temperature_scale_k;
     let (ul, ur) = (case.rod.left_temperature_k / ts, case.rod.right_temperature_k / ts);

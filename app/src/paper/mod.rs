@@ -2,7 +2,7 @@
 //! independent references, and write the figure, its CSV and the comparison table.
 //!
 //! A case file is a scenario (so `ohl run paper_cases/<case>.toml` works too) with a `[paper]` section
-//! ([`crate::scenario::paper`]): each checked value names the paper's number, where it is printed, how
+//! ([`spec`]): each checked value names the paper's number, where it is printed, how
 //! the computed value is extracted ([`extract`]), an optional reference ([`reference`]), a tolerance with
 //! its justification, and whether a miss means "not reproduced" (equilibria) or is only reported
 //! (transients, which depend on damping the paper does not give). Nothing here is specific to a case.
@@ -11,15 +11,17 @@
 pub mod extract;
 pub mod figure;
 pub mod heat_case;
+pub mod heat_spec;
 pub mod reference;
+pub mod spec;
 pub mod table;
 
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
-use crate::run::{RunError, RunOptions, run};
-use crate::scenario::paper::UnitSpec;
-use crate::scenario::{self, InputError, Plan};
+use crate::paper::spec::UnitSpec;
+use ohl::run::{RunError, RunOptions, run};
+use ohl::scenario::{self, InputError, Plan};
 
 pub use table::Row;
 
@@ -95,12 +97,14 @@ pub fn run_case(path: &Path, out_dir: Option<&Path>) -> Result<CaseReport, Paper
     let file = path.display().to_string();
     let name = path.file_stem().and_then(|s| s.to_str()).unwrap_or("case").to_string();
     let text = std::fs::read_to_string(path).map_err(|source| InputError::Io { file: file.clone(), source })?;
-    if scenario::heat_case::is_heat_case(&text) {
+    if heat_spec::is_heat_case(&text) {
         return heat_case::run_heat_case(&text, &file, &name, out_dir);
     }
     let sc = scenario::parse(&text, &file)?;
-    let Some(spec) = sc.paper.clone() else { return Err(PaperError::NotACase(file)) };
     let plan = scenario::plan(&sc, &file)?;
+    let Some(spec) = spec::parse(&text, &file, plan.stop.horizon_s())? else {
+        return Err(PaperError::NotACase(file));
+    };
     let opts = RunOptions { out_dir: None, record: true };
     let o = run(plan.clone(), &opts).map_err(|e| PaperError::Run { file: file.clone(), source: Box::new(e) })?;
     let cols = extract::Series::of(&o);

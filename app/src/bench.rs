@@ -1,32 +1,23 @@
-//! Benchmark of the explicit kernel (3.1), (3.3), (3.6): the configurations, the measurements and the
-//! machine description, shared by `ohl bench` and the criterion bench (`cargo bench`).
+//! Benchmark of the explicit kernel (3.1), (3.3), (3.6): the measurements and the machine description,
+//! shared by `ohl bench` and the criterion bench (`cargo bench -p ohl-app`). The configurations are the
+//! library's ([`ohl::scheme::configs`]).
 //!
 //! Throughput is counted in node-steps per second, `(N + 1) * steps / wall time`, for one thread.
 //! Wall-clock time on a shared machine is noisy: every measurement is the minimum over several
 //! repetitions (the run least disturbed by other processes), and the load average is recorded with it.
-//! Instruction counts per node-step (`benches/instructions.sh`, valgrind's callgrind) are the
+//! Instruction counts per node-step (`app/benches/instructions.sh`, valgrind's callgrind) are the
 //! load-independent measure; [`run_fixed_steps`] is the entry point they time.
-//!
-//! Configurations (the paper's test wire of section 4: `EA = 80734 g` N, `rho0 = 1` kg/m, span 160 m,
-//! released from the straight chord, Courant number 0.9 unless stated):
-//! - [`Config::PlaneWeight`]: weight only; the motion stays in the vertical plane `x2 x3`;
-//! - [`Config::Wind3d`]: weight and the aerodynamic wind (2.5) with damping (2.6), `mu = 0.2`, across the
-//!   span: a 3D motion;
-//! - [`Config::ViscousSmoothed`]: weight, the uniform normal pressure of section 4.1 (3.805 N/m), Kelvin-Voigt
-//!   friction `eta = 2` N s (3.4) and velocity smoothing `b = 0.02` (3.3); Courant 0.8, below the
-//!   internal-friction limit `sqrt(1 + z^2) - z` (> 0.93 for N <= 5000, see `scheme::courant`).
 
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
-use crate::output::plot::{self, Chart, Series, Style};
-use crate::run::{RunError, RunOptions, run};
-use crate::scenario;
-use crate::scheme::courant;
-use crate::scheme::{Explicit, Loads, StepParams, WindGate, WindLoad};
-use crate::wire::aero::{Aerodynamic, UniformNormal};
-use crate::wire::tension::LawKind;
-use crate::wire::{Conductor, Wire};
+use ohl::run::{RunError, RunOptions, run};
+use ohl::scenario;
+use ohl::scheme::Explicit;
+pub use ohl::scheme::configs::Config;
+use ohl::scheme::configs::{EA_N, RHO_KG_PER_M, SPAN_M};
+
+use crate::plot::{self, Chart, Series, Style};
 
 /// Grid sizes `N` [segments] of the kernel table (issue 5).
 pub const SIZES: [usize; 4] = [50, 200, 1000, 5000];
@@ -34,92 +25,6 @@ pub const SIZES: [usize; 4] = [50, 200, 1000, 5000];
 pub const RUN_SIZES: [usize; 4] = [50, 100, 200, 400];
 /// Target throughput of the 3D wind configuration at N = 1000 and 5000 [node-steps/s] (issue 5).
 pub const TARGET_NODE_STEPS_PER_S: f64 = 2.0e8;
-
-/// Axial stiffness of the paper's test wire, "E = 80734 g" [N] (section 4; NOTES.md).
-const EA_N: f64 = 80734.0 * 9.81;
-/// Linear density of the paper's iced test wire [kg/m] (section 4.1).
-const RHO_KG_PER_M: f64 = 1.0;
-/// Span [m] (section 4).
-const SPAN_M: f64 = 160.0;
-/// Conductor diameter [m] (section 4.1).
-const DIAMETER_M: f64 = 0.01553;
-
-/// A benchmark configuration of the kernel.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Config {
-    /// weight only, motion in the vertical plane
-    PlaneWeight,
-    /// weight plus aerodynamic wind with damping, 3D
-    Wind3d,
-    /// weight plus uniform normal pressure, Kelvin-Voigt friction and velocity smoothing, 3D
-    ViscousSmoothed,
-}
-
-impl Config {
-    /// All configurations, in table order.
-    pub const ALL: [Config; 3] = [Config::PlaneWeight, Config::Wind3d, Config::ViscousSmoothed];
-
-    /// Short name used in tables and files.
-    pub fn name(self) -> &'static str {
-        match self {
-            Config::PlaneWeight => "plane_weight",
-            Config::Wind3d => "wind_3d",
-            Config::ViscousSmoothed => "kv_smoothing_3d",
-        }
-    }
-
-    /// Parse a name given by [`Config::name`].
-    pub fn from_name(s: &str) -> Option<Config> {
-        Config::ALL.into_iter().find(|c| c.name() == s)
-    }
-
-    /// A solver for this configuration with `n` segments, at rest on the straight chord at `t = 0`.
-    pub fn solver(self, n: usize) -> Explicit {
-        let eta = if self == Config::ViscousSmoothed { 2.0 } else { 0.0 };
-        let conductor = Conductor { axial_stiffness_n: EA_N, internal_friction_n_s: eta, law: LawKind::TensionOnly };
-        let x = [vec![0.0; n + 1], (0..=n).map(|i| SPAN_M * i as f64 / n as f64).collect(), vec![0.0; n + 1]];
-        let ds = SPAN_M / n as f64;
-        let wire = Wire::new(conductor, x, vec![ds; n], RHO_KG_PER_M);
-        let c = courant::wave_speed(EA_N, RHO_KG_PER_M);
-        let q = 0.5 * 1.225 * 20.0 * 20.0 * DIAMETER_M;
-        let (wind, cfl, smoothing) = match self {
-            Config::PlaneWeight => (None, 0.9, 0.0),
-            Config::Wind3d => (
-                Some(WindLoad::Aerodynamic(Aerodynamic {
-                    direction: [1.0, 0.0, 0.0],
-                    qd_cn: q * 1.8446,
-                    qd_ct: q * 0.0554,
-                    mu_over_u: 0.2 / 20.0,
-                })),
-                0.9,
-                0.0,
-            ),
-            Config::ViscousSmoothed => (
-                Some(WindLoad::UniformNormal(UniformNormal {
-                    direction: [1.0, 0.0, 0.0],
-                    pressure_n_per_m: q,
-                    mu_over_u: 0.0,
-                })),
-                0.8,
-                0.02,
-            ),
-        };
-        let loads = Loads {
-            gravity_m_per_s2: 9.81,
-            uniform_load_n_per_m: [0.0; 3],
-            wind,
-            wind_scale: 1.0,
-            wind_gate: WindGate::Always,
-        };
-        let params = StepParams {
-            dt_s: courant::time_step(cfl, ds, c),
-            smoothing,
-            mass_damping_per_s: 0.0,
-            max_speed_m_per_s: c,
-        };
-        Explicit::new(wire, loads, params)
-    }
-}
 
 /// Steps per repetition for a grid of `n` segments: about `node_steps` node-steps, at least 100 steps
 /// (timer resolution).
@@ -389,7 +294,7 @@ pub struct Machine {
     pub load: String,
     /// UTC date and time
     pub date: String,
-    /// `git describe --always --dirty` of the working tree
+    /// `git describe --always --dirty` of the working tree, or "unknown" (no git, not a checkout)
     pub git: String,
 }
 
@@ -433,17 +338,26 @@ pub fn machine() -> Machine {
     Machine { cpu, load: load_average(), date: utc_now(), git }
 }
 
-/// A CSV field: quoted if it holds a comma or a quote.
-fn field(s: &str) -> String {
-    if s.contains([',', '"']) { format!("\"{}\"", s.replace('"', "\"\"")) } else { s.to_string() }
-}
-
 /// One point of a throughput plot: configuration name, segments `N`, node-steps per second.
 pub type ThroughputRow = (String, usize, f64);
 
-/// Header of the kernel CSV.
-pub const KERNEL_HEADER: &str = "label,config,n,steps_per_rep,reps,best_s,median_s,node_steps_per_s,ns_per_node_step,\
-                                 load_1_5_15,cpu,date_utc,git,build";
+/// Columns of the kernel CSV.
+pub const KERNEL_HEADER: [&str; 14] = [
+    "label",
+    "config",
+    "n",
+    "steps_per_rep",
+    "reps",
+    "best_s",
+    "median_s",
+    "node_steps_per_s",
+    "ns_per_node_step",
+    "load_1_5_15",
+    "cpu",
+    "date_utc",
+    "git",
+    "build",
+];
 
 /// Write the kernel table to `path` (one row per result, each with the machine description and the
 /// load average measured just before it).
@@ -454,35 +368,35 @@ pub fn write_kernel_csv(
     rows: &[(KernelResult, String)],
     build: &str,
 ) -> std::io::Result<()> {
-    let mut s = String::from(KERNEL_HEADER);
-    s.push('\n');
+    let mut w = csv_writer(path)?;
+    w.write_record(KERNEL_HEADER)?;
     for (r, load) in rows {
-        s += &format!(
-            "{},{},{},{},{},{:.6e},{:.6e},{:.6e},{:.4},{},{},{},{},{}\n",
-            field(label),
-            r.config,
-            r.n,
-            r.steps,
-            r.reps,
-            r.best_s,
-            r.median_s,
-            r.node_steps_per_s(),
-            r.ns_per_node_step(),
-            field(load),
-            field(&m.cpu),
-            m.date,
-            field(&m.git),
-            field(build)
-        );
+        w.write_record([
+            label.to_string(),
+            r.config.clone(),
+            r.n.to_string(),
+            r.steps.to_string(),
+            r.reps.to_string(),
+            format!("{:.6e}", r.best_s),
+            format!("{:.6e}", r.median_s),
+            format!("{:.6e}", r.node_steps_per_s()),
+            format!("{:.4}", r.ns_per_node_step()),
+            load.clone(),
+            m.cpu.clone(),
+            m.date.clone(),
+            m.git.clone(),
+            build.to_string(),
+        ])?;
     }
-    write_file(path, &s)
+    w.flush()
 }
 
-fn write_file(path: &Path, text: &str) -> std::io::Result<()> {
+/// A CSV writer on `path`, creating its directory.
+fn csv_writer(path: &Path) -> std::io::Result<csv::Writer<std::fs::File>> {
     if let Some(d) = path.parent() {
         std::fs::create_dir_all(d)?;
     }
-    std::fs::write(path, text)
+    Ok(csv::Writer::from_path(path)?)
 }
 
 /// Read `(config, n, node_steps_per_s)` back from a kernel CSV written by [`write_kernel_csv`].
@@ -505,28 +419,38 @@ pub fn read_kernel_csv(path: &Path) -> Result<Vec<ThroughputRow>, String> {
 
 /// Write the run timings to `path`.
 pub fn write_run_csv(path: &Path, label: &str, m: &Machine, rows: &[RunTiming]) -> std::io::Result<()> {
-    let mut s = String::from(
-        "label,n,steps,run_wall_s,steps_only_s,overhead_share,diagnostics_calls,diagnostics_each_s,\
-         load_1_5_15,cpu,date_utc,git\n",
-    );
+    let mut w = csv_writer(path)?;
+    w.write_record([
+        "label",
+        "n",
+        "steps",
+        "run_wall_s",
+        "steps_only_s",
+        "overhead_share",
+        "diagnostics_calls",
+        "diagnostics_each_s",
+        "load_1_5_15",
+        "cpu",
+        "date_utc",
+        "git",
+    ])?;
     for r in rows {
-        s += &format!(
-            "{},{},{},{:.6e},{:.6e},{:.4},{},{:.4e},{},{},{},{}\n",
-            field(label),
-            r.n,
-            r.steps,
-            r.run_s,
-            r.steps_only_s,
-            r.overhead_share(),
-            r.diagnostics_calls,
-            r.diagnostics_each_s,
-            field(&m.load),
-            field(&m.cpu),
-            m.date,
-            field(&m.git)
-        );
+        w.write_record([
+            label.to_string(),
+            r.n.to_string(),
+            r.steps.to_string(),
+            format!("{:.6e}", r.run_s),
+            format!("{:.6e}", r.steps_only_s),
+            format!("{:.4}", r.overhead_share()),
+            r.diagnostics_calls.to_string(),
+            format!("{:.4e}", r.diagnostics_each_s),
+            m.load.clone(),
+            m.cpu.clone(),
+            m.date.clone(),
+            m.git.clone(),
+        ])?;
     }
-    write_file(path, &s)
+    w.flush()
 }
 
 /// Plot throughput against N (log-log), one colour per configuration: solid lines for `current`,

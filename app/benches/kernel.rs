@@ -1,11 +1,11 @@
 //! Criterion benchmark of the explicit step (`cargo bench --bench kernel`): the three configurations of
-//! [`ohl::bench::Config`] at N = 50, 200, 1000, 5000, reported as node-steps per second (criterion's
+//! [`ohl::scheme::configs::Config`] at N = 50, 200, 1000, 5000, reported as node-steps per second (criterion's
 //! "elements" throughput). One iteration is a batch of steps from the initial state (a fresh clone,
 //! not timed), so that long measurements stay in the same early regime of the weight-release transient.
 //! `ohl bench` measures the same kernel with a fixed budget and writes the CSV tables and the plot.
 
 use criterion::{BatchSize, Criterion, Throughput, criterion_group, criterion_main};
-use ohl::bench::{Config, SIZES};
+use ohl_app::bench::{Config, SIZES};
 
 fn kernel(c: &mut Criterion) {
     for config in Config::ALL {

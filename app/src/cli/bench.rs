@@ -1,5 +1,5 @@
 //! `ohl bench`: throughput of the explicit kernel (node-steps per second, one thread) in the three
-//! configurations of [`ohl::bench`] at N = 50, 200, 1000, 5000, the wall time of `ohl run` on the weight
+//! configurations of [`ohl_app::bench`] at N = 50, 200, 1000, 5000, the wall time of `ohl run` on the weight
 //! release at N = 50, 100, 200, 400, and the measured cost of a square root and a division on this core.
 //! Writes `<out>/<label>.csv`, `<out>/<label>_run.csv`, `<out>/<label>_primitives.csv` and the plot
 //! `<out>/throughput.png` / `.svg` (against `--baseline` if given).
@@ -7,7 +7,7 @@
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-use ohl::bench::{self, Config};
+use ohl_app::bench::{self, Config};
 
 /// Arguments of `ohl bench`.
 #[derive(clap::Args)]
@@ -34,7 +34,7 @@ pub struct BenchArgs {
     #[arg(long)]
     no_run: bool,
     /// only run `STEPS` steps of `CONFIG` at `N` segments and exit (the fixed workload of
-    /// `benches/instructions.sh`), e.g. `wind_3d:1000:2000`
+    /// `app/benches/instructions.sh`), e.g. `wind_3d:1000:2000`
     #[arg(long, value_name = "CONFIG:N:STEPS")]
     fixed: Option<String>,
 }

@@ -3,8 +3,8 @@
 # does not depend on the machine's load: the count of a run of S2 steps minus that of S1 steps, divided
 # by (S2 - S1) (N + 1), so start-up and set-up cancel.
 #
-# usage: benches/instructions.sh OHL_BINARY LABEL [CSV]   (appends "label,config,n,instructions_per_node_step")
-# e.g.   benches/instructions.sh target/release/ohl after figures/bench/instructions.csv
+# usage: app/benches/instructions.sh OHL_BINARY LABEL [CSV]   (appends "label,config,n,instructions_per_node_step")
+# e.g.   app/benches/instructions.sh target/release/ohl after figures/bench/instructions.csv
 set -euo pipefail
 bin=$1
 label=$2

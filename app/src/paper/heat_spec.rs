@@ -49,10 +49,11 @@
 
 use serde::Deserialize;
 
-use super::paper::CheckSpec;
-use super::validate::{Check, Problem};
-use super::{InputError, parse_error};
-use crate::heat::HeatBoundary;
+use ohl::scenario::validate::{Check, Problem};
+use ohl::scenario::{InputError, parse_error};
+
+use super::spec::{CheckSpec, check_row};
+use ohl::heat::HeatBoundary;
 
 /// A heat case file.
 #[derive(Clone, Debug, Deserialize)]
@@ -137,7 +138,7 @@ fn default_divergence() -> f64 {
     10.0
 }
 
-/// Boundary closure of a run (see [`crate::heat::boundary`]).
+/// Boundary closure of a run (see [`ohl::heat::boundary`]).
 #[derive(Clone, Copy, Debug, Deserialize, PartialEq, Eq)]
 #[serde(rename_all = "snake_case")]
 pub enum BoundarySpec {
@@ -242,7 +243,7 @@ pub struct HeatPaperSpec {
 
 /// All problems of a heat case; empty when it is valid.
 pub fn validate(h: &HeatCase) -> Vec<Problem> {
-    let mut c = Check(Vec::new());
+    let mut c = Check::default();
     let r = &h.rod;
     if r.segments < 2 || !r.segments.is_multiple_of(2) || r.segments > 100_000 {
         c.fail("rod.segments", r.segments, "must be an even number in [2, 100000] (a node at mid-span)");
@@ -299,7 +300,7 @@ pub fn validate(h: &HeatCase) -> Vec<Problem> {
     }
     for (k, ch) in h.paper.checks.iter().enumerate() {
         let f = |name: &str| format!("paper.checks[{k}].{name}");
-        c.check_row(&f, ch.paper, ch.reference.is_some(), ch.compare, ch.tolerance);
+        check_row(&mut c, &f, ch.paper, ch.reference.is_some(), ch.compare, ch.tolerance);
         if !known(&ch.extract.run) {
             c.fail(&f("extract.run"), format!("{:?}", ch.extract.run), &format!("must be one of {}", labels()));
         }

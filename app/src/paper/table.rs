@@ -8,7 +8,7 @@
 
 use std::fmt::Write;
 
-use crate::scenario::paper::{CheckSpec, CompareSpec, UnitSpec};
+use crate::paper::spec::{CheckSpec, CompareSpec, UnitSpec};
 
 /// One row of the table.
 #[derive(Clone, Debug, PartialEq)]

@@ -1,7 +1,9 @@
 //! The `[paper]` section of a case file in `paper_cases/`: which values of the paper the case checks,
 //! where they come from, how each is extracted from the run, the tolerance and its justification, and
-//! which panels the figure shows. A case file is otherwise an ordinary scenario (`ohl run` ignores this
-//! section); `ohl paper` runs it and prints the comparison table (see [`crate::paper`]).
+//! which panels the figure shows. A case file is otherwise an ordinary scenario (the library keeps this
+//! table as an opaque [`toml::Value`] and ignores it; `ohl run` runs the scenario); `ohl paper` runs it and
+//! prints the comparison table (see [`crate::paper`]). [`parse`] reads the table from the case file's
+//! text (so that the line and column of an error are those of the file) and [`validate`] checks it.
 //!
 //! ```toml
 //! [paper]
@@ -23,7 +25,85 @@
 //! component = "x1"
 //! ```
 
+use ohl::scenario::validate::{Check, Problem};
+use ohl::scenario::{InputError, parse_error};
 use serde::Deserialize;
+
+/// A case file as the paper tool reads it: the `[paper]` table, every other key ignored (the library
+/// reads those).
+#[derive(Deserialize)]
+struct CaseFile {
+    #[serde(default)]
+    paper: Option<PaperSpec>,
+}
+
+/// The `[paper]` table of a case file's text (none if it has none), validated against the run's end
+/// time `end_s` [s]; `file` names it in messages.
+pub fn parse(text: &str, file: &str, end_s: f64) -> Result<Option<PaperSpec>, InputError> {
+    let case: CaseFile = toml::from_str(text).map_err(|e| parse_error(file, e))?;
+    let Some(spec) = case.paper else { return Ok(None) };
+    let problems = validate(&spec, end_s);
+    if problems.is_empty() { Ok(Some(spec)) } else { Err(InputError::Invalid { file: file.to_string(), problems }) }
+}
+
+/// The fields every `[[paper.checks]]` row has, wire or heat case: a finite paper value, a paper value
+/// or a reference for a `"match"` row, a tolerance in (0, 10]. `f` makes the field's path.
+pub fn check_row(
+    c: &mut Check,
+    f: &dyn Fn(&str) -> String,
+    paper: Option<f64>,
+    has_reference: bool,
+    compare: CompareSpec,
+    tolerance: f64,
+) {
+    if let Some(v) = paper
+        && !v.is_finite()
+    {
+        c.fail(&f("paper"), v, "must be a finite number");
+    }
+    if paper.is_none() && !has_reference && compare == CompareSpec::Match {
+        c.fail(&f("paper"), "(missing)", "a \"match\" check needs a paper value or a reference");
+    }
+    c.within(&f("tolerance"), tolerance, f64::MIN_POSITIVE, 10.0, "must be a relative tolerance in (0, 10]");
+}
+
+/// All problems of a `[paper]` table (tolerances, extractors and windows) of a run that ends at `end_s`
+/// [s] at the latest; empty when it is valid.
+pub fn validate(p: &PaperSpec, end_s: f64) -> Vec<Problem> {
+    let mut c = Check::default();
+    c.positive("paper.length_scale_m", p.length_scale_m);
+    let hi = end_s;
+    for (k, ch) in p.checks.iter().enumerate() {
+        let f = |name: &str| format!("paper.checks[{k}].{name}");
+        check_row(&mut c, &f, ch.paper, ch.reference.is_some(), ch.compare, ch.tolerance);
+        let x = &ch.extract;
+        let needs_component = matches!(
+            x.kind,
+            ExtractKind::Midspan
+                | ExtractKind::MidspanPeak
+                | ExtractKind::MidspanPeakTime
+                | ExtractKind::MidspanFirstExtreme
+                | ExtractKind::MidspanFirstExtremeTime
+                | ExtractKind::MidspanAmplitude
+        );
+        if needs_component && x.component.is_none() {
+            c.fail(
+                &f("extract.component"),
+                "(missing)",
+                "required for the midspan extractors: \"x1\", \"x2\" or \"x3\"",
+            );
+        }
+        if let Some(t) = x.at_s {
+            c.within(&f("extract.at_s"), t, 0.0, hi, "must be in [0, end time]");
+        }
+        if let Some(w) = x.window_s
+            && !(w[0].is_finite() && w[1].is_finite() && 0.0 <= w[0] && w[0] < w[1] && w[1] <= hi)
+        {
+            c.fail(&f("extract.window_s"), format!("{w:?}"), "must be [t0, t1] with 0 <= t0 < t1 <= end time");
+        }
+    }
+    c.0
+}
 
 /// The `[paper]` section.
 #[derive(Clone, Debug, Deserialize)]
@@ -156,7 +236,7 @@ pub struct ExtractSpec {
 }
 
 /// Independent reference computed from the scenario's data (and the wire's state at the extraction
-/// time) with [`crate::exact`].
+/// time) with [`ohl::exact`].
 #[derive(Clone, Copy, Debug, Deserialize, PartialEq, Eq)]
 #[serde(rename_all = "snake_case")]
 pub enum ReferenceKind {
@@ -191,7 +271,7 @@ pub enum CompareSpec {
 
 /// One checked value. Generic over how the computed value is extracted (`X`) and which reference it is
 /// compared with (`R`): a wire case uses [`ExtractSpec`] and [`ReferenceKind`], a heat case
-/// ([`crate::scenario::heat_case`]) its own.
+/// ([`crate::paper::heat_spec`]) its own.
 #[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct CheckSpec<X = ExtractSpec, R = ReferenceKind> {

@@ -1,12 +1,12 @@
 //! Generic extractors: a number from a recorded run, as a case's `extract = { kind = ... }` asks
-//! (see [`crate::scenario::paper::ExtractKind`]). Values are SI (metres, newtons, seconds).
+//! (see [`crate::paper::spec::ExtractKind`]). Values are SI (metres, newtons, seconds).
 //!
 //! Values "at a time" interpolate the recorded samples linearly (the cases sample every 0.02 s or finer,
 //! well below every time scale they check); values "at the end" are taken from the final state. Peaks
 //! are taken over the samples within the window.
 
-use crate::run::{Outcome, Probe};
-use crate::scenario::paper::{ComponentSpec, ExtractKind, ExtractSpec};
+use crate::paper::spec::{ComponentSpec, ExtractKind, ExtractSpec};
+use ohl::run::{Outcome, Probe};
 
 /// Linear interpolation of `f(sample)` at time `t` over samples with times `ts`.
 fn interpolate(ts: &[f64], ys: &[f64], t: f64) -> Option<f64> {

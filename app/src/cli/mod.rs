@@ -2,5 +2,4 @@
 
 pub mod bench;
 pub mod paper;
-pub mod progress;
 pub mod run;

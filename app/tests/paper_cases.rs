@@ -9,11 +9,11 @@
 use std::path::Path;
 use std::process::Command;
 
-use ohl::paper::{self, Row};
-use ohl::scenario::paper::CompareSpec;
+use ohl_app::paper::spec::CompareSpec;
+use ohl_app::paper::{self, Row};
 
 fn rows() -> Vec<Row> {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("paper_cases");
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../paper_cases");
     let files = paper::case_files(&dir).expect("paper_cases/");
     assert!(files.len() >= 6, "expected the paper's cases, found {files:?}");
     paper::run_cases(&files, None, 2)
@@ -65,7 +65,7 @@ fn equilibria_match_the_paper_and_the_exact_references() {
 /// printed (5.4) diverges; the expansion (5.5)-(5.6) of the equalised wire gives the paper's numbers.
 #[test]
 fn heat_case_reproduces_test_5_4_and_explains_option_1() {
-    let file = Path::new(env!("CARGO_MANIFEST_DIR")).join("paper_cases/heat_two_halves.toml");
+    let file = Path::new(env!("CARGO_MANIFEST_DIR")).join("../paper_cases/heat_two_halves.toml");
     let rows = paper::run_case(&file, None).unwrap_or_else(|e| panic!("{e}")).rows;
     let (ul, ur, h) = (473.15 / 273.15, 268.15 / 273.15, 1.0 / 50.0);
     let exact = 0.5 * (ul + ur);
@@ -105,7 +105,7 @@ fn heat_case_reproduces_test_5_4_and_explains_option_1() {
 /// A heat case with a bad value is refused like a bad scenario: exit code 2, file, field, value, range.
 #[test]
 fn an_invalid_heat_case_is_refused_with_the_field_and_exit_code_2() {
-    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("paper_cases/heat_two_halves.toml");
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("../paper_cases/heat_two_halves.toml");
     let text = std::fs::read_to_string(&src).expect("case file");
     let dir = std::env::temp_dir().join(format!("ohl-heat-case-{}", std::process::id()));
     std::fs::create_dir_all(&dir).expect("temp dir");

@@ -122,3 +122,13 @@ fn an_instability_stops_the_run_with_time_node_and_reason_and_keeps_the_output()
     let series = std::fs::read_to_string(out.join("timeseries.csv")).unwrap();
     assert!(series.lines().count() >= 4, "time series so far was not kept:\n{series}");
 }
+
+#[test]
+fn a_heat_case_is_refused_by_run_with_a_pointer_to_paper() {
+    let file = Path::new(env!("CARGO_MANIFEST_DIR")).join("../paper_cases/heat_two_halves.toml");
+    let out = tmp("heat");
+    let (code, _, err) = ohl(&["run", file.to_str().unwrap(), "--out", out.to_str().unwrap()]);
+    assert_eq!(code, 2, "stderr:\n{err}");
+    assert!(err.contains("heat_two_halves.toml") && err.contains("`ohl paper heat_two_halves`"), "{err}");
+    assert!(!out.exists(), "nothing is written for a refused case");
+}

@@ -5,8 +5,9 @@ use std::process::ExitCode;
 
 use ohl::run::{RunError, RunOptions, run_observed};
 
-use super::progress::Progress;
 use ohl::scenario;
+use ohl_app::paper::heat_spec;
+use ohl_app::progress::Bar;
 
 /// Arguments of `ohl run`.
 #[derive(clap::Args)]
@@ -24,6 +25,10 @@ pub struct RunArgs {
 /// Run the command; exit 0 on success, 1 if unstable or output failed, 2 on invalid input.
 pub fn main(args: RunArgs) -> ExitCode {
     let RunArgs { scenario: path, out, quiet } = args;
+    if let Some(message) = heat_case_refusal(&path) {
+        eprintln!("error: {}: {message}", path.display());
+        return ExitCode::from(2);
+    }
     let plan = match scenario::load(&path).and_then(|sc| scenario::plan(&sc, &path.display().to_string())) {
         Ok(p) => p,
         Err(e) => {
@@ -32,8 +37,10 @@ pub fn main(args: RunArgs) -> ExitCode {
         }
     };
     let opts = RunOptions { out_dir: Some(out.clone()), record: false };
-    let mut progress = Progress::new(plan.stop);
-    match run_observed(plan, &opts, &mut [&mut progress]) {
+    let mut bar = Bar::for_plan(&plan);
+    let mut extra: Vec<&mut dyn ohl::run::Observer> =
+        bar.iter_mut().map(|b| b as &mut dyn ohl::run::Observer).collect();
+    match run_observed(plan, &opts, &mut extra) {
         Ok(o) => {
             if !quiet {
                 let s = &o.summary;
@@ -60,4 +67,14 @@ pub fn main(args: RunArgs) -> ExitCode {
             ExitCode::from(1)
         }
     }
+}
+
+/// A heat-conduction case (a file with a `[rod]` section) is not a wire scenario: the message points to
+/// `ohl paper`. None for anything else (including a file that cannot be read: `scenario::load` says so).
+fn heat_case_refusal(path: &std::path::Path) -> Option<String> {
+    let text = std::fs::read_to_string(path).ok()?;
+    heat_spec::is_heat_case(&text).then(|| {
+        let stem = path.file_stem().and_then(|s| s.to_str()).unwrap_or("CASE");
+        format!("a heat-conduction case (it has a [rod] section), not a wire scenario: run it with `ohl paper {stem}`")
+    })
 }

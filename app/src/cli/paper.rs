@@ -10,8 +10,8 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
 
-use ohl::paper::{self, PaperError, table};
-use ohl::scenario::paper::CompareSpec;
+use ohl_app::paper::spec::CompareSpec;
+use ohl_app::paper::{self, PaperError, table};
 
 /// Arguments of `ohl paper`.
 #[derive(clap::Args)]

@@ -1,12 +1,12 @@
-//! Independent references for a check, computed with [`crate::exact`] from the scenario's data and the
+//! Independent references for a check, computed with [`ohl::exact`] from the scenario's data and the
 //! wire's state at the extraction time (its mass, stress-free length and temperature then), never from
-//! the run's results. See [`crate::scenario::paper::ReferenceKind`].
+//! the run's results. See [`crate::paper::spec::ReferenceKind`].
 
-use crate::exact::{ElasticArc, ElasticCatenary, paper_arc_deflection_m, paper_parabolic_sag_m};
-use crate::run::Probe;
-use crate::scenario::Plan;
-use crate::scenario::paper::{ExtractKind, ExtractSpec, ReferenceKind};
-use crate::scheme::WindLoad;
+use crate::paper::spec::{ExtractKind, ExtractSpec, ReferenceKind};
+use ohl::exact::{ElasticArc, ElasticCatenary, paper_arc_deflection_m, paper_parabolic_sag_m};
+use ohl::run::Probe;
+use ohl::scenario::Plan;
+use ohl::scheme::WindLoad;
 
 /// The uniform normal wind pressure `p` [N/m] times the multiplier at the time, and its direction.
 fn pressure(plan: &Plan, p: &Probe) -> Option<(f64, [f64; 3])> {
