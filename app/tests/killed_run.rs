@@ -1,5 +1,6 @@
-//! A run killed with SIGKILL at any moment leaves output files that parse: CSVs of whole rows (and
-//! `snapshots.csv` of whole snapshots), and either a whole `summary.json` or none (issue 9).
+//! A run killed with SIGKILL at any moment leaves output files that parse: CSVs of whole rows, and
+//! either a whole `summary.json` or none (issue 9). Rows reach the files one page at a time, each page
+//! in a write the kernel completes or drops whole (`ohl::output::rows`).
 
 use std::path::Path;
 use std::process::Command;
@@ -22,7 +23,7 @@ mass_damping_per_s = 1.0
 end_time_s = 60.0
 "#;
 
-fn check_csv(path: &Path, rows_per_block: usize) -> usize {
+fn check_csv(path: &Path) -> usize {
     let text = std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
     assert!(text.ends_with('\n'), "{}: the last row is not whole", path.display());
     let mut lines = text.lines();
@@ -37,7 +38,6 @@ fn check_csv(path: &Path, rows_per_block: usize) -> usize {
         }
         rows += 1;
     }
-    assert_eq!(rows % rows_per_block, 0, "{}: {rows} rows is not a whole number of blocks", path.display());
     rows
 }
 
@@ -49,7 +49,7 @@ fn a_killed_run_leaves_whole_rows_and_a_whole_summary_or_none() {
     let times: Vec<String> = (1..20000).map(|k| format!("{:.4}", 4.0e-4 * k as f64)).collect();
     std::fs::write(&scenario, format!("{SCENARIO}[output]\nsnapshot_times_s = [{}]\n", times.join(","))).unwrap();
     let mut killed_with_rows = 0;
-    for (k, delay_ms) in [150_u64, 260, 370, 480, 590, 700, 810, 920].into_iter().enumerate() {
+    for (k, delay_ms) in [150_u64, 230, 310, 390, 470, 550, 630, 710, 790, 870, 950, 1030].into_iter().enumerate() {
         let out = dir.join(format!("out{k}"));
         let mut child = Command::new(env!("CARGO_BIN_EXE_ohl"))
             .args(["run", scenario.to_str().unwrap(), "--out", out.to_str().unwrap(), "--quiet"])
@@ -62,7 +62,7 @@ fn a_killed_run_leaves_whole_rows_and_a_whole_summary_or_none() {
         for f in ["timeseries.csv", "snapshots.csv"] {
             let p = out.join(f);
             if p.exists() {
-                let rows = check_csv(&p, if f == "snapshots.csv" { 2001 } else { 1 });
+                let rows = check_csv(&p);
                 if f == "snapshots.csv" && rows > 0 {
                     killed_with_rows += 1;
                 }
@@ -74,7 +74,7 @@ fn a_killed_run_leaves_whole_rows_and_a_whole_summary_or_none() {
             serde_json::from_str::<serde_json::Value>(&text).expect("a summary.json that exists is whole");
         }
     }
-    println!("{killed_with_rows} of 8 kills landed after snapshots had been written");
-    assert!(killed_with_rows >= 4, "the kills must land while snapshots are being written");
+    println!("{killed_with_rows} of 12 kills landed after snapshots had been written");
+    assert!(killed_with_rows >= 6, "the kills must land while snapshots are being written");
     let _ = std::fs::remove_dir_all(&dir);
 }

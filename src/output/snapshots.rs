@@ -5,7 +5,8 @@
 //! Columns: `t_s` [s], `tau` [-], `node` [-], `s_m` [m] (Lagrangian coordinate: unstretched length from
 //! the first node), `x1_m`, `x2_m`, `x3_m` [m] (position), `v1_m_per_s`, `v2_m_per_s`, `v3_m_per_s`
 //! [m/s] (velocity at the last half step), `tension_n` [N] (mean of the adjacent intact segments).
-//! A snapshot is committed to the file whole (all its rows in one write, [`super::rows`]).
+//! Rows reach the file a page at a time and always whole ([`super::rows`]): a run killed mid-snapshot
+//! leaves a file of whole rows, ending possibly within a snapshot.
 
 use std::path::Path;
 
@@ -86,9 +87,10 @@ impl Observer for Snapshots {
     }
 
     fn finish(&mut self, level: &Level, ending: &Ending) -> Result<(), OutputError> {
-        if matches!(ending, Ending::Unstable(_)) || self.last_t_s == Some(level.t_s) {
-            return Ok(());
+        if !matches!(ending, Ending::Unstable(_)) && self.last_t_s != Some(level.t_s) {
+            self.write(level.solver, level.t_s, level.tau())?;
         }
-        self.write(level.solver, level.t_s, level.tau())
+        let f = &mut self.file;
+        f.finish().map_err(OutputError::at(&f.path().to_path_buf()))
     }
 }

@@ -15,7 +15,7 @@ use serde::Serialize;
 use super::clock::{LANDING, SampleClock};
 use super::probe::ProbePoint;
 use super::rows::RowFile;
-use crate::run::{Control, Level, Observer, OutputError};
+use crate::run::{Control, Ending, Level, Observer, OutputError};
 
 /// One row of the time series (its fixed columns).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
@@ -63,7 +63,7 @@ impl Sample {
     }
 }
 
-/// Writes `timeseries.csv`, one committed row per sample.
+/// Writes `timeseries.csv` (rows reach the file a page at a time, always whole: [`super::rows`]).
 pub struct Timeseries {
     file: RowFile,
     clock: SampleClock,
@@ -142,5 +142,10 @@ impl Observer for Timeseries {
         f.end_row();
         f.commit().map_err(OutputError::at(&f.path().to_path_buf()))?;
         Ok(Control::Continue)
+    }
+
+    fn finish(&mut self, _level: &Level, _ending: &Ending) -> Result<(), OutputError> {
+        let f = &mut self.file;
+        f.finish().map_err(OutputError::at(&f.path().to_path_buf()))
     }
 }

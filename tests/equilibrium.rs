@@ -1,0 +1,111 @@
+//! `[initial] shape = "equilibrium"` (issue 9): the run starts at rest on the static equilibrium of the
+//! scenario's loads at t = 0, solved by the library's Newton solver (`ohl::statics`).
+//!
+//! - The support forces balance the total load: at rest the tensions cancel in the sum over all nodes,
+//!   so the forces on the supports add up to the total weight and uniform load, `(q - rho0 g e3) S`,
+//!   to the solver's residual: 1e-9 relative is a few hundred times the rounding of the sums.
+//! - Without damping the wire stays at rest: its kinetic energy stays below 1e-12 of its elastic energy
+//!   over 10 s (tracked every step by an observer). A residual force `r` per node would drive an
+//!   oscillation of kinetic energy of order `N r^2 / k` (k the segment stiffness EA / ds); Newton's
+//!   residual at rounding level (1e-10 N) makes that ~1e-20 J against an elastic energy of ~10 J.
+//! - The mid-span sag matches the exact elastic catenary within the grid's O(ds^2) error, at observed
+//!   order 2 (the slope of the last three refinements, 2 +- 0.1).
+
+mod common;
+use common::*;
+
+use ohl::exact::catenary::ElasticCatenary;
+use ohl::run::{Control, Level, Observer, OutputError, RunOptions, run_observed};
+use ohl::scenario;
+
+fn wire(n: usize, extra: &str) -> String {
+    format!(
+        r#"
+        [conductor]
+        axial_stiffness_n = {EA_PAPER_N}
+        linear_density_kg_per_m = {RHO_PAPER}
+        [geometry]
+        left_support_m = [0.0, 0.0, 0.0]
+        right_support_m = [0.0, {SPAN_M}, 0.0]
+        segments = {n}
+        [initial]
+        shape = "equilibrium"
+        [numerics]
+        courant = 0.9
+        {extra}
+        "#
+    )
+}
+
+#[test]
+fn support_forces_balance_the_total_load_at_equilibrium() {
+    let q = [0.7, 0.0, -0.4];
+    let text = format!(
+        "{}\n[loads]\nuniform_load_n_per_m = [{}, {}, {}]\n[duration]\nend_time_s = 1.0\n",
+        wire(60, ""),
+        q[0],
+        q[1],
+        q[2]
+    );
+    let mut plan = scenario::plan(&common::scenario(&text), "<test>").expect("valid");
+    let report = plan.initial_equilibrium.clone().expect("solved");
+    println!("Newton: {} iterations, residual {:.3e} N", report.iterations, report.residual_n);
+    let s = &mut plan.solver;
+    s.evaluate_forces();
+    let mut forces = Vec::new();
+    s.support_forces(&mut forces);
+    let length: f64 = s.wire.reference_length.iter().sum();
+    let total = [q[0] * length, q[1] * length, (q[2] - RHO_PAPER * 9.81) * length];
+    let sum: [f64; 3] = [0, 1, 2].map(|k| forces.iter().map(|(_, f)| f[k]).sum());
+    let scale = total.iter().map(|x| x * x).sum::<f64>().sqrt();
+    let gap = [0, 1, 2].map(|k| (sum[k] - total[k]).abs()).into_iter().fold(0.0, f64::max) / scale;
+    println!("support forces {sum:?} N, total load {total:?} N, gap {gap:.3e} relative");
+    assert!(gap < 1e-9, "support forces {sum:?} do not balance the load {total:?}: {gap:.3e}");
+}
+
+/// The largest ratio of kinetic to elastic energy seen at any step.
+struct Rest {
+    worst: f64,
+}
+
+impl Observer for Rest {
+    fn observe(&mut self, level: &Level) -> Result<Control, OutputError> {
+        let d = level.solver.level_diagnostics();
+        self.worst = self.worst.max(d.kinetic_j / d.elastic_j);
+        Ok(Control::Continue)
+    }
+}
+
+#[test]
+fn an_undamped_run_from_equilibrium_stays_at_rest() {
+    let text = format!("{}\n[duration]\nend_time_s = 10.0\n", wire(50, ""));
+    let plan = scenario::plan(&common::scenario(&text), "<test>").expect("valid");
+    let mut rest = Rest { worst: 0.0 };
+    let o = run_observed(plan, &RunOptions::default(), &mut [&mut rest]).expect("stable");
+    println!("{} steps, largest kinetic / elastic energy {:.3e}", o.summary.steps, rest.worst);
+    assert!(o.summary.steps > 1000);
+    assert!(rest.worst < 1e-12, "kinetic energy reached {:.3e} of the elastic energy", rest.worst);
+}
+
+#[test]
+fn equilibrium_start_matches_the_exact_catenary_at_second_order() {
+    let exact = ElasticCatenary::level(SPAN_M, SPAN_M, RHO_PAPER * 9.81, EA_PAPER_N).expect("exact catenary");
+    let sag = exact.midspan_displacement_m()[2];
+    let ns = [25, 50, 100, 200];
+    let errs: Vec<f64> = ns
+        .iter()
+        .map(|&n| {
+            let text = format!("{}\n[duration]\nend_time_s = 0.1\n", wire(n, ""));
+            let plan = scenario::plan(&common::scenario(&text), "<test>").expect("valid");
+            let mid = plan.solver.wire.midspan();
+            ((mid[2] - sag) / sag).abs()
+        })
+        .collect();
+    for (n, e) in ns.iter().zip(&errs) {
+        println!("N = {n:4}: relative sag error {e:.3e}");
+    }
+    let order = observed_order(&ns[1..], &errs[1..]);
+    println!("observed order (last three) {order:.4}");
+    assert!((order - 2.0).abs() < 0.1, "order {order}");
+    assert!(errs[1] < 5e-4, "N = 50: {:.3e}", errs[1]);
+}
