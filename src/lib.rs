@@ -21,4 +21,5 @@ pub mod paper;
 pub mod run;
 pub mod scenario;
 pub mod scheme;
+pub mod statics;
 pub mod wire;
