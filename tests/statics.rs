@@ -125,3 +125,108 @@ fn converges_with_wind_and_weight_and_unequal_supports() {
         }
     }
 }
+
+/// Largest distance [m] between the nodes and the exact elastic catenary at `s_i = i l0 / N`.
+fn catenary_error(n: usize) -> f64 {
+    let mut s = solver(wire(n, SPAN_M, 0.0, LawKind::TensionOnly, Start::Parabola), None);
+    statics::solve(&mut s, &StaticOptions::default()).unwrap_or_else(|e| panic!("N={n}: {e}"));
+    let exact = ElasticCatenary::solve([0.0; 3], [0.0, SPAN_M, 0.0], SPAN_M, [0.0, 0.0, -RHO * G], EA_N)
+        .unwrap_or_else(|e| panic!("exact catenary: {e}"));
+    (0..=n)
+        .map(|i| {
+            let (p, q) = (s.wire.position(i), exact.position(i as f64 * SPAN_M / n as f64));
+            ((p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2) + (p[2] - q[2]).powi(2)).sqrt()
+        })
+        .fold(0.0, f64::max)
+}
+
+#[test]
+fn agrees_with_the_elastic_catenary_to_second_order() {
+    // The lumped-mass chain is a second-order discretisation of the string: the nodal error is O(ds^2).
+    // Least-squares slope of ln(error) against ln(N) over the three finest grids.
+    let ns = [25usize, 50, 100, 200];
+    let errs: Vec<f64> = ns.iter().map(|&n| catenary_error(n)).collect();
+    println!("N {ns:?}: largest nodal error [m] {errs:?}");
+    let pts: Vec<(f64, f64)> = ns[1..].iter().zip(&errs[1..]).map(|(&n, &e)| ((n as f64).ln(), e.ln())).collect();
+    let (mx, my) = (pts.iter().map(|p| p.0).sum::<f64>() / 3.0, pts.iter().map(|p| p.1).sum::<f64>() / 3.0);
+    let slope =
+        pts.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum::<f64>() / pts.iter().map(|p| (p.0 - mx).powi(2)).sum::<f64>();
+    println!("observed order {:.4}", -slope);
+    assert!((-slope - 2.0).abs() < 0.1, "observed order {}", -slope);
+    // And the error itself is small against the sag (about 7 m): below 1e-3 of it on N = 200.
+    assert!(errs[3] < 7e-3, "error {} m at N = 200", errs[3]);
+}
+
+#[test]
+fn support_reactions_balance_the_weight_and_the_wind() {
+    for wind in [None, Some(paper_wind())] {
+        let (n, l0) = (200, 165.0);
+        let mut s = solver(wire(n, l0, 20.0, LawKind::TensionOnly, Start::Straight), wind);
+        statics::solve(&mut s, &StaticOptions::default()).unwrap_or_else(|e| panic!("{e}"));
+        // The total external load, independently of the residual: the weight rho0 l0 g, and the wind on
+        // each segment from the law itself at the final shape.
+        let mut load = [0.0, 0.0, -RHO * l0 * G];
+        if let Some(WindLoad::Aerodynamic(a)) = wind {
+            for j in 0..n {
+                let (p, q) = (s.wire.position(j), s.wire.position(j + 1));
+                let d = [q[0] - p[0], q[1] - p[1], q[2] - p[2]];
+                let len = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
+                let f = a.force([d[0] / len, d[1] / len, d[2] / len], len, [0.0; 3]);
+                (0..3).for_each(|k| load[k] += f[k]);
+            }
+        }
+        let reactions = statics::support_reactions(&mut s);
+        assert_eq!(reactions.iter().map(|r| r.0).collect::<Vec<_>>(), vec![0, n]);
+        let sum: Vec<f64> = (0..3).map(|k| reactions.iter().map(|r| r.1[k]).sum::<f64>() + load[k]).collect();
+        let scale = load.iter().map(|c| c * c).sum::<f64>().sqrt();
+        let gap = sum.iter().map(|c| c * c).sum::<f64>().sqrt() / scale;
+        println!("wind {}: load {load:?} N, reactions {reactions:?}, imbalance {gap:.2e}", wind.is_some());
+        // Free-node residuals sum to at most N tol ~ 2e-4 N against 1.6e3 N; rounding of the sums ~1e-13.
+        assert!(gap < 1e-9, "imbalance {gap:e}");
+    }
+}
+
+#[test]
+fn unsupported_cases_give_typed_errors() {
+    let mut s = solver(wire(50, SPAN_M, 0.0, LawKind::TensionOnly, Start::Parabola), Some(paper_wind()));
+    s.loads.wind_gate = WindGate::Downwind;
+    assert_eq!(statics::solve(&mut s, &StaticOptions::default()), Err(StaticError::DownwindGate));
+    let mut s = solver(wire(50, SPAN_M, 0.0, LawKind::TensionOnly, Start::Parabola), None);
+    s.wire.break_segment(7);
+    assert_eq!(statics::solve(&mut s, &StaticOptions::default()), Err(StaticError::BrokenSegment { segment: 7 }));
+    let mut s = solver(wire(50, SPAN_M, 0.0, LawKind::TensionOnly, Start::Parabola), None);
+    s.wire.x[2][10] = f64::NAN;
+    assert_eq!(statics::solve(&mut s, &StaticOptions::default()), Err(StaticError::NonFinite { iteration: 0 }));
+    // Two coincident nodes: the tangent is 0/0.
+    let mut s = solver(wire(50, SPAN_M, 0.0, LawKind::TensionOnly, Start::Straight), None);
+    s.wire.x[1][11] = s.wire.x[1][10];
+    assert!(matches!(statics::solve(&mut s, &StaticOptions::default()), Err(StaticError::NonFinite { .. })));
+    // An unreachable tolerance: NotConverged, with the residual reached.
+    let mut s = solver(wire(50, SPAN_M, 0.0, LawKind::TensionOnly, Start::Parabola), None);
+    let opts = StaticOptions { tolerance_n: Some(1e-30), max_iterations: 8 };
+    assert!(matches!(statics::solve(&mut s, &opts), Err(StaticError::NotConverged { iterations: 8, .. })));
+}
+
+#[test]
+fn jacobian_replica_matches_the_kernel() {
+    // Wind with damping, internal friction and velocities: every term of the replica is exercised.
+    let mut w = wire(40, 161.0, 5.0, LawKind::TensionOnly, Start::Parabola);
+    w.conductor.internal_friction_n_s = 50.0;
+    for i in 1..40 {
+        w.v[0][i] = 0.3 * (i as f64).sin();
+        w.v[2][i] = 0.2 * (i as f64).cos();
+    }
+    let mut s = solver(
+        w,
+        Some(WindLoad::Aerodynamic(Aerodynamic {
+            direction: [1.0, 0.0, 0.0],
+            qd_cn: QD * 1.8446,
+            qd_ct: QD * 0.0554,
+            mu_over_u: 0.2 / 20.0,
+        })),
+    );
+    let gap = statics::jacobian::replica_gap(&mut s);
+    // Forces of order EA e ~ 5e3 N: rounding ~1e-12 of it.
+    println!("replica gap {gap:.2e} N");
+    assert!(gap < 1e-8, "gap {gap:e} N");
+}

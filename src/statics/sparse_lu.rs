@@ -9,8 +9,8 @@
 
 use faer::dyn_stack::{MemBuffer, MemStack, StackReq};
 use faer::linalg::lu::partial_pivoting::factor::PartialPivLuParams;
-use faer::sparse::linalg::LuError;
 use faer::sparse::linalg::lu::{LuSymbolicParams, NumericLu, SymbolicLu, factorize_symbolic_lu};
+use faer::sparse::linalg::{LuError, SupernodalThreshold};
 use faer::sparse::{Pair, SparseColMatRef, SymbolicSparseColMatRef};
 use faer::{Conj, MatMut, Par, Spec};
 
@@ -70,27 +70,45 @@ impl SparseLu {
         if let Some(p) = pattern.iter().find(|p| p.row >= n || p.col >= n) {
             return Err(SparseLuError::Pattern(format!("entry ({}, {}) outside {n} x {n}", p.row, p.col)));
         }
-        // Sort the entries by (column, row), merge repeats, and remember where each one went.
-        let mut order: Vec<usize> = (0..pattern.len()).collect();
-        order.sort_unstable_by_key(|&e| (pattern[e].col, pattern[e].row));
+        // Order the entries by (column, row) in linear time: a counting sort by column, then a sort of
+        // each column's few entries by row; merge repeats and remember where each entry went.
+        let mut start = vec![0usize; n + 1];
+        for p in pattern {
+            start[p.col + 1] += 1;
+        }
+        for c in 0..n {
+            start[c + 1] += start[c];
+        }
+        let mut order = vec![0usize; pattern.len()];
+        let mut next = start.clone();
+        for (e, p) in pattern.iter().enumerate() {
+            order[next[p.col]] = e;
+            next[p.col] += 1;
+        }
         let mut col_ptr = vec![0usize; n + 1];
         let mut row_idx = Vec::with_capacity(pattern.len());
         let mut slot = vec![0usize; pattern.len()];
-        let mut last: Option<(usize, usize)> = None;
-        for &e in &order {
-            let key = (pattern[e].col, pattern[e].row);
-            if last != Some(key) {
-                row_idx.push(key.1);
-                col_ptr[key.0 + 1] += 1;
-                last = Some(key);
-            }
-            slot[e] = row_idx.len() - 1;
-        }
         for c in 0..n {
-            col_ptr[c + 1] += col_ptr[c];
+            let entries = &mut order[start[c]..start[c + 1]];
+            entries.sort_unstable_by_key(|&e| pattern[e].row);
+            let mut last = None;
+            for &e in entries.iter() {
+                if last != Some(pattern[e].row) {
+                    row_idx.push(pattern[e].row);
+                    last = Some(pattern[e].row);
+                }
+                slot[e] = row_idx.len() - 1;
+            }
+            col_ptr[c + 1] = row_idx.len();
         }
         let structure = SymbolicSparseColMatRef::new_checked(n, n, &col_ptr, None, &row_idx);
-        let symbolic = factorize_symbolic_lu(structure, LuSymbolicParams::default())
+        // Simplicial (column-by-column) factorisation: the Jacobian is banded with 3x3 blocks, too thin
+        // for supernodes to pay for their symbolic analysis and dense-block overhead.
+        let params = LuSymbolicParams {
+            supernodal_flop_ratio_threshold: SupernodalThreshold::FORCE_SIMPLICIAL,
+            ..Default::default()
+        };
+        let symbolic = factorize_symbolic_lu(structure, params)
             .map_err(|e| SparseLuError::Pattern(format!("symbolic LU failed: {e:?}")))?;
         let params: Spec<PartialPivLuParams, f64> = Default::default();
         let req = StackReq::any_of(&[
