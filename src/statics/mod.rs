@@ -57,7 +57,7 @@
 //! (the full step near the solution, one residual evaluation), else jumps to the secant root of `g`
 //! (at least a tenth of the trial). If `g(0) <= 0` (a step that is not an energy descent, possible with
 //! compression in the linear law or with wind), it halves the step until the residual's Euclidean norm
-//! falls. If 12 trials fail, the step is rejected and the floor multiplied by 10 (divided by 10 again,
+//! falls. If the full step and 12 further trials fail, the step is rejected and the floor multiplied by 10 (divided by 10 again,
 //! down to 1, after each accepted step).
 //!
 //! # Cost
