@@ -22,4 +22,5 @@ pub mod output;
 pub mod run;
 pub mod scenario;
 pub mod scheme;
+pub mod statics;
 pub mod wire;

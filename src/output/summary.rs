@@ -42,6 +42,17 @@ pub struct ProbeSummary {
     pub peak_displacement_m: [Peak; 3],
 }
 
+/// The static solve that gave the initial state (`[initial] shape = "equilibrium"`).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct EquilibriumReport {
+    /// Newton iterations
+    pub iterations: usize,
+    /// largest nodal force residual at the end [N]
+    pub residual_n: f64,
+    /// the tolerance it met [N]
+    pub tolerance_n: f64,
+}
+
 /// An event applied during the run.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct EventRecord {
@@ -95,6 +106,9 @@ pub struct Summary {
     pub wall_time_s: f64,
     /// throughput of the time loop, nodes x steps / wall time [1/s]
     pub node_steps_per_second: f64,
+    /// the static solve of the initial state, when the run started from equilibrium
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub initial_equilibrium: Option<EquilibriumReport>,
     /// the supports, in node order
     pub supports: Vec<SupportSummary>,
     /// the probes (mid-span first)

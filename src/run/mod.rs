@@ -19,7 +19,7 @@ use std::time::Instant;
 use crate::events::EventState;
 use crate::output::clock::LANDING;
 use crate::output::rows::write_atomically;
-use crate::output::summary::{EventRecord, InstabilityReport, ProbeSummary, SupportSummary};
+use crate::output::summary::{EquilibriumReport, EventRecord, InstabilityReport, ProbeSummary, SupportSummary};
 use crate::output::{Peaks, ProbePoint, Recorder, Sample, Snapshots, Summary, Timeseries};
 use crate::scenario::Plan;
 use crate::scenario::build::Stop;
@@ -199,6 +199,11 @@ pub fn run_observed<'o>(
         wave_speed_m_per_s: plan.wave_speed_m_per_s,
         wall_time_s: wall,
         node_steps_per_second: if wall > 0.0 { (n + 1) as f64 * solver.steps as f64 / wall } else { 0.0 },
+        initial_equilibrium: plan.initial_equilibrium.as_ref().map(|r| EquilibriumReport {
+            iterations: r.iterations,
+            residual_n: r.residual_n,
+            tolerance_n: r.tolerance_n,
+        }),
         supports: supports
             .iter()
             .zip(&forces)

@@ -7,6 +7,7 @@ use super::validate::Problem;
 use crate::events::{Action, Event};
 use crate::heat::HeatBoundary;
 use crate::scheme::{Explicit, Ground, Loads, StepParams, WindGate, WindLoad};
+use crate::statics::{self, StaticOptions, StaticReport};
 use crate::wire::aero::{Aerodynamic, UniformNormal};
 use crate::wire::tension::LawKind;
 use crate::wire::{Conductor, Wire};
@@ -70,6 +71,8 @@ pub struct Plan {
     pub probes: Vec<(String, f64)>,
     /// the run's peaks count from this time [s]; default the first event's time (0 without events)
     pub peaks_from_s: Option<f64>,
+    /// the static solve of `[initial] shape = "equilibrium"` (iterations, residual), if the scenario asked
+    pub initial_equilibrium: Option<StaticReport>,
 }
 
 impl Plan {
@@ -98,7 +101,7 @@ fn initial_nodes(s: &Scenario) -> ([Vec<f64>; 3], f64) {
     let chord = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
     let mut x = [vec![0.0; n + 1], vec![0.0; n + 1], vec![0.0; n + 1]];
     match (s.initial.shape, s.initial.sag_m) {
-        (ShapeSpec::Parabola, Some(f)) => {
+        (ShapeSpec::Parabola | ShapeSpec::Equilibrium, Some(f)) => {
             // p(u) = A + u (B - A) - 4 f u (1 - u) e3; the arc length s(u) has a closed form (below),
             // inverted by bisection for each node.
             let total = parabola_length(chord, f);
@@ -264,6 +267,10 @@ pub fn build(s: &Scenario) -> Result<Plan, Vec<Problem>> {
     let mut events: Vec<Event> = s.events.iter().map(|e| event(e, n)).collect();
     events.sort_by(|p, q| p.time_s.total_cmp(&q.time_s));
     let mut solver = Explicit::new(wire, loads, params);
+    let initial_equilibrium = match s.initial.shape {
+        ShapeSpec::Equilibrium => Some(equilibrium(&mut solver, s)?),
+        _ => None,
+    };
     solver.ground =
         s.ground.as_ref().filter(|g| g.active).map(|g| Ground { height_m: g.height_m, restitution: g.restitution });
     Ok(Plan {
@@ -282,7 +289,28 @@ pub fn build(s: &Scenario) -> Result<Plan, Vec<Problem>> {
         ground: s.ground.as_ref().map(|g| Ground { height_m: g.height_m, restitution: g.restitution }),
         probes: s.output.probes.iter().map(|p| (p.name.clone(), p.at_fraction)).collect(),
         peaks_from_s: s.output.peaks_from_s,
+        initial_equilibrium,
     })
+}
+
+/// Move the solver's wire to the static equilibrium of its loads at `t = 0` (before ground contact is
+/// switched on). A failed solve, or an equilibrium below the ground plane, is a problem of the field
+/// `initial.shape`, with the solver's iterations and residual.
+fn equilibrium(solver: &mut Explicit, s: &Scenario) -> Result<StaticReport, Vec<Problem>> {
+    let fail =
+        |why: String| vec![Problem { field: "initial.shape".into(), value: "\"equilibrium\"".into(), allowed: why }];
+    let report = statics::solve(solver, &StaticOptions::default())
+        .map_err(|e| fail(format!("the static equilibrium of the loads at t = 0 was not found: {e}")))?;
+    if let Some(g) = s.ground.as_ref().filter(|g| g.active) {
+        let low = solver.wire.x[2].iter().copied().fold(f64::INFINITY, f64::min);
+        if low < g.height_m {
+            return Err(fail(format!(
+                "the equilibrium reaches x3 = {low:.6} m, below the ground plane ground.height_m = {} m",
+                g.height_m
+            )));
+        }
+    }
+    Ok(report)
 }
 
 #[cfg(test)]

@@ -116,16 +116,22 @@ pub enum ShapeSpec {
     Straight,
     /// a parabola in the vertical plane through the chord, sagging `sag_m` below the chord's midpoint
     Parabola,
+    /// at rest on the static equilibrium of the loads at `t = 0` (weight, uniform load, the wind at its
+    /// initial scale), solved by Newton's method on the scheme's own discrete equations
+    /// ([`crate::statics`]); the unstretched length is `geometry.unstretched_length_m`, or the length of
+    /// the parabola of `sag_m` if given, or the chord
+    Equilibrium,
 }
 
 /// Initial state. The wire starts at rest; nodes are equally spaced in arc length along the shape.
 #[derive(Clone, Debug, Default, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct InitialSpec {
-    /// `"straight"` (default) or `"parabola"`
+    /// `"straight"` (default), `"parabola"` or `"equilibrium"`
     #[serde(default)]
     pub shape: ShapeSpec,
-    /// mid-span sag `f` [m] below the chord, measured vertically; only with `shape = "parabola"`
+    /// mid-span sag `f` [m] below the chord, measured vertically; required with `shape = "parabola"`,
+    /// optional with `"equilibrium"` (then the start of the Newton iteration and the default length)
     #[serde(default)]
     pub sag_m: Option<f64>,
 }

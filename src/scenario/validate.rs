@@ -180,7 +180,8 @@ pub(crate) fn check(s: &Scenario) -> (Vec<Problem>, Derived) {
         (ShapeSpec::Parabola, None) => {
             c.fail("initial.sag_m", "(missing)", "required with initial.shape = \"parabola\"")
         }
-        (ShapeSpec::Parabola, Some(f)) => {
+        (ShapeSpec::Equilibrium, None) => {}
+        (ShapeSpec::Parabola | ShapeSpec::Equilibrium, Some(f)) => {
             let hi = chord.unwrap_or(f64::INFINITY);
             if c.within("initial.sag_m", f, f64::MIN_POSITIVE, hi, "must be > 0 and at most the chord length") {
                 shape_length = chord.map(|l| super::build::parabola_length(l, f));

@@ -6,11 +6,10 @@
 //! pass/fail verdict. `verify all` collects them in `REPORT.md`.
 //!
 //! Shared machinery: [`setup`] (the paper's test wire and loads), [`convergence`] (least-squares order,
-//! Richardson extrapolation, Grid Convergence Index), [`dual`] (forward-mode derivatives for the
-//! Jacobians), [`implicit`] (static Newton solver and Newmark integrator on faer), [`report`].
+//! Richardson extrapolation, Grid Convergence Index), [`implicit`] (Newmark integrator on the library's
+//! Jacobian and sparse LU, `ohl::statics`), [`report`].
 
 pub mod convergence;
-pub mod dual;
 pub mod implicit;
 pub mod report;
 pub mod setup;

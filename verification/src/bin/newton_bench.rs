@@ -1,15 +1,16 @@
-//! Wall time of the static Newton solve (faer sparse LU) on the paper's catenary (weight only, 160 m,
-//! 1 kg/m, EA = 7.92e5 N) from a parabolic start through the exact mid-span sag, at N = 100, 1000, 5000;
-//! the fastest of several repetitions, single thread. Writes `figures/bench/newton.csv`.
+//! Wall time of the library's static solve (`ohl::statics::solve`: Newton, exact Jacobian, faer sparse
+//! LU) on the paper's catenary (weight only, 160 m, 1 kg/m, EA = 7.92e5 N) from a parabolic start through
+//! the exact mid-span sag, at N = 100, 1000, 5000, to the solver's default tolerance; the fastest of
+//! several repetitions, single thread. Writes `figures/bench/newton.csv`.
 //!
 //! `cargo run --release -p verification --bin newton_bench [-- OUT_DIR]`
 
 use std::io::Write;
 use std::time::Instant;
 
+use ohl::statics::{StaticOptions, solve};
 use ohl::wire::tension::LawKind;
-use verification::implicit::newton::solve_static;
-use verification::setup::{Case, G_M_PER_S2, RHO_KG_PER_M, SPAN_M, loads, parabolic_wire, params, residual_tolerance};
+use verification::setup::{Case, G_M_PER_S2, SPAN_M, loads, parabolic_wire, params};
 
 fn main() {
     // One thread, as every figure of figures/bench (faer would otherwise use its thread pool).
@@ -20,7 +21,6 @@ fn main() {
     println!("static Newton, catenary from a parabola of sag {:.3} m, fastest of the repetitions", -sag);
     println!("{:>6} {:>10} {:>12} {:>14} {:>14}", "N", "iterations", "residual [N]", "wall [s]", "per iteration [s]");
     for (n, reps) in [(100, 20), (1000, 10), (5000, 4)] {
-        let tol = residual_tolerance(n, RHO_KG_PER_M * G_M_PER_S2);
         let mut best = f64::INFINITY;
         let mut report = None;
         for _ in 0..reps {
@@ -30,16 +30,27 @@ fn main() {
                 params(n, 0.9, 0.0, 0.0),
             );
             let t0 = Instant::now();
-            let r = solve_static(&mut s, tol, 40).unwrap_or_else(|e| panic!("N = {n}: {e}"));
+            let r = match solve(&mut s, &StaticOptions::default()) {
+                Ok(r) => r,
+                Err(e) => {
+                    eprintln!("error: N = {n}: {e}");
+                    std::process::exit(1);
+                }
+            };
             best = best.min(t0.elapsed().as_secs_f64());
             report = Some(r);
         }
         let r = report.expect("at least one repetition");
-        let iters = r.step_factors.len();
-        let res = *r.residual_history.last().expect("history");
+        let (iters, res) = (r.iterations, r.residual_n);
         println!("{n:>6} {iters:>10} {res:>12.3e} {best:>14.4e} {:>14.4e}", best / iters.max(1) as f64);
         let hist: Vec<String> = r.residual_history.iter().map(|v| format!("{v:.1e}")).collect();
-        println!("       residual history [N]: {}; step factors {:?}", hist.join(" "), r.step_factors);
+        println!(
+            "       residual history [N]: {}; step factors {:?}; tolerance {:.1e} N; residual evaluations {}",
+            hist.join(" "),
+            r.step_factors,
+            r.tolerance_n,
+            r.residual_evaluations
+        );
         rows.push((n, iters, res, best));
     }
     let path = std::path::Path::new(&out).join("newton.csv");

@@ -11,9 +11,9 @@
 //! ones, and with the velocity-dependent forces (Kelvin-Voigt rate, wind damping (2.6)) taken at the new
 //! level, fully implicitly: no lag, unlike the explicit kernel.
 
-use super::SparseLu;
-use super::jacobian::{assemble, unknown_index};
 use ohl::scheme::Explicit;
+use ohl::statics::SparseLu;
+use ohl::statics::jacobian::{pattern, unknown_index, values};
 
 /// The integrator state. The wrapped `Explicit` only evaluates forces (its `wire.x` and `wire.v` are
 /// overwritten with the Newmark state).
@@ -60,7 +60,7 @@ impl Newmark {
                 }
             }
         };
-        let (mut pattern, mut values) = (Vec::new(), Vec::new());
+        let mut vals = Vec::new();
         for it in 1..=30 {
             set_state(&mut self.sys, &anew);
             self.sys.net_force(&mut f);
@@ -81,11 +81,15 @@ impl Newmark {
                 return Ok(it - 1);
             }
             // A dx = G with A = dF/dx + 2/dt dF/dv - 4/dt^2 M = -dG/dx; then a_{n+1} += 4/dt^2 dx.
-            assemble(&self.sys, 2.0 / dt, 4.0 / (dt * dt), &mut pattern, &mut values);
-            if self.lu.is_none() {
-                self.lu = Some(SparseLu::new(n, &pattern)?);
-            }
-            let dx = self.lu.as_ref().expect("created above").solve(&values, &g)?;
+            values(&self.sys, 2.0 / dt, 4.0 / (dt * dt), None, &mut vals);
+            let lu = match &mut self.lu {
+                Some(lu) => lu,
+                None => {
+                    self.lu.insert(SparseLu::new(n, &pattern(&self.sys), faer::Par::Seq).map_err(|e| e.to_string())?)
+                }
+            };
+            let mut dx = g;
+            lu.solve(&vals, &mut dx).map_err(|e| e.to_string())?;
             for (i, o) in idx.iter().enumerate() {
                 if let Some(r) = o {
                     for k in 0..3 {

@@ -1,7 +1,7 @@
 //! Study `implicit`: the implicit reference on faer.
 //!
 //! (a) Static equilibrium of the discrete equations by Newton's method with the exact sparse Jacobian
-//!     (`implicit::newton`): residual histories (quadratic convergence) and the agreement of the settled
+//!     (`ohl::statics::solve`): residual histories (quadratic convergence) and the agreement of the settled
 //!     explicit state with it (required: 1e-8 relative to the deflection).
 //! (b) Newmark's average-acceleration integrator with Newton and faer (`implicit::newmark`) on the same
 //!     discrete equations: its own time-step convergence (expected order 2), and its difference from the
@@ -12,14 +12,14 @@
 
 use super::static_convergence::grid;
 use crate::convergence::{ls_order, pair_orders};
-use crate::implicit::jacobian::replica_gap;
 use crate::implicit::newmark::Newmark;
-use crate::implicit::newton::solve_static;
 use crate::report::{Budget, StudyReport, Table, sci};
 use crate::setup::{
     Case, G_M_PER_S2, RHO_KG_PER_M, SPAN_M, aerodynamic_wind, loads, params, positions, straight_wire, wave_speed,
 };
 use ohl::scheme::Explicit;
+use ohl::statics::jacobian::replica_gap;
+use ohl::statics::{StaticOptions, solve as solve_static};
 use ohl::wire::tension::LawKind;
 use ohl_app::plot::{Chart, Series, Style, render};
 use rayon::prelude::*;
@@ -57,7 +57,14 @@ pub fn initial(problem: Dynamic, n: usize, dt: f64) -> Result<Explicit, String> 
                 loads(G_M_PER_S2, [0.0; 3], None),
                 p,
             );
-            solve_static(&mut s, crate::setup::residual_tolerance(n, RHO_KG_PER_M * G_M_PER_S2), 40)?;
+            solve_static(
+                &mut s,
+                &StaticOptions {
+                    tolerance_n: Some(crate::setup::residual_tolerance(n, RHO_KG_PER_M * G_M_PER_S2)),
+                    max_iterations: 40,
+                },
+            )
+            .map_err(|e| e.to_string())?;
             s.loads.wind = Some(aerodynamic_wind(0.2));
             Ok(s)
         }

@@ -5,7 +5,7 @@
 //! damping `zeta = 2 omega_1`, near-critical for the fundamental transverse mode; the equilibrium does not
 //! depend on it) until the largest nodal residual is below `setup::residual_tolerance` (1e-10 w ds, or 200 times the
 //! rounding floor `EA N eps` of the axial forces if larger) and every speed below 1e-8 m/s.
-//! The same discrete equations are solved by Newton's method (`implicit::newton`) for comparison.
+//! The same discrete equations are solved by Newton's method (`ohl::statics::solve`) for comparison.
 //!
 //! Error measures against the exact solution (nodes at `s_i = i l / N`): the relative error of the
 //! mid-span deflection and the largest nodal distance over the deflection. Expected order 2: the
@@ -14,9 +14,9 @@
 //! fine-grid GCI (F_s = 1.25) of the mid-span deflection.
 
 use crate::convergence::{gci, ls_order, three_grid_order};
-use crate::implicit::newton::solve_static;
 use crate::report::{Budget, StudyReport, Table, sci};
 use crate::setup::{Case, SPAN_M, explicit_for, max_distance, positions, settle};
+use ohl::statics::{StaticOptions, solve as solve_static};
 use ohl_app::plot::{Chart, Series, Style, render};
 use rayon::prelude::*;
 use std::path::Path;
@@ -62,7 +62,8 @@ pub fn grid(case: Case, n: usize) -> Result<GridResult, String> {
     let mut s = explicit_for(case, n, 0.9, zeta, start);
     let mut nw = s.clone();
     let t = settle(&mut s, tol, 2000.0).map_err(|e| format!("{} N={n}: {e}", case.name()))?;
-    let rep = solve_static(&mut nw, tol, 40).map_err(|e| format!("{} N={n}: {e}", case.name()))?;
+    let rep = solve_static(&mut nw, &StaticOptions { tolerance_n: Some(tol), max_iterations: 40 })
+        .map_err(|e| format!("{} N={n}: {e}", case.name()))?;
     let ex: Vec<[f64; 3]> = (0..=n).map(|i| exact.position(i as f64 * ds)).collect();
     let num = positions(&s.wire);
     let defl_exact = exact.midspan_deflection_m();

@@ -1,0 +1,348 @@
+//! The static solver: regularised Newton iterations with a backtracking line search (module doc of
+//! [`crate::statics`] for the equations and the globalisation).
+
+use super::jacobian::{max_axial_stiffness_n_per_m, pattern, unknown_index, values};
+use super::sparse_lu::{SparseLu, SparseLuError};
+use crate::scheme::{Explicit, WindGate, WindLoad};
+use crate::wire::aero::SegmentLoad;
+
+/// Options of [`solve`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct StaticOptions {
+    /// Convergence tolerance on the largest nodal residual `max_i |F_i|` over the free nodes [N]. `None`
+    /// derives it from the problem ([`default_tolerance_n`]): `1e-10` of the largest nodal load, but never
+    /// below 32 times the rounding floor of the residual.
+    pub tolerance_n: Option<f64>,
+    /// Largest number of Newton iterations (linear solves) [-].
+    pub max_iterations: usize,
+}
+
+impl Default for StaticOptions {
+    fn default() -> Self {
+        StaticOptions { tolerance_n: None, max_iterations: 100 }
+    }
+}
+
+/// Outcome of a converged [`solve`].
+#[derive(Clone, Debug, PartialEq)]
+pub struct StaticReport {
+    /// Newton iterations taken (one Jacobian factorisation each) [-]
+    pub iterations: usize,
+    /// final largest nodal residual `max_i |F_i|` over the free nodes [N]
+    pub residual_n: f64,
+    /// the tolerance it met [N]
+    pub tolerance_n: f64,
+    /// largest nodal residual [N] at the start and after each iteration (`iterations + 1` values)
+    pub residual_history: Vec<f64>,
+    /// step-length factor of each iteration (1 = full Newton step; 0 = step rejected, regularisation
+    /// raised) [-]
+    pub step_factors: Vec<f64>,
+    /// tension floor `T_min` of the regularisation in each iteration [N] (module doc; it changes nothing
+    /// where the tension exceeds it)
+    pub tension_floors_n: Vec<f64>,
+    /// residual evaluations spent, line-search trials included [-]
+    pub residual_evaluations: usize,
+}
+
+/// Why [`solve`] failed. The solver's positions are then those of the last accepted iterate.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum StaticError {
+    /// The iteration limit was reached first.
+    #[error(
+        "static solve did not converge in {iterations} iterations: residual {residual_n:.3e} N > {tolerance_n:.3e} N"
+    )]
+    NotConverged {
+        /// iterations taken [-]
+        iterations: usize,
+        /// largest nodal residual reached [N]
+        residual_n: f64,
+        /// the tolerance [N]
+        tolerance_n: f64,
+    },
+    /// The regularised Jacobian stayed singular (or the step not finite) at the largest regularisation.
+    #[error("Jacobian singular at iteration {iteration}")]
+    Singular {
+        /// iteration at which it happened [-]
+        iteration: usize,
+    },
+    /// The residual is not finite (coincident nodes, or non-finite positions or loads).
+    #[error("residual not finite at iteration {iteration}")]
+    NonFinite {
+        /// iteration at which it happened [-]
+        iteration: usize,
+    },
+    /// A segment is broken: the static problem of a broken wire is out of scope.
+    #[error("segment {segment} is broken: static solve of a broken wire is not supported")]
+    BrokenSegment {
+        /// the first broken segment
+        segment: usize,
+    },
+    /// The downwind wind gate depends on the direction of motion, which a static state does not have.
+    #[error("the downwind wind gate has no static meaning")]
+    DownwindGate,
+    /// Ground contact is an inequality constraint that the static solver does not model.
+    #[error("ground contact is not supported by the static solver")]
+    GroundContact,
+    /// The wire has no free node.
+    #[error("the wire has no free node")]
+    NoFreeNode,
+    /// The sparse pattern was rejected (internal error).
+    #[error("sparse factorisation: {0}")]
+    Factorisation(String),
+}
+
+/// Line-search trials after the full step before the step is rejected.
+const MAX_TRIALS: usize = 12;
+
+fn dot(a: &[f64], b: &[f64]) -> f64 {
+    a.iter().zip(b).map(|(x, y)| x * y).sum()
+}
+
+/// External load on every node [N] at the current positions (velocities taken as zero): gravity
+/// `-m_i g e3`, half of each adjacent segment's distributed load `(P + q L) / 2` while the node is
+/// exposed, and the prescribed nodal forces. Three arrays of length `N + 1`.
+pub fn nodal_loads(s: &Explicit) -> [Vec<f64>; 3] {
+    let w = &s.wire;
+    let n1 = w.nodes();
+    let mut out = [vec![0.0; n1], vec![0.0; n1], vec![0.0; n1]];
+    for i in 0..n1 {
+        out[2][i] = -w.mass[i] * s.loads.gravity_m_per_s2;
+        if let Some(f) = &s.nodal_force {
+            for k in 0..3 {
+                out[k][i] += f[k][i];
+            }
+        }
+    }
+    let q = s.loads.uniform_load_n_per_m;
+    for j in 0..w.segments() {
+        let (a, b) = (w.position(j), w.position(j + 1));
+        let d = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
+        let len = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
+        let t = [d[0] / len, d[1] / len, d[2] / len];
+        let p = match s.loads.wind {
+            None => [0.0; 3],
+            Some(WindLoad::UniformNormal(mut u)) => {
+                u.pressure_n_per_m *= s.loads.wind_scale;
+                u.force(t, len, [0.0; 3])
+            }
+            Some(WindLoad::Aerodynamic(mut a)) => {
+                a.qd_cn *= s.loads.wind_scale;
+                a.qd_ct *= s.loads.wind_scale;
+                a.force(t, len, [0.0; 3])
+            }
+        };
+        let h = 0.5 * w.intact[j];
+        for k in 0..3 {
+            let e = h * (p[k] + q[k] * w.reference_length[j]);
+            out[k][j] += e * w.exposed[j];
+            out[k][j + 1] += e * w.exposed[j + 1];
+        }
+    }
+    out
+}
+
+/// Largest external load on a free node `max_i |f_i|` [N] ([`nodal_loads`]) and their sum of magnitudes
+/// over the free nodes `sum_i |f_i|` [N].
+fn load_scales(s: &Explicit) -> (f64, f64) {
+    let f = nodal_loads(s);
+    let (mut max, mut sum) = (0.0_f64, 0.0);
+    for i in 0..s.wire.nodes() {
+        if s.wire.free[i] > 0.0 {
+            let m = (f[0][i] * f[0][i] + f[1][i] * f[1][i] + f[2][i] * f[2][i]).sqrt();
+            max = max.max(m);
+            sum += m;
+        }
+    }
+    (max, sum)
+}
+
+/// Rounding floor of the residual [N]: positions of magnitude `X = max_i |r_i|` carry an absolute
+/// rounding error `X eps`, which a segment's axial stiffness `EA / l0` turns into a tension error
+/// `(EA / l0) X eps`; below this no iteration can push the largest nodal force.
+pub fn rounding_floor_n(s: &Explicit) -> f64 {
+    let w = &s.wire;
+    let x = (0..w.nodes()).map(|i| w.position(i).iter().map(|c| c * c).sum::<f64>().sqrt()).fold(0.0, f64::max);
+    max_axial_stiffness_n_per_m(s) * x.max(w.total_rest_length()) * f64::EPSILON
+}
+
+/// The default tolerance [N]: `max(1e-10 f_max, 32 R)` with `f_max` the largest nodal load and `R` the
+/// [`rounding_floor_n`]. The first term asks for positions good to about 1e-10 of the deflection the loads
+/// cause; on fine grids of stiff wires that is below rounding, and the second term (32 times the floor:
+/// the residual of a converged solve is observed at 1 to 2 times `R`) then governs.
+pub fn default_tolerance_n(s: &Explicit) -> f64 {
+    let (f_max, _) = load_scales(s);
+    (1e-10 * f_max).max(32.0 * rounding_floor_n(s))
+}
+
+fn check_supported(s: &Explicit) -> Result<(), StaticError> {
+    if s.loads.wind.is_some() && s.loads.wind_gate == WindGate::Downwind {
+        return Err(StaticError::DownwindGate);
+    }
+    if let Some(j) = s.wire.intact.iter().position(|&v| v != 1.0) {
+        return Err(StaticError::BrokenSegment { segment: j });
+    }
+    if s.ground.is_some() {
+        return Err(StaticError::GroundContact);
+    }
+    if !s.wire.free.iter().any(|&f| f > 0.0) {
+        return Err(StaticError::NoFreeNode);
+    }
+    Ok(())
+}
+
+/// Residual of the free nodes: `-F` into `rhs` (the Newton right-hand side), and the largest `|F_i|`
+/// and the Euclidean norm `|F|` [N].
+fn residual(s: &mut Explicit, idx: &[Option<usize>], f: &mut [Vec<f64>; 3], rhs: &mut [f64]) -> (f64, f64) {
+    s.net_force(f);
+    let (mut max, mut sq) = (0.0_f64, 0.0);
+    for (i, o) in idx.iter().enumerate() {
+        if let Some(r) = o {
+            for k in 0..3 {
+                let v = f[k][i];
+                rhs[r + k] = -v;
+                max = max.max(v.abs());
+                sq += v * v;
+            }
+        }
+    }
+    // NaN anywhere makes the norm NaN, which the caller tests.
+    (if sq.is_finite() { max } else { f64::NAN }, sq.sqrt())
+}
+
+/// Move the free nodes of `s` to the static equilibrium of its loads, `F_i(x) = 0` (module doc of
+/// [`crate::statics`]), starting from its current positions; the velocities are set to zero. The
+/// fixed nodes, the loads and the rest lengths are those of `s`. Linear solves run on one thread.
+///
+/// Supported: tension-only and linear laws, gravity, uniform load, wind (both laws, gate
+/// [`WindGate::Always`]), prescribed nodal forces. Errors (never panics) on a broken segment, the downwind
+/// gate, ground contact, a wire without free nodes, non-finite residuals, or no convergence.
+pub fn solve(s: &mut Explicit, opts: &StaticOptions) -> Result<StaticReport, StaticError> {
+    check_supported(s)?;
+    for v in &mut s.wire.v {
+        v.fill(0.0);
+    }
+    let (idx, n) = unknown_index(s);
+    let n1 = s.wire.nodes();
+    let pat = pattern(s);
+    let mut lu = SparseLu::new(n, &pat, faer::Par::Seq).map_err(|e| StaticError::Factorisation(e.to_string()))?;
+    let mut vals = Vec::with_capacity(pat.len());
+    let mut f = [vec![0.0; n1], vec![0.0; n1], vec![0.0; n1]];
+    let mut rhs = vec![0.0; n];
+    let mut dx = vec![0.0; n];
+    let mut x0 = vec![0.0; n];
+
+    let (f_max, f_sum) = load_scales(s);
+    let tol = opts.tolerance_n.unwrap_or_else(|| (1e-10 * f_max).max(32.0 * rounding_floor_n(s)));
+    // Tension scale of the regularisation: the sum of the nodal loads, the tension of a wire whose sag is
+    // an eighth of its span (`H = w l^2 / (8 f)`); a node load scale for its decay.
+    let tension_scale = f_sum;
+    let load_scale = if f_max > 0.0 { f_max } else { 1.0 };
+
+    let (mut r, mut r2) = residual(s, &idx, &mut f, &mut rhs);
+    let mut report = StaticReport {
+        iterations: 0,
+        residual_n: r,
+        tolerance_n: tol,
+        residual_history: vec![r],
+        step_factors: Vec::new(),
+        tension_floors_n: Vec::new(),
+        residual_evaluations: 1,
+    };
+    let mut boost = 1.0_f64;
+    for it in 0..opts.max_iterations {
+        if !r.is_finite() {
+            return Err(StaticError::NonFinite { iteration: it });
+        }
+        if r <= tol {
+            return Ok(report);
+        }
+        report.iterations = it + 1;
+        // The floor decays with the residual (Levenberg-Marquardt-like), so the last iterations are pure
+        // Newton steps where every segment is taut.
+        let floor = boost * tension_scale * (r / load_scale).min(1.0);
+        values(s, 0.0, 0.0, Some(floor), &mut vals);
+        dx.copy_from_slice(&rhs);
+        match lu.solve(&vals, &mut dx) {
+            Ok(()) => {}
+            Err(SparseLuError::Singular) => {
+                // More regularisation makes the matrix definite for a wire under gravity; give up only
+                // at absurd levels.
+                if boost > 1e12 {
+                    return Err(StaticError::Singular { iteration: it });
+                }
+                boost *= 10.0;
+                report.step_factors.push(0.0);
+                report.tension_floors_n.push(floor);
+                report.residual_history.push(r);
+                continue;
+            }
+            Err(e) => return Err(StaticError::Factorisation(e.to_string())),
+        }
+        for (i, o) in idx.iter().enumerate() {
+            if let Some(q) = o {
+                for k in 0..3 {
+                    x0[q + k] = s.wire.x[k][i];
+                }
+            }
+        }
+        // Line search (module doc): along the step, the work of the residual `g(lambda) = F(x + lambda
+        // dx) . dx` is the energy's slope for conservative loads. While `g(0) > 0`, accept the first trial
+        // that has not overshot the minimum along the line by much, `g >= -g(0) / 2`, and otherwise jump
+        // to the secant root of `g`; if `g(0) <= 0`, halve until the residual's norm falls.
+        let g0 = -dot(&rhs, &dx);
+        let mut lambda = 1.0;
+        let mut accepted = false;
+        for _ in 0..=MAX_TRIALS {
+            for (i, o) in idx.iter().enumerate() {
+                if let Some(q) = o {
+                    for k in 0..3 {
+                        s.wire.x[k][i] = x0[q + k] + lambda * dx[q + k];
+                    }
+                }
+            }
+            let (rt, r2t) = residual(s, &idx, &mut f, &mut rhs);
+            report.residual_evaluations += 1;
+            let g = -dot(&rhs, &dx);
+            if !r2t.is_finite() {
+                lambda *= 0.5;
+            } else if g0 > 0.0 && g.is_finite() {
+                if g >= -0.5 * g0 {
+                    (r, r2) = (rt, r2t);
+                    accepted = true;
+                    break;
+                }
+                lambda *= (g0 / (g0 - g)).max(0.1);
+            } else if r2t < r2 {
+                (r, r2) = (rt, r2t);
+                accepted = true;
+                break;
+            } else {
+                lambda *= 0.5;
+            }
+        }
+        if accepted {
+            boost = (boost / 10.0).max(1.0);
+        } else {
+            // No trial lowered the residual: back to the last iterate, regularise more.
+            for (i, o) in idx.iter().enumerate() {
+                if let Some(q) = o {
+                    for k in 0..3 {
+                        s.wire.x[k][i] = x0[q + k];
+                    }
+                }
+            }
+            (r, r2) = residual(s, &idx, &mut f, &mut rhs);
+            report.residual_evaluations += 1;
+            boost *= 10.0;
+            lambda = 0.0;
+        }
+        report.step_factors.push(lambda);
+        report.tension_floors_n.push(floor);
+        report.residual_history.push(r);
+        report.residual_n = r;
+    }
+    if r <= tol {
+        return Ok(report);
+    }
+    Err(StaticError::NotConverged { iterations: report.iterations, residual_n: r, tolerance_n: tol })
+}

@@ -1,0 +1,232 @@
+//! The static solver (`ohl::statics`) on the paper's test wire (sections 4.1-4.3): span 160 m,
+//! `EA = 80734 g` N, `rho0 = 1 kg/m`, `g = 9.81 m/s^2`; wind `q d = rho_air U^2 d / 2` with
+//! `rho_air = 1.225 kg/m^3`, `U = 20 m/s`, `d = 0.01553 m`, `c_n = 1.8446`, `c_tau = 0.0554`.
+//!
+//! Tolerances: a converged solve must reach the solver's default tolerance, `max(1e-10 f_max, 32 R)`
+//! with `f_max` the largest nodal load and `R = (EA / l0) X eps` the rounding floor of the residual
+//! (positions of size `X` known to `X eps`, turned into force by the axial stiffness): on these grids
+//! `32 R` governs, `1e-7` to `6e-5` of the nodal weight, and no double-precision iteration can go lower.
+
+use ohl::exact::ElasticCatenary;
+use ohl::scheme::{Explicit, Loads, StepParams, WindGate, WindLoad};
+use ohl::statics::{self, StaticError, StaticOptions, StaticReport};
+use ohl::wire::aero::{Aerodynamic, SegmentLoad};
+use ohl::wire::tension::LawKind;
+use ohl::wire::{Conductor, Wire};
+
+const EA_N: f64 = 80734.0 * 9.81;
+const SPAN_M: f64 = 160.0;
+const G: f64 = 9.81;
+const RHO: f64 = 1.0;
+const QD: f64 = 0.5 * 1.225 * 20.0 * 20.0 * 0.01553;
+
+/// How the iteration starts.
+#[derive(Clone, Copy, Debug)]
+enum Start {
+    /// nodes evenly on the chord
+    Straight,
+    /// nodes on a parabola through the supports, mid-span sag `span / 20` below the chord
+    Parabola,
+}
+
+/// The paper's wire on `n` segments of total unstretched length `l0_m` between `(0, 0, 0)` and
+/// `(0, 160, h_m)`.
+fn wire(n: usize, l0_m: f64, h_m: f64, law: LawKind, start: Start) -> Wire {
+    let conductor = Conductor { axial_stiffness_n: EA_N, internal_friction_n_s: 0.0, law };
+    let mut x = [vec![0.0; n + 1], vec![0.0; n + 1], vec![0.0; n + 1]];
+    for i in 0..=n {
+        let s = i as f64 / n as f64;
+        x[1][i] = s * SPAN_M;
+        x[2][i] = s * h_m;
+        if let Start::Parabola = start {
+            x[2][i] -= 4.0 * s * (1.0 - s) * SPAN_M / 20.0;
+        }
+    }
+    Wire::new(conductor, x, vec![l0_m / n as f64; n], RHO)
+}
+
+fn solver(w: Wire, wind: Option<WindLoad>) -> Explicit {
+    let loads = Loads {
+        gravity_m_per_s2: G,
+        uniform_load_n_per_m: [0.0; 3],
+        wind,
+        wind_scale: 1.0,
+        wind_gate: WindGate::Always,
+    };
+    let params = StepParams { dt_s: 1e-4, smoothing: 0.0, mass_damping_per_s: 0.0, max_speed_m_per_s: 1e3 };
+    Explicit::new(w, loads, params)
+}
+
+fn paper_wind() -> WindLoad {
+    WindLoad::Aerodynamic(Aerodynamic {
+        direction: [1.0, 0.0, 0.0],
+        qd_cn: QD * 1.8446,
+        qd_ct: QD * 0.0554,
+        mu_over_u: 0.0,
+    })
+}
+
+/// The local orders of the terminal iterations: for consecutive residuals normalised by the nodal load,
+/// `rho_k = r_k / f`, with `rho_k < 1e-2` (the asymptotic range) and `r_{k+1}` above 10 times the
+/// rounding floor (below that rounding, not the method, sets the residual), `p = ln rho_{k+1} / ln
+/// rho_k`. Quadratic convergence `rho_{k+1} = C rho_k^2` gives `p = 2 + ln C / ln rho_k`, at least 1.5
+/// for any `C <= 10`; a linear rate of 0.1 at `rho_k = 1e-3` gives 1.33.
+fn terminal_orders(rep: &StaticReport, floor: f64, load: f64) -> Vec<f64> {
+    rep.residual_history
+        .windows(2)
+        .filter(|w| w[0] < 1e-2 * load && w[1] > 10.0 * floor)
+        .map(|w| (w[1] / load).ln() / (w[0] / load).ln())
+        .collect()
+}
+
+fn check_converges(n: usize, l0: f64, h: f64, law: LawKind, start: Start, wind: Option<WindLoad>) -> StaticReport {
+    let mut s = solver(wire(n, l0, h, law, start), wind);
+    let floor = statics::rounding_floor_n(&s);
+    let load = RHO * G * SPAN_M / n as f64;
+    let rep = statics::solve(&mut s, &StaticOptions::default())
+        .unwrap_or_else(|e| panic!("N={n} L0={l0} h={h} {law:?} {start:?}: {e}"));
+    let hist: Vec<String> = rep.residual_history.iter().map(|r| format!("{r:.1e}")).collect();
+    let p = terminal_orders(&rep, floor, load);
+    println!(
+        "N={n} L0={l0} h={h} {law:?} {start:?} wind={}: {} it, residual {:.2e} N (tol {:.2e}, floor {:.2e}), orders {p:?}\n  history {}\n  steps {:?}",
+        wind.is_some(),
+        rep.iterations,
+        rep.residual_n,
+        rep.tolerance_n,
+        floor,
+        hist.join(" "),
+        rep.step_factors
+    );
+    assert!(rep.residual_n <= rep.tolerance_n && rep.tolerance_n <= 32.0 * floor + 1e-10 * 2.0 * load);
+    // The last iterations are Newton's: quadratic (order 2; 1.6 allows for the shape of the constant).
+    assert!(p.iter().all(|&p| p >= 1.5), "terminal orders {p:?}");
+    rep
+}
+
+#[test]
+fn converges_from_straight_and_parabola_for_slack_and_taut_wires() {
+    for law in [LawKind::TensionOnly, LawKind::Linear] {
+        for l0 in [160.0, 165.0, 159.9] {
+            for start in [Start::Straight, Start::Parabola] {
+                for n in [100, 1000] {
+                    check_converges(n, l0, 0.0, law, start, None);
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn converges_with_wind_and_weight_and_unequal_supports() {
+    for start in [Start::Straight, Start::Parabola] {
+        for (l0, h) in [(160.0, 0.0), (165.0, 20.0), (161.5, -30.0)] {
+            check_converges(200, l0, h, LawKind::TensionOnly, start, Some(paper_wind()));
+            check_converges(200, l0, h, LawKind::TensionOnly, start, None);
+        }
+    }
+}
+
+/// Largest distance [m] between the nodes and the exact elastic catenary at `s_i = i l0 / N`.
+fn catenary_error(n: usize) -> f64 {
+    let mut s = solver(wire(n, SPAN_M, 0.0, LawKind::TensionOnly, Start::Parabola), None);
+    statics::solve(&mut s, &StaticOptions::default()).unwrap_or_else(|e| panic!("N={n}: {e}"));
+    let exact = ElasticCatenary::solve([0.0; 3], [0.0, SPAN_M, 0.0], SPAN_M, [0.0, 0.0, -RHO * G], EA_N)
+        .unwrap_or_else(|e| panic!("exact catenary: {e}"));
+    (0..=n)
+        .map(|i| {
+            let (p, q) = (s.wire.position(i), exact.position(i as f64 * SPAN_M / n as f64));
+            ((p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2) + (p[2] - q[2]).powi(2)).sqrt()
+        })
+        .fold(0.0, f64::max)
+}
+
+#[test]
+fn agrees_with_the_elastic_catenary_to_second_order() {
+    // The lumped-mass chain is a second-order discretisation of the string: the nodal error is O(ds^2).
+    // Least-squares slope of ln(error) against ln(N) over the three finest grids.
+    let ns = [25usize, 50, 100, 200];
+    let errs: Vec<f64> = ns.iter().map(|&n| catenary_error(n)).collect();
+    println!("N {ns:?}: largest nodal error [m] {errs:?}");
+    let pts: Vec<(f64, f64)> = ns[1..].iter().zip(&errs[1..]).map(|(&n, &e)| ((n as f64).ln(), e.ln())).collect();
+    let (mx, my) = (pts.iter().map(|p| p.0).sum::<f64>() / 3.0, pts.iter().map(|p| p.1).sum::<f64>() / 3.0);
+    let slope =
+        pts.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum::<f64>() / pts.iter().map(|p| (p.0 - mx).powi(2)).sum::<f64>();
+    println!("observed order {:.4}", -slope);
+    assert!((-slope - 2.0).abs() < 0.1, "observed order {}", -slope);
+    // And the error itself is small against the sag (about 7 m): below 1e-3 of it on N = 200.
+    assert!(errs[3] < 7e-3, "error {} m at N = 200", errs[3]);
+}
+
+#[test]
+fn support_reactions_balance_the_weight_and_the_wind() {
+    for wind in [None, Some(paper_wind())] {
+        let (n, l0) = (200, 165.0);
+        let mut s = solver(wire(n, l0, 20.0, LawKind::TensionOnly, Start::Straight), wind);
+        statics::solve(&mut s, &StaticOptions::default()).unwrap_or_else(|e| panic!("{e}"));
+        // The total external load, independently of the residual: the weight rho0 l0 g, and the wind on
+        // each segment from the law itself at the final shape.
+        let mut load = [0.0, 0.0, -RHO * l0 * G];
+        if let Some(WindLoad::Aerodynamic(a)) = wind {
+            for j in 0..n {
+                let (p, q) = (s.wire.position(j), s.wire.position(j + 1));
+                let d = [q[0] - p[0], q[1] - p[1], q[2] - p[2]];
+                let len = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
+                let f = a.force([d[0] / len, d[1] / len, d[2] / len], len, [0.0; 3]);
+                (0..3).for_each(|k| load[k] += f[k]);
+            }
+        }
+        let reactions = statics::support_reactions(&mut s);
+        assert_eq!(reactions.iter().map(|r| r.0).collect::<Vec<_>>(), vec![0, n]);
+        let sum: Vec<f64> = (0..3).map(|k| reactions.iter().map(|r| r.1[k]).sum::<f64>() + load[k]).collect();
+        let scale = load.iter().map(|c| c * c).sum::<f64>().sqrt();
+        let gap = sum.iter().map(|c| c * c).sum::<f64>().sqrt() / scale;
+        println!("wind {}: load {load:?} N, reactions {reactions:?}, imbalance {gap:.2e}", wind.is_some());
+        // Free-node residuals sum to at most N tol ~ 2e-4 N against 1.6e3 N; rounding of the sums ~1e-13.
+        assert!(gap < 1e-9, "imbalance {gap:e}");
+    }
+}
+
+#[test]
+fn unsupported_cases_give_typed_errors() {
+    let mut s = solver(wire(50, SPAN_M, 0.0, LawKind::TensionOnly, Start::Parabola), Some(paper_wind()));
+    s.loads.wind_gate = WindGate::Downwind;
+    assert_eq!(statics::solve(&mut s, &StaticOptions::default()), Err(StaticError::DownwindGate));
+    let mut s = solver(wire(50, SPAN_M, 0.0, LawKind::TensionOnly, Start::Parabola), None);
+    s.wire.break_segment(7);
+    assert_eq!(statics::solve(&mut s, &StaticOptions::default()), Err(StaticError::BrokenSegment { segment: 7 }));
+    let mut s = solver(wire(50, SPAN_M, 0.0, LawKind::TensionOnly, Start::Parabola), None);
+    s.wire.x[2][10] = f64::NAN;
+    assert_eq!(statics::solve(&mut s, &StaticOptions::default()), Err(StaticError::NonFinite { iteration: 0 }));
+    // Two coincident nodes: the tangent is 0/0.
+    let mut s = solver(wire(50, SPAN_M, 0.0, LawKind::TensionOnly, Start::Straight), None);
+    s.wire.x[1][11] = s.wire.x[1][10];
+    assert!(matches!(statics::solve(&mut s, &StaticOptions::default()), Err(StaticError::NonFinite { .. })));
+    // An unreachable tolerance: NotConverged, with the residual reached.
+    let mut s = solver(wire(50, SPAN_M, 0.0, LawKind::TensionOnly, Start::Parabola), None);
+    let opts = StaticOptions { tolerance_n: Some(1e-30), max_iterations: 8 };
+    assert!(matches!(statics::solve(&mut s, &opts), Err(StaticError::NotConverged { iterations: 8, .. })));
+}
+
+#[test]
+fn jacobian_replica_matches_the_kernel() {
+    // Wind with damping, internal friction and velocities: every term of the replica is exercised.
+    let mut w = wire(40, 161.0, 5.0, LawKind::TensionOnly, Start::Parabola);
+    w.internal_friction_n_s.fill(50.0);
+    for i in 1..40 {
+        w.v[0][i] = 0.3 * (i as f64).sin();
+        w.v[2][i] = 0.2 * (i as f64).cos();
+    }
+    let mut s = solver(
+        w,
+        Some(WindLoad::Aerodynamic(Aerodynamic {
+            direction: [1.0, 0.0, 0.0],
+            qd_cn: QD * 1.8446,
+            qd_ct: QD * 0.0554,
+            mu_over_u: 0.2 / 20.0,
+        })),
+    );
+    let gap = statics::jacobian::replica_gap(&mut s);
+    // Forces of order EA e ~ 5e3 N: rounding ~1e-12 of it.
+    println!("replica gap {gap:.2e} N");
+    assert!(gap < 1e-8, "gap {gap:e} N");
+}
