@@ -54,7 +54,7 @@ fn support_forces_balance_the_total_load_at_equilibrium() {
     s.evaluate_forces();
     let mut forces = Vec::new();
     s.support_forces(&mut forces);
-    let length: f64 = s.wire.reference_length.iter().sum();
+    let length: f64 = s.wire().reference_length.iter().sum();
     let total = [q[0] * length, q[1] * length, (q[2] - RHO_PAPER * 9.81) * length];
     let sum: [f64; 3] = [0, 1, 2].map(|k| forces.iter().map(|(_, f)| f[k]).sum());
     let scale = total.iter().map(|x| x * x).sum::<f64>().sqrt();
@@ -97,7 +97,7 @@ fn equilibrium_start_matches_the_exact_catenary_at_second_order() {
         .map(|&n| {
             let text = format!("{}\n[duration]\nend_time_s = 0.1\n", wire(n, ""));
             let plan = scenario::plan(&common::scenario(&text), "<test>").expect("valid");
-            let mid = plan.solver.wire.midspan();
+            let mid = plan.solver.wire().midspan();
             ((mid[2] - sag) / sag).abs()
         })
         .collect();

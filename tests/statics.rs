@@ -134,7 +134,7 @@ fn catenary_error(n: usize) -> f64 {
         .unwrap_or_else(|e| panic!("exact catenary: {e}"));
     (0..=n)
         .map(|i| {
-            let (p, q) = (s.wire.position(i), exact.position(i as f64 * SPAN_M / n as f64));
+            let (p, q) = (s.wire().position(i), exact.position(i as f64 * SPAN_M / n as f64));
             ((p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2) + (p[2] - q[2]).powi(2)).sqrt()
         })
         .fold(0.0, f64::max)
@@ -168,7 +168,7 @@ fn support_reactions_balance_the_weight_and_the_wind() {
         let mut load = [0.0, 0.0, -RHO * l0 * G];
         if let Some(WindLoad::Aerodynamic(a)) = wind {
             for j in 0..n {
-                let (p, q) = (s.wire.position(j), s.wire.position(j + 1));
+                let (p, q) = (s.wire().position(j), s.wire().position(j + 1));
                 let d = [q[0] - p[0], q[1] - p[1], q[2] - p[2]];
                 let len = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
                 let f = a.force([d[0] / len, d[1] / len, d[2] / len], len, [0.0; 3]);
@@ -189,17 +189,17 @@ fn support_reactions_balance_the_weight_and_the_wind() {
 #[test]
 fn unsupported_cases_give_typed_errors() {
     let mut s = solver(wire(50, SPAN_M, 0.0, LawKind::TensionOnly, Start::Parabola), Some(paper_wind()));
-    s.loads.wind_gate = WindGate::Downwind;
+    s.loads_mut().wind_gate = WindGate::Downwind;
     assert_eq!(statics::solve(&mut s, &StaticOptions::default()), Err(StaticError::DownwindGate));
     let mut s = solver(wire(50, SPAN_M, 0.0, LawKind::TensionOnly, Start::Parabola), None);
-    s.wire.break_segment(7);
+    s.wire_mut().break_segment(7);
     assert_eq!(statics::solve(&mut s, &StaticOptions::default()), Err(StaticError::BrokenSegment { segment: 7 }));
     let mut s = solver(wire(50, SPAN_M, 0.0, LawKind::TensionOnly, Start::Parabola), None);
-    s.wire.x[2][10] = f64::NAN;
+    s.wire_mut().x[2][10] = f64::NAN;
     assert_eq!(statics::solve(&mut s, &StaticOptions::default()), Err(StaticError::NonFinite { iteration: 0 }));
     // Two coincident nodes: the tangent is 0/0.
     let mut s = solver(wire(50, SPAN_M, 0.0, LawKind::TensionOnly, Start::Straight), None);
-    s.wire.x[1][11] = s.wire.x[1][10];
+    s.wire_mut().x[1][11] = s.wire().x[1][10];
     assert!(matches!(statics::solve(&mut s, &StaticOptions::default()), Err(StaticError::NonFinite { .. })));
     // An unreachable tolerance: NotConverged, with the residual reached.
     let mut s = solver(wire(50, SPAN_M, 0.0, LawKind::TensionOnly, Start::Parabola), None);

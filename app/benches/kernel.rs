@@ -15,7 +15,7 @@ fn kernel(c: &mut Criterion) {
             let steps = 2000 / (1 + n / 1000);
             group.throughput(Throughput::Elements(((n + 1) * steps) as u64));
             let initial = config.solver(n);
-            let dt = initial.params.dt_s;
+            let dt = initial.params().dt_s;
             group.bench_function(format!("N={n}"), |b| {
                 b.iter_batched_ref(
                     || initial.clone(),

@@ -41,7 +41,7 @@ pub const EPISODE_STEPS: usize = 4000;
 /// for these configurations would be a kernel bug).
 pub fn run_fixed_steps(config: Config, n: usize, steps: usize) -> Explicit {
     let mut s = config.solver(n);
-    let dt = s.params.dt_s;
+    let dt = s.params().dt_s;
     for _ in 0..steps {
         s.step(dt).unwrap_or_else(|e| panic!("{} N = {n}: {e}", config.name()));
     }
@@ -52,7 +52,7 @@ pub fn run_fixed_steps(config: Config, n: usize, steps: usize) -> Explicit {
 /// chance) bitwise identical states, the check that an optimised kernel computes what the old one did.
 pub fn state_hash(s: &Explicit) -> u64 {
     let mut h: u64 = 0xcbf2_9ce4_8422_2325;
-    for a in s.wire.x.iter().chain(&s.wire.v) {
+    for a in s.wire().x.iter().chain(&s.wire().v) {
         for v in a {
             for b in v.to_bits().to_le_bytes() {
                 h = (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3);
@@ -101,7 +101,7 @@ fn median(mut v: Vec<f64>) -> f64 {
 pub fn measure_kernel(config: Config, n: usize, node_steps: f64, reps: usize) -> KernelResult {
     let initial = config.solver(n);
     let steps = steps_per_rep(n, node_steps);
-    let dt = initial.params.dt_s;
+    let dt = initial.params().dt_s;
     let mut times = Vec::with_capacity(reps);
     for rep in 0..=reps {
         // Episodes of at most EPISODE_STEPS steps, each from a fresh (untimed) clone of the initial state.
@@ -190,10 +190,10 @@ pub fn measure_run(n: usize, reps: usize, out_dir: &Path) -> Result<RunTiming, R
         let t0 = Instant::now();
         let o = run(plan.clone(), &opts)?;
         run_s = run_s.min(t0.elapsed().as_secs_f64());
-        steps = o.solver.steps;
+        steps = o.solver.steps();
         rows = (o.summary.final_time_s / plan.sample_interval_s).round() as usize + 1;
     }
-    let dt = plan.solver.params.dt_s;
+    let dt = plan.solver.params().dt_s;
     let mut steps_only_s = f64::INFINITY;
     for _ in 0..reps.max(1) {
         let mut s = plan.solver.clone();
@@ -504,7 +504,7 @@ mod tests {
         // the 3D cases move across the span (the wind blows along +x1).
         for c in Config::ALL {
             let s = run_fixed_steps(c, 20, 200);
-            let max_x1 = s.wire.x[0].iter().fold(0.0_f64, |m, v| m.max(v.abs()));
+            let max_x1 = s.wire().x[0].iter().fold(0.0_f64, |m, v| m.max(v.abs()));
             match c {
                 Config::PlaneWeight => assert_eq!(max_x1, 0.0),
                 _ => assert!(max_x1 > 0.0, "{}", c.name()),

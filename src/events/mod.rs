@@ -80,23 +80,23 @@ impl EventState {
     fn apply(&mut self, solver: &mut Explicit, a: &Action, at_s: f64, t: f64) -> String {
         match a.clone() {
             Action::Break { segment: j } => {
-                solver.wire.break_segment(j);
+                solver.wire_mut().break_segment(j);
                 format!("break of segment {j} (between nodes {j} and {})", j + 1)
             }
             Action::Ice { segments: r, delta_kg_per_m } => {
                 let text = format!("linear density {delta_kg_per_m:+} kg/m on segments {r:?}");
-                solver.wire.add_linear_density(r, delta_kg_per_m);
+                solver.wire_mut().add_linear_density(r, delta_kg_per_m);
                 text
             }
             Action::Wind { scale, gate } => {
                 self.gust = None;
-                solver.loads.wind_scale = scale;
-                solver.loads.wind_gate = gate;
+                solver.loads_mut().wind_scale = scale;
+                solver.loads_mut().wind_gate = gate;
                 format!("wind multiplier {scale}, gate {gate:?}")
             }
             Action::Gust { period_s, amplitude, gate } => {
                 self.gust = Some(Gust { start_s: at_s, period_s, amplitude });
-                solver.loads.wind_gate = gate;
+                solver.loads_mut().wind_gate = gate;
                 format!("gust (4.5): period {period_s} s, amplitude {amplitude}, gate {gate:?}")
             }
             Action::Temperature { segments: r, temperature_k, ramp_s } => {
@@ -104,7 +104,7 @@ impl EventState {
                 self.conduction = None;
                 self.ramps.retain(|p| p.first + p.from_k.len() <= r.start || p.first >= r.end);
                 if ramp_s > 0.0 {
-                    let from_k = solver.wire.temperature_k[r.clone()].to_vec();
+                    let from_k = solver.wire().temperature_k[r.clone()].to_vec();
                     self.ramps.push(Ramp {
                         start_s: t,
                         duration_s: ramp_s,
@@ -113,7 +113,7 @@ impl EventState {
                         to_k: temperature_k,
                     });
                 } else {
-                    solver.wire.set_temperature(r, temperature_k);
+                    solver.wire_mut().set_temperature(r, temperature_k);
                 }
                 text
             }
@@ -124,7 +124,7 @@ impl EventState {
                 );
                 self.ramps.clear();
                 self.conduction =
-                    Some(Conduction::start(&solver.wire, nodes, hold_temperature_k, heat_time_per_s, boundary));
+                    Some(Conduction::start(solver.wire(), nodes, hold_temperature_k, heat_time_per_s, boundary));
                 text
             }
             Action::HeatConductionOff => {
@@ -132,7 +132,7 @@ impl EventState {
                 "heat conduction off".into()
             }
             Action::Ground { on } => {
-                solver.ground = if on { self.ground } else { None };
+                solver.set_ground(if on { self.ground } else { None });
                 format!("ground contact {}", if on { "on" } else { "off" })
             }
         }
@@ -141,10 +141,10 @@ impl EventState {
     /// Before a step from time `t` [s]: the gust multiplier and the temperature ramps at `t`.
     pub fn before_step(&mut self, solver: &mut Explicit, t: f64) {
         if let Some(g) = &self.gust {
-            solver.loads.wind_scale = g.scale(t);
+            solver.loads_mut().wind_scale = g.scale(t);
         }
         if !self.ramps.is_empty() {
-            let w = &mut solver.wire;
+            let w = solver.wire_mut();
             self.ramps.retain(|r| !r.apply(w, t));
             w.update_rest_lengths();
         }
@@ -153,7 +153,7 @@ impl EventState {
     /// After a step of `dt` [s]: heat conduction over the step.
     pub fn after_step(&mut self, solver: &mut Explicit, dt: f64) {
         if let Some(c) = &mut self.conduction {
-            c.advance(&mut solver.wire, dt);
+            c.advance(solver.wire_mut(), dt);
         }
     }
 }

@@ -149,13 +149,13 @@ impl Observer for Peaks {
         let s = level.solver;
         let (t, tau) = (level.t_s, level.tau());
         for (d, p) in self.disp.iter_mut().zip(&self.probes) {
-            *d = p.displacement(&s.wire);
+            *d = p.displacement(s.wire());
         }
         s.support_forces(&mut self.forces);
         let tension = s.max_tension_n();
         let phase = self.phases.last_mut().expect("the first phase exists from the start");
         phase.peaks.update(t, tau, tension, &self.disp, &self.forces);
-        if t >= self.from_s - super::clock::LANDING * s.params.dt_s {
+        if t >= self.from_s - super::clock::LANDING * s.params().dt_s {
             self.run.update(t, tau, tension, &self.disp, &self.forces);
         }
         Ok(Control::Continue)

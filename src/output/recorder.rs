@@ -30,16 +30,16 @@ pub struct Probe {
 impl Probe {
     /// The probe of the solver's current state.
     pub fn of(solver: &Explicit) -> Probe {
-        let w = &solver.wire;
+        let w = &solver.wire();
         let n = w.segments();
         Probe {
-            t_s: solver.time_s,
+            t_s: solver.time_s(),
             support_tension_n: [solver.segment_tension(0), solver.segment_tension(n - 1)],
             mean_temperature_k: w.temperature_k.iter().sum::<f64>() / n as f64,
             rest_length_m: w.total_rest_length(),
             reference_length_m: w.reference_length.iter().sum(),
             mass_kg: w.total_mass(),
-            wind_scale: solver.loads.wind_scale,
+            wind_scale: solver.loads().wind_scale,
         }
     }
 }
@@ -86,13 +86,13 @@ impl Recorder {
 
 impl Observer for Recorder {
     fn observe(&mut self, level: &Level) -> Result<Control, OutputError> {
-        let tol = LANDING * level.solver.params.dt_s;
+        let tol = LANDING * level.solver.params().dt_s;
         if self.samples.due(level.t_s, tol) {
             self.rows.push(Sample::of(level, &self.mid));
             self.probes.push(Probe::of(level.solver));
         }
         if self.snapshots.due(level.t_s, tol) {
-            let w = &level.solver.wire;
+            let w = &level.solver.wire();
             self.shapes.push(Shape { t_s: level.t_s, tau: level.tau(), x: w.x.clone(), intact: w.intact.clone() });
         }
         Ok(Control::Continue)

@@ -45,7 +45,7 @@ impl Snapshots {
     }
 
     fn write(&mut self, solver: &Explicit, t_s: f64, tau: f64) -> Result<(), OutputError> {
-        let w = &solver.wire;
+        let w = &solver.wire();
         let n = w.segments();
         self.tension.clear();
         self.tension.extend((0..n).map(|j| solver.segment_tension(j)));
@@ -74,13 +74,13 @@ impl Snapshots {
             }
         }
         self.last_t_s = Some(t_s);
-        f.commit().map_err(OutputError::at(&f.path().to_path_buf()))
+        f.commit().map_err(OutputError::at(f.path()))
     }
 }
 
 impl Observer for Snapshots {
     fn observe(&mut self, level: &Level) -> Result<Control, OutputError> {
-        if self.clock.due(level.t_s, LANDING * level.solver.params.dt_s) {
+        if self.clock.due(level.t_s, LANDING * level.solver.params().dt_s) {
             self.write(level.solver, level.t_s, level.tau())?;
         }
         Ok(Control::Continue)
@@ -91,6 +91,6 @@ impl Observer for Snapshots {
             self.write(level.solver, level.t_s, level.tau())?;
         }
         let f = &mut self.file;
-        f.finish().map_err(OutputError::at(&f.path().to_path_buf()))
+        f.finish().map_err(OutputError::at(f.path()))
     }
 }

@@ -47,7 +47,7 @@ impl Sample {
     pub fn of(level: &Level, mid: &ProbePoint) -> Sample {
         let s = level.solver;
         let d = s.level_diagnostics();
-        let m = mid.displacement(&s.wire);
+        let m = mid.displacement(s.wire());
         Sample {
             t_s: level.t_s,
             tau: level.tau(),
@@ -109,7 +109,7 @@ impl Timeseries {
 
 impl Observer for Timeseries {
     fn observe(&mut self, level: &Level) -> Result<Control, OutputError> {
-        if !self.clock.due(level.t_s, LANDING * level.solver.params.dt_s) {
+        if !self.clock.due(level.t_s, LANDING * level.solver.params().dt_s) {
             return Ok(Control::Continue);
         }
         let s = Sample::of(level, &self.mid);
@@ -129,7 +129,7 @@ impl Observer for Timeseries {
             f.number(x);
         }
         for p in &self.probes {
-            for x in p.displacement(&level.solver.wire) {
+            for x in p.displacement(level.solver.wire()) {
                 f.number(x);
             }
         }
@@ -140,12 +140,12 @@ impl Observer for Timeseries {
             }
         }
         f.end_row();
-        f.commit().map_err(OutputError::at(&f.path().to_path_buf()))?;
+        f.commit().map_err(OutputError::at(f.path()))?;
         Ok(Control::Continue)
     }
 
     fn finish(&mut self, _level: &Level, _ending: &Ending) -> Result<(), OutputError> {
         let f = &mut self.file;
-        f.finish().map_err(OutputError::at(&f.path().to_path_buf()))
+        f.finish().map_err(OutputError::at(f.path()))
     }
 }

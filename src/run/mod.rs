@@ -38,10 +38,10 @@ pub fn run_loop<'o>(
     tau_per_s: f64,
     observers: &mut [&mut (dyn Observer + 'o)],
 ) -> Result<Ending, OutputError> {
-    let (dt, horizon) = (solver.params.dt_s, stop.horizon_s());
+    let (dt, horizon) = (solver.params().dt_s, stop.horizon_s());
     let tol = LANDING * dt;
     let ending = loop {
-        let t = solver.time_s;
+        let t = solver.time_s();
         let applied = timeline.apply_due(solver, t, tol);
         if applied > 0 {
             let what = timeline.log[timeline.log.len() - applied..].iter().map(|(_, w)| w.as_str());
@@ -67,14 +67,14 @@ pub fn run_loop<'o>(
             break Ending::Unstable(e);
         }
         if h < dt {
-            solver.time_s = target;
+            solver.land_on(target);
         }
         timeline.after_step(solver, h);
     };
     if matches!(ending, Ending::Unstable(_)) {
         solver.evaluate_forces();
     }
-    let level = Level { solver, t_s: solver.time_s, tau_per_s };
+    let level = Level { solver, t_s: solver.time_s(), tau_per_s };
     for o in observers.iter_mut() {
         o.finish(&level, &ending)?;
     }
@@ -136,7 +136,7 @@ pub fn run_observed<'o>(
     extra: &mut [&mut (dyn Observer + 'o)],
 ) -> Result<Outcome, RunError> {
     let mut solver = plan.solver.clone();
-    let wire = &solver.wire;
+    let wire = &solver.wire();
     let mid = ProbePoint::new(crate::output::probe::MIDSPAN, 0.5, wire);
     let named: Vec<ProbePoint> = plan.probes.iter().map(|(name, f)| ProbePoint::new(name, *f, wire)).collect();
     let all_probes: Vec<ProbePoint> = std::iter::once(mid.clone()).chain(named.iter().cloned()).collect();
@@ -172,11 +172,11 @@ pub fn run_observed<'o>(
     };
     let wall = started.elapsed().as_secs_f64();
 
-    let t = solver.time_s;
+    let t = solver.time_s();
     let last = Sample::of(&Level { solver: &solver, t_s: t, tau_per_s: plan.tau(1.0) }, &all_probes[0]);
     let mut forces = Vec::new();
     solver.support_forces(&mut forces);
-    let n = solver.wire.segments();
+    let n = solver.wire().segments();
     let run_peaks = &peaks.run;
     let summary = Summary {
         name: plan.name.clone(),
@@ -192,13 +192,13 @@ pub fn run_observed<'o>(
         peak_max_tension_n: run_peaks.max_tension.value_n,
         peak_max_tension_time_s: run_peaks.max_tension.time_s,
         final_kinetic_j: last.kinetic_j,
-        steps: solver.steps,
+        steps: solver.steps(),
         segments: n,
-        dt_s: solver.params.dt_s,
+        dt_s: solver.params().dt_s,
         courant: plan.courant,
         wave_speed_m_per_s: plan.wave_speed_m_per_s,
         wall_time_s: wall,
-        node_steps_per_second: if wall > 0.0 { (n + 1) as f64 * solver.steps as f64 / wall } else { 0.0 },
+        node_steps_per_second: if wall > 0.0 { (n + 1) as f64 * solver.steps() as f64 / wall } else { 0.0 },
         initial_equilibrium: plan.initial_equilibrium.as_ref().map(|r| EquilibriumReport {
             iterations: r.iterations,
             residual_n: r.residual_n,
@@ -221,7 +221,7 @@ pub fn run_observed<'o>(
             .map(|(p, peak)| ProbeSummary {
                 name: p.name.clone(),
                 at_fraction: p.at_fraction,
-                final_displacement_m: p.displacement(&solver.wire),
+                final_displacement_m: p.displacement(solver.wire()),
                 peak_displacement_m: *peak,
             })
             .collect(),

@@ -271,8 +271,9 @@ pub fn build(s: &Scenario) -> Result<Plan, Vec<Problem>> {
         ShapeSpec::Equilibrium => Some(equilibrium(&mut solver, s)?),
         _ => None,
     };
-    solver.ground =
-        s.ground.as_ref().filter(|g| g.active).map(|g| Ground { height_m: g.height_m, restitution: g.restitution });
+    solver.set_ground(
+        s.ground.as_ref().filter(|g| g.active).map(|g| Ground { height_m: g.height_m, restitution: g.restitution }),
+    );
     Ok(Plan {
         name: s.name.clone().unwrap_or_else(|| "scenario".into()),
         solver,
@@ -302,7 +303,7 @@ fn equilibrium(solver: &mut Explicit, s: &Scenario) -> Result<StaticReport, Vec<
     let report = statics::solve(solver, &StaticOptions::default())
         .map_err(|e| fail(format!("the static equilibrium of the loads at t = 0 was not found: {e}")))?;
     if let Some(g) = s.ground.as_ref().filter(|g| g.active) {
-        let low = solver.wire.x[2].iter().copied().fold(f64::INFINITY, f64::min);
+        let low = solver.wire().x[2].iter().copied().fold(f64::INFINITY, f64::min);
         if low < g.height_m {
             return Err(fail(format!(
                 "the equilibrium reaches x3 = {low:.6} m, below the ground plane ground.height_m = {} m",

@@ -27,7 +27,7 @@
 use super::smoothing;
 use crate::wire::Wire;
 use crate::wire::aero::{Aerodynamic, Downwind, NoWind, SegmentLoad, UniformNormal};
-use crate::wire::tension::{LawKind, Linear, TensionLaw, TensionOnly};
+use crate::wire::tension::{LawKind, Linear, TensionLaw, TensionOnly, from_order_key, order_key};
 
 /// Wind load of a run (the laws of [`crate::wire::aero`]), before the on/off scale is applied.
 #[derive(Clone, Copy, Debug)]
@@ -159,20 +159,6 @@ pub struct Diagnostics {
     pub max_tension_segment: usize,
 }
 
-/// An integer whose order is the order of the `f64` `x` (total order: `-0 < +0`, NaN above infinity for
-/// a positive-signed NaN): the bits with the magnitude bits flipped for negative numbers.
-#[inline(always)]
-fn order_key(x: f64) -> i64 {
-    let b = x.to_bits() as i64;
-    b ^ (((b >> 63) as u64) >> 1) as i64
-}
-
-/// The inverse of [`order_key`].
-#[inline(always)]
-fn from_order_key(k: i64) -> f64 {
-    f64::from_bits((k ^ (((k >> 63) as u64) >> 1) as i64) as u64)
-}
-
 /// One definition, two compiled copies: `fn NAME[generics][generic args](args) -> R = BODY;` defines the
 /// method `NAME` that calls the `#[inline(always)]` method `BODY` through a copy compiled for AVX2 where the
 /// processor has it (chosen at construction, [`Explicit::new`]) and through a copy for the baseline
@@ -208,27 +194,29 @@ macro_rules! isa_dispatch {
 /// The explicit solver: the wire, its loads and numerics, the clock, and preallocated scratch.
 #[derive(Clone, Debug)]
 pub struct Explicit {
-    /// the wire state
-    pub wire: Wire,
+    /// the wire state (read with [`Explicit::wire`], changed through [`Explicit::wire_mut`])
+    wire: Wire,
     /// the loads
-    pub loads: Loads,
+    loads: Loads,
     /// numerical parameters
-    pub params: StepParams,
+    params: StepParams,
     /// simulated time `t_n` [s]
-    pub time_s: f64,
+    time_s: f64,
     /// steps taken
-    pub steps: u64,
+    steps: u64,
     /// ground plane, if contact is on
-    pub ground: Option<Ground>,
+    ground: Option<Ground>,
     /// prescribed nodal forces `f_i` [N] added to every node's force (e.g. the source term of a
     /// manufactured solution), set by the caller before each step for the time `t_n`; `None` for none
-    pub nodal_force: Option<[Vec<f64>; 3]>,
+    nodal_force: Option<[Vec<f64>; 3]>,
     /// length of the last drift `dt_{n-1/2}` [s] (0 before the first step)
     dt_prev: f64,
     /// `fs`, `es` and `max_tension_n` hold the segment pass of the current state ([`Explicit::evaluate_forces`])
     fresh: bool,
     /// largest segment tension of the last segment pass [N]
     max_tension_n: f64,
+    /// whether any segment has internal friction (`None`: not known since the wire last changed)
+    viscous: Option<bool>,
     /// segment tension force `T t` [N], padded: index `j + 1` for segment `j`, zero at 0 and `N + 1`
     fs: [Vec<f64>; 3],
     /// half the segment load `P / 2` [N], padded like `fs`
@@ -253,6 +241,7 @@ impl Explicit {
             dt_prev: 0.0,
             fresh: false,
             max_tension_n: 0.0,
+            viscous: None,
             fs: z(),
             es: z(),
             avx2: avx2_available(),
@@ -303,11 +292,84 @@ impl Explicit {
         if ok { Ok(()) } else { Err(self.locate_instability()) }
     }
 
+    /// The wire's state (positions, velocities, segment properties).
+    pub fn wire(&self) -> &Wire {
+        &self.wire
+    }
+
+    /// The wire, to change it (an event, a temperature, a prescribed motion): the segment forces of the
+    /// current level are evaluated again before they are next used.
+    pub fn wire_mut(&mut self) -> &mut Wire {
+        self.fresh = false;
+        self.viscous = None;
+        &mut self.wire
+    }
+
+    /// The external loads.
+    pub fn loads(&self) -> &Loads {
+        &self.loads
+    }
+
+    /// The external loads, to change them (a wind switch, a gust); forces are evaluated again.
+    pub fn loads_mut(&mut self) -> &mut Loads {
+        self.fresh = false;
+        &mut self.loads
+    }
+
+    /// The numerical parameters.
+    pub fn params(&self) -> &StepParams {
+        &self.params
+    }
+
+    /// The numerical parameters, to change them; forces are evaluated again.
+    pub fn params_mut(&mut self) -> &mut StepParams {
+        self.fresh = false;
+        &mut self.params
+    }
+
+    /// Simulated time `t_n` [s].
+    pub fn time_s(&self) -> f64 {
+        self.time_s
+    }
+
+    /// Set the clock to `t_s` [s] after a step that was shortened to land on that time (the sum of the
+    /// step lengths may differ from it by rounding).
+    pub fn land_on(&mut self, t_s: f64) {
+        self.time_s = t_s;
+    }
+
+    /// Steps taken.
+    pub fn steps(&self) -> u64 {
+        self.steps
+    }
+
+    /// The ground plane in contact, if any.
+    pub fn ground(&self) -> Option<Ground> {
+        self.ground
+    }
+
+    /// Switch ground contact (a plane, or none).
+    pub fn set_ground(&mut self, g: Option<Ground>) {
+        self.ground = g;
+    }
+
+    /// The prescribed nodal forces `f_i` [N], if any.
+    pub fn nodal_force(&self) -> Option<&[Vec<f64>; 3]> {
+        self.nodal_force.as_ref()
+    }
+
+    /// Prescribe nodal forces `f_i` [N] (three arrays of length `N + 1`) added to every node's force from
+    /// now on (e.g. the source term of a manufactured solution at the time `t_n`), or none.
+    pub fn set_nodal_force(&mut self, f: Option<[Vec<f64>; 3]>) {
+        self.fresh = false;
+        self.nodal_force = f;
+    }
+
     /// Evaluate the segment pass (tension and distributed loads) of the current state, so that what is
     /// read of it at this time level ([`Explicit::max_tension_n`], [`Explicit::support_forces`],
     /// [`Explicit::diagnostics`]) costs nothing and the next [`Explicit::step`] does not repeat it. The
-    /// state must not be changed between this call and the step (a change made through the public
-    /// fields would not be seen by the step: call this again after it).
+    /// state can only change through methods that mark these forces stale, so the step always uses the
+    /// forces of the state it advances.
     pub fn evaluate_forces(&mut self) {
         self.compute_segment_forces();
         self.fresh = true;
@@ -365,24 +427,35 @@ impl Explicit {
     }
 
     fn dispatch_law<W: SegmentLoad>(&mut self, load: &W, q: [f64; 3]) {
-        match (self.wire.law, q != [0.0; 3]) {
-            (LawKind::TensionOnly, true) => self.segment_pass::<TensionOnly, W, true>(load, q),
-            (LawKind::TensionOnly, false) => self.segment_pass::<TensionOnly, W, false>(load, q),
-            (LawKind::Linear, true) => self.segment_pass::<Linear, W, true>(load, q),
-            (LawKind::Linear, false) => self.segment_pass::<Linear, W, false>(load, q),
+        let viscous = *self.viscous.get_or_insert_with(|| self.wire.internal_friction_n_s.iter().any(|&e| e != 0.0));
+        match (self.wire.law, q != [0.0; 3], viscous) {
+            (LawKind::TensionOnly, true, true) => self.segment_pass::<TensionOnly, W, true, true>(load, q),
+            (LawKind::TensionOnly, false, true) => self.segment_pass::<TensionOnly, W, false, true>(load, q),
+            (LawKind::Linear, true, true) => self.segment_pass::<Linear, W, true, true>(load, q),
+            (LawKind::Linear, false, true) => self.segment_pass::<Linear, W, false, true>(load, q),
+            (LawKind::TensionOnly, true, false) => self.segment_pass::<TensionOnly, W, true, false>(load, q),
+            (LawKind::TensionOnly, false, false) => self.segment_pass::<TensionOnly, W, false, false>(load, q),
+            (LawKind::Linear, true, false) => self.segment_pass::<Linear, W, true, false>(load, q),
+            (LawKind::Linear, false, false) => self.segment_pass::<Linear, W, false, false>(load, q),
         }
     }
 
     isa_dispatch! {
         /// The segment pass ([`Explicit::segment_pass_body`]), from the AVX2 copy where the processor has it.
-        fn segment_pass[L: TensionLaw, W: SegmentLoad, const UNIFORM: bool][L, W, UNIFORM](load: &W, q: [f64; 3]) -> ()
+        fn segment_pass[L: TensionLaw, W: SegmentLoad, const UNIFORM: bool, const VISCOUS: bool][L, W, UNIFORM, VISCOUS](
+            load: &W, q: [f64; 3]) -> ()
             = segment_pass_body;
     }
 
     /// `UNIFORM = false` skips the uniform load `q L` (all of `q` zero): the sum `P + 0 L` it saves can
-    /// differ from `P` only in the sign of a zero.
+    /// differ from `P` only in the sign of a zero. `VISCOUS = false` (no segment has internal friction)
+    /// skips the strain rate, likewise. Each segment's `EA` and `eta` are read from its own arrays.
     #[inline(always)]
-    fn segment_pass_body<L: TensionLaw, W: SegmentLoad, const UNIFORM: bool>(&mut self, load: &W, q: [f64; 3]) {
+    fn segment_pass_body<L: TensionLaw, W: SegmentLoad, const UNIFORM: bool, const VISCOUS: bool>(
+        &mut self,
+        load: &W,
+        q: [f64; 3],
+    ) {
         let w = &self.wire;
         let n = w.segments();
         let ea = &w.axial_stiffness_n[..n];
@@ -412,8 +485,14 @@ impl Explicit {
             let e = len * inv_l0 - 1.0;
             let dv = [v1b[j] - v1a[j], v2b[j] - v2a[j], v3b[j] - v3a[j]];
             let edot = (dv[0] * t[0] + dv[1] * t[1] + dv[2] * t[2]) * inv_l0;
-            let tension = L::tension(ea[j], eta[j], e, edot) * intact[j];
-            kmax = kmax.max(order_key(tension));
+            // Without internal friction anywhere (`VISCOUS = false`) the viscous term is the constant
+            // `0 * 0`: it changes only the sign of a zero tension, and the strain rate is not computed.
+            let tension = if VISCOUS {
+                L::tension(ea[j], eta[j], e, edot) * intact[j]
+            } else {
+                L::tension(ea[j], 0.0, e, 0.0) * intact[j]
+            };
+            kmax = kmax.max(L::order_key(tension));
             fs1[j] = tension * t[0];
             fs2[j] = tension * t[1];
             fs3[j] = tension * t[2];

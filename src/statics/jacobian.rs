@@ -24,26 +24,26 @@ use faer::sparse::Pair;
 /// Axial stiffness `EA` [N] of segment `j`.
 #[inline(always)]
 fn segment_ea(s: &Explicit, j: usize) -> f64 {
-    s.wire.axial_stiffness_n[j]
+    s.wire().axial_stiffness_n[j]
 }
 
 /// Internal friction `eta` [N s] of segment `j` (see [`segment_ea`]).
 #[inline(always)]
 fn segment_eta(s: &Explicit, j: usize) -> f64 {
-    s.wire.internal_friction_n_s[j]
+    s.wire().internal_friction_n_s[j]
 }
 
 /// Largest axial stiffness per unit rest length `max_j EA_j / l0_j` [N/m].
 pub fn max_axial_stiffness_n_per_m(s: &Explicit) -> f64 {
-    (0..s.wire.segments()).map(|j| segment_ea(s, j) / s.wire.rest_length[j]).fold(0.0, f64::max)
+    (0..s.wire().segments()).map(|j| segment_ea(s, j) / s.wire().rest_length[j]).fold(0.0, f64::max)
 }
 
 /// Indices of the unknowns: `Some(first index)` for a free node, `None` for a support; and their count.
 pub fn unknown_index(s: &Explicit) -> (Vec<Option<usize>>, usize) {
-    let mut idx = Vec::with_capacity(s.wire.nodes());
+    let mut idx = Vec::with_capacity(s.wire().nodes());
     let mut n = 0;
-    for i in 0..s.wire.nodes() {
-        if s.wire.free[i] > 0.0 {
+    for i in 0..s.wire().nodes() {
+        if s.wire().free[i] > 0.0 {
             idx.push(Some(n));
             n += 3;
         } else {
@@ -98,7 +98,7 @@ fn wind_force<const S: usize>(
 /// `floor_n`: `None` for the exact forces; `Some(T_min)` [N] regularises the derivatives (module doc):
 /// the *values* are then not the kernel's and only the derivatives may be used.
 pub fn segment_forces<const S: usize>(s: &Explicit, j: usize, floor_n: Option<f64>) -> ([Dual<S>; 3], [Dual<S>; 3]) {
-    let w = &s.wire;
+    let w = &s.wire();
     let var = |v: f64, k: usize| if k < S { Dual::var(v, k) } else { Dual::c(v) };
     let xa: [Dual<S>; 3] = std::array::from_fn(|k| Dual::var(w.x[k][j], k));
     let xb: [Dual<S>; 3] = std::array::from_fn(|k| Dual::var(w.x[k][j + 1], 3 + k));
@@ -132,11 +132,11 @@ pub fn segment_forces<const S: usize>(s: &Explicit, j: usize, floor_n: Option<f6
     let extra = floor_n.map_or(0.0, |f| (f - tension.v).max(0.0));
     let tension_dir: [Dual<S>; 3] = std::array::from_fn(|k| tension * t[k] + extra * t[k]);
     let vm: [Dual<S>; 3] = std::array::from_fn(|k| 0.5 * (va[k] + vb[k]));
-    let p = match &s.loads.wind {
-        Some(wl) => wind_force(wl, s.loads.wind_scale, &t, len, &vm),
+    let p = match &s.loads().wind {
+        Some(wl) => wind_force(wl, s.loads().wind_scale, &t, len, &vm),
         None => [Dual::c(0.0); 3],
     };
-    let q = s.loads.uniform_load_n_per_m;
+    let q = s.loads().uniform_load_n_per_m;
     let lref = w.reference_length[j];
     let h = 0.5 * w.intact[j];
     let es: [Dual<S>; 3] = std::array::from_fn(|k| h * (p[k] + q[k] * lref));
@@ -152,8 +152,8 @@ pub fn segment_forces<const S: usize>(s: &Explicit, j: usize, floor_n: Option<f6
 /// matrix sums them). It depends only on which nodes are free.
 pub fn pattern(s: &Explicit) -> Vec<Pair<usize, usize>> {
     let (idx, _) = unknown_index(s);
-    let mut out = Vec::with_capacity(36 * s.wire.segments() + 3 * s.wire.nodes());
-    for j in 0..s.wire.segments() {
+    let mut out = Vec::with_capacity(36 * s.wire().segments() + 3 * s.wire().nodes());
+    for j in 0..s.wire().segments() {
         for row_node in [j, j + 1] {
             let Some(r0) = idx[row_node] else { continue };
             for col_node in [j, j + 1] {
@@ -183,8 +183,8 @@ pub fn values(s: &Explicit, cv: f64, cm: f64, floor_n: Option<f64>, out: &mut Ve
 
 fn values_with<const S: usize>(s: &Explicit, cv: f64, cm: f64, floor_n: Option<f64>, out: &mut Vec<f64>) {
     out.clear();
-    let free = &s.wire.free;
-    for j in 0..s.wire.segments() {
+    let free = &s.wire().free;
+    for j in 0..s.wire().segments() {
         let (fa, fb) = segment_forces::<S>(s, j, floor_n);
         for (row_node, f) in [(j, &fa), (j + 1, &fb)] {
             if free[row_node] <= 0.0 {
@@ -203,10 +203,10 @@ fn values_with<const S: usize>(s: &Explicit, cv: f64, cm: f64, floor_n: Option<f
             }
         }
     }
-    for i in 0..s.wire.nodes() {
+    for i in 0..s.wire().nodes() {
         if free[i] > 0.0 {
             for _ in 0..3 {
-                out.push(-cm * s.wire.mass[i]);
+                out.push(-cm * s.wire().mass[i]);
             }
         }
     }
@@ -215,11 +215,11 @@ fn values_with<const S: usize>(s: &Explicit, cv: f64, cm: f64, floor_n: Option<f
 /// Largest difference [N] between the replica's nodal forces (plus gravity and prescribed forces) and
 /// the library's `net_force` at the solver's current state: rounding level when the replica is faithful.
 pub fn replica_gap(s: &mut Explicit) -> f64 {
-    let n1 = s.wire.nodes();
+    let n1 = s.wire().nodes();
     let mut lib = [vec![0.0; n1], vec![0.0; n1], vec![0.0; n1]];
     s.net_force(&mut lib);
     let mut mine = [vec![0.0; n1], vec![0.0; n1], vec![0.0; n1]];
-    for j in 0..s.wire.segments() {
+    for j in 0..s.wire().segments() {
         let (fa, fb) = segment_forces::<12>(s, j, None);
         for k in 0..3 {
             mine[k][j] += fa[k].v;
@@ -228,9 +228,9 @@ pub fn replica_gap(s: &mut Explicit) -> f64 {
     }
     let mut gap: f64 = 0.0;
     for i in 0..n1 {
-        mine[2][i] -= s.wire.mass[i] * s.loads.gravity_m_per_s2;
+        mine[2][i] -= s.wire().mass[i] * s.loads().gravity_m_per_s2;
         for k in 0..3 {
-            if let Some(f) = &s.nodal_force {
+            if let Some(f) = &s.nodal_force() {
                 mine[k][i] += f[k][i];
             }
             gap = gap.max((mine[k][i] - lib[k][i]).abs());

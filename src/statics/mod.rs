@@ -82,8 +82,8 @@ use crate::scheme::Explicit;
 /// ([`Explicit::net_force`]). At a static equilibrium the reactions balance the total external load:
 /// `sum R + sum_i f_i = 0` over all nodes.
 pub fn support_reactions(s: &mut Explicit) -> Vec<(usize, [f64; 3])> {
-    let n1 = s.wire.nodes();
+    let n1 = s.wire().nodes();
     let mut f = [vec![0.0; n1], vec![0.0; n1], vec![0.0; n1]];
     s.net_force(&mut f);
-    (0..n1).filter(|&i| s.wire.free[i] <= 0.0).map(|i| (i, [-f[0][i], -f[1][i], -f[2][i]])).collect()
+    (0..n1).filter(|&i| s.wire().free[i] <= 0.0).map(|i| (i, [-f[0][i], -f[1][i], -f[2][i]])).collect()
 }

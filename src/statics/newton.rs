@@ -102,32 +102,32 @@ fn dot(a: &[f64], b: &[f64]) -> f64 {
 /// `-m_i g e3`, half of each adjacent segment's distributed load `(P + q L) / 2` while the node is
 /// exposed, and the prescribed nodal forces. Three arrays of length `N + 1`.
 pub fn nodal_loads(s: &Explicit) -> [Vec<f64>; 3] {
-    let w = &s.wire;
+    let w = &s.wire();
     let n1 = w.nodes();
     let mut out = [vec![0.0; n1], vec![0.0; n1], vec![0.0; n1]];
     for i in 0..n1 {
-        out[2][i] = -w.mass[i] * s.loads.gravity_m_per_s2;
-        if let Some(f) = &s.nodal_force {
+        out[2][i] = -w.mass[i] * s.loads().gravity_m_per_s2;
+        if let Some(f) = &s.nodal_force() {
             for k in 0..3 {
                 out[k][i] += f[k][i];
             }
         }
     }
-    let q = s.loads.uniform_load_n_per_m;
+    let q = s.loads().uniform_load_n_per_m;
     for j in 0..w.segments() {
         let (a, b) = (w.position(j), w.position(j + 1));
         let d = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
         let len = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
         let t = [d[0] / len, d[1] / len, d[2] / len];
-        let p = match s.loads.wind {
+        let p = match s.loads().wind {
             None => [0.0; 3],
             Some(WindLoad::UniformNormal(mut u)) => {
-                u.pressure_n_per_m *= s.loads.wind_scale;
+                u.pressure_n_per_m *= s.loads().wind_scale;
                 u.force(t, len, [0.0; 3])
             }
             Some(WindLoad::Aerodynamic(mut a)) => {
-                a.qd_cn *= s.loads.wind_scale;
-                a.qd_ct *= s.loads.wind_scale;
+                a.qd_cn *= s.loads().wind_scale;
+                a.qd_ct *= s.loads().wind_scale;
                 a.force(t, len, [0.0; 3])
             }
         };
@@ -146,8 +146,8 @@ pub fn nodal_loads(s: &Explicit) -> [Vec<f64>; 3] {
 fn load_scales(s: &Explicit) -> (f64, f64) {
     let f = nodal_loads(s);
     let (mut max, mut sum) = (0.0_f64, 0.0);
-    for i in 0..s.wire.nodes() {
-        if s.wire.free[i] > 0.0 {
+    for i in 0..s.wire().nodes() {
+        if s.wire().free[i] > 0.0 {
             let m = (f[0][i] * f[0][i] + f[1][i] * f[1][i] + f[2][i] * f[2][i]).sqrt();
             max = max.max(m);
             sum += m;
@@ -160,7 +160,7 @@ fn load_scales(s: &Explicit) -> (f64, f64) {
 /// rounding error `X eps`, which a segment's axial stiffness `EA / l0` turns into a tension error
 /// `(EA / l0) X eps`; below this no iteration can push the largest nodal force.
 pub fn rounding_floor_n(s: &Explicit) -> f64 {
-    let w = &s.wire;
+    let w = &s.wire();
     let x = (0..w.nodes()).map(|i| w.position(i).iter().map(|c| c * c).sum::<f64>().sqrt()).fold(0.0, f64::max);
     max_axial_stiffness_n_per_m(s) * x.max(w.total_rest_length()) * f64::EPSILON
 }
@@ -175,16 +175,16 @@ pub fn default_tolerance_n(s: &Explicit) -> f64 {
 }
 
 fn check_supported(s: &Explicit) -> Result<(), StaticError> {
-    if s.loads.wind.is_some() && s.loads.wind_gate == WindGate::Downwind {
+    if s.loads().wind.is_some() && s.loads().wind_gate == WindGate::Downwind {
         return Err(StaticError::DownwindGate);
     }
-    if let Some(j) = s.wire.intact.iter().position(|&v| v != 1.0) {
+    if let Some(j) = s.wire().intact.iter().position(|&v| v != 1.0) {
         return Err(StaticError::BrokenSegment { segment: j });
     }
-    if s.ground.is_some() {
+    if s.ground().is_some() {
         return Err(StaticError::GroundContact);
     }
-    if !s.wire.free.iter().any(|&f| f > 0.0) {
+    if !s.wire().free.iter().any(|&f| f > 0.0) {
         return Err(StaticError::NoFreeNode);
     }
     Ok(())
@@ -218,11 +218,11 @@ fn residual(s: &mut Explicit, idx: &[Option<usize>], f: &mut [Vec<f64>; 3], rhs:
 /// gate, ground contact, a wire without free nodes, non-finite residuals, or no convergence.
 pub fn solve(s: &mut Explicit, opts: &StaticOptions) -> Result<StaticReport, StaticError> {
     check_supported(s)?;
-    for v in &mut s.wire.v {
+    for v in &mut s.wire_mut().v {
         v.fill(0.0);
     }
     let (idx, n) = unknown_index(s);
-    let n1 = s.wire.nodes();
+    let n1 = s.wire().nodes();
     let pat = pattern(s);
     let mut lu = SparseLu::new(n, &pat, faer::Par::Seq).map_err(|e| StaticError::Factorisation(e.to_string()))?;
     let mut vals = Vec::with_capacity(pat.len());
@@ -281,7 +281,7 @@ pub fn solve(s: &mut Explicit, opts: &StaticOptions) -> Result<StaticReport, Sta
         for (i, o) in idx.iter().enumerate() {
             if let Some(q) = o {
                 for k in 0..3 {
-                    x0[q + k] = s.wire.x[k][i];
+                    x0[q + k] = s.wire().x[k][i];
                 }
             }
         }
@@ -296,7 +296,7 @@ pub fn solve(s: &mut Explicit, opts: &StaticOptions) -> Result<StaticReport, Sta
             for (i, o) in idx.iter().enumerate() {
                 if let Some(q) = o {
                     for k in 0..3 {
-                        s.wire.x[k][i] = x0[q + k] + lambda * dx[q + k];
+                        s.wire_mut().x[k][i] = x0[q + k] + lambda * dx[q + k];
                     }
                 }
             }
@@ -327,7 +327,7 @@ pub fn solve(s: &mut Explicit, opts: &StaticOptions) -> Result<StaticReport, Sta
             for (i, o) in idx.iter().enumerate() {
                 if let Some(q) = o {
                     for k in 0..3 {
-                        s.wire.x[k][i] = x0[q + k];
+                        s.wire_mut().x[k][i] = x0[q + k];
                     }
                 }
             }

@@ -20,6 +20,25 @@ pub trait TensionLaw: Copy {
     fn tension(ea: f64, eta: f64, e: f64, edot: f64) -> f64;
     /// Stored elastic energy per unit stress-free length [J/m] at strain `e`.
     fn energy_density(ea: f64, e: f64) -> f64;
+    /// An integer that orders tensions of this law like the numbers (for the kernel's largest-tension
+    /// reduction, which vectorises over integers, not over floats). Inverse: [`from_order_key`].
+    fn order_key(t: f64) -> i64 {
+        order_key(t)
+    }
+}
+
+/// An integer whose order is the order of the `f64` `x` (total order: `-0 < +0`, NaN above infinity for
+/// a positive-signed NaN): the bits, with the magnitude bits flipped for negative numbers.
+#[inline(always)]
+pub fn order_key(x: f64) -> i64 {
+    let b = x.to_bits() as i64;
+    b ^ (((b >> 63) as u64) >> 1) as i64
+}
+
+/// The inverse of [`order_key`] (and of every [`TensionLaw::order_key`]).
+#[inline(always)]
+pub fn from_order_key(k: i64) -> f64 {
+    f64::from_bits((k ^ (((k >> 63) as u64) >> 1) as i64) as u64)
 }
 
 /// Tension-only Kelvin-Voigt law: `T = max(EA e + eta edot, 0)` for `e > 0`, `T = 0` for `e <= 0`.
@@ -40,6 +59,12 @@ impl TensionLaw for TensionOnly {
     fn energy_density(ea: f64, e: f64) -> f64 {
         let ep = e.max(0.0);
         0.5 * ea * ep * ep
+    }
+    /// A tension-only tension is `+0`, `-0` or positive: its bits order it as they are (`-0` has the
+    /// smallest key, and the key of a non-negative number is its [`order_key`]).
+    #[inline(always)]
+    fn order_key(t: f64) -> i64 {
+        t.to_bits() as i64
     }
 }
 

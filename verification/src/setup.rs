@@ -202,12 +202,12 @@ pub fn explicit_for(case: Case, n: usize, courant_number: f64, mass_damping: f64
 
 /// Largest net force on a free node [N] (the static residual of the discrete equations).
 pub fn max_residual(s: &mut Explicit) -> f64 {
-    let n1 = s.wire.nodes();
+    let n1 = s.wire().nodes();
     let mut f = [vec![0.0; n1], vec![0.0; n1], vec![0.0; n1]];
     s.net_force(&mut f);
     let mut m: f64 = 0.0;
     for i in 0..n1 {
-        if s.wire.free[i] > 0.0 {
+        if s.wire().free[i] > 0.0 {
             for fk in &f {
                 m = m.max(fk[i].abs());
             }
@@ -221,7 +221,7 @@ pub fn max_residual(s: &mut Explicit) -> f64 {
 /// steps; gives the simulated time [s], or an error after `max_time_s`.
 pub fn settle(s: &mut Explicit, tol_n: f64, max_time_s: f64) -> Result<f64, String> {
     let every = 256;
-    let dt = s.params.dt_s;
+    let dt = s.params().dt_s;
     loop {
         for _ in 0..every {
             s.step(dt).map_err(|e| e.to_string())?;
@@ -229,12 +229,12 @@ pub fn settle(s: &mut Explicit, tol_n: f64, max_time_s: f64) -> Result<f64, Stri
         let r = max_residual(s);
         // At a check the velocities are those of the last half step; a settled state needs both the
         // static residual and the motion to vanish.
-        let vmax = s.wire.v.iter().flat_map(|v| v.iter()).fold(0.0_f64, |m, x| m.max(x.abs()));
+        let vmax = s.wire().v.iter().flat_map(|v| v.iter()).fold(0.0_f64, |m, x| m.max(x.abs()));
         if r < tol_n && vmax < 1e-8 {
-            return Ok(s.time_s);
+            return Ok(s.time_s());
         }
-        if s.time_s > max_time_s {
-            return Err(format!("not settled after {:.1} s: residual {r:.3e} N, speed {vmax:.3e} m/s", s.time_s));
+        if s.time_s() > max_time_s {
+            return Err(format!("not settled after {:.1} s: residual {r:.3e} N, speed {vmax:.3e} m/s", s.time_s()));
         }
     }
 }

@@ -51,9 +51,9 @@ fn fixed(spec: &str) -> ExitCode {
             println!(
                 "{} N = {n}: {} steps, t = {:.6e} s, x3[N/2] = {:.15e} m, state hash {:016x}",
                 c.name(),
-                s.steps,
-                s.time_s,
-                s.wire.x[2][n / 2],
+                s.steps(),
+                s.time_s(),
+                s.wire().x[2][n / 2],
                 bench::state_hash(&s)
             );
             ExitCode::SUCCESS

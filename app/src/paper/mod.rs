@@ -108,7 +108,7 @@ pub fn run_case(path: &Path, out_dir: Option<&Path>) -> Result<CaseReport, Paper
     let opts = RunOptions { out_dir: None, record: true };
     let o = run(plan.clone(), &opts).map_err(|e| PaperError::Run { file: file.clone(), source: Box::new(e) })?;
     let cols = extract::Series::of(&o);
-    let ea = plan.solver.wire.axial_stiffness_n[0];
+    let ea = plan.solver.wire().axial_stiffness_n[0];
     let l = spec.length_scale_m;
     let rows: Vec<Row> = spec
         .checks

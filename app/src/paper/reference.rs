@@ -10,7 +10,7 @@ use ohl::scheme::WindLoad;
 
 /// The uniform normal wind pressure `p` [N/m] times the multiplier at the time, and its direction.
 fn pressure(plan: &Plan, p: &Probe) -> Option<(f64, [f64; 3])> {
-    match plan.solver.loads.wind {
+    match plan.solver.loads().wind {
         Some(WindLoad::UniformNormal(u)) => Some((u.pressure_n_per_m * p.wind_scale, u.direction)),
         _ => None,
     }
@@ -36,10 +36,10 @@ fn quantity(x: &ExtractSpec) -> Quantity {
 
 /// The reference value [SI], or `None` where the reference does not define the extracted quantity.
 pub fn reference(kind: ReferenceKind, plan: &Plan, x: &ExtractSpec, p: &Probe) -> Option<f64> {
-    let w = &plan.solver.wire;
+    let w = &plan.solver.wire();
     let ea = w.axial_stiffness_n[0];
     let (a, b) = (plan.left_support_m, plan.right_support_m);
-    let g = plan.solver.loads.gravity_m_per_s2;
+    let g = plan.solver.loads().gravity_m_per_s2;
     let l0 = p.rest_length_m;
     let weight = g * p.mass_kg / l0;
     let q = quantity(x);

@@ -36,18 +36,18 @@ pub struct Newmark {
 impl Newmark {
     /// Start from the solver's current positions and velocities (`a_0 = F / m` on free nodes).
     pub fn new(mut sys: Explicit, tol_n: f64) -> Self {
-        let n1 = sys.wire.nodes();
+        let n1 = sys.wire().nodes();
         let mut f = [vec![0.0; n1], vec![0.0; n1], vec![0.0; n1]];
         sys.net_force(&mut f);
-        let a = std::array::from_fn(|k| (0..n1).map(|i| sys.wire.free[i] * f[k][i] / sys.wire.mass[i]).collect());
+        let a = std::array::from_fn(|k| (0..n1).map(|i| sys.wire().free[i] * f[k][i] / sys.wire().mass[i]).collect());
         Newmark { sys, a, time_s: 0.0, newton_iterations: 0, tol_n, lu: None }
     }
 
     /// One step of length `dt` [s]; returns the Newton iterations used.
     pub fn step(&mut self, dt: f64) -> Result<usize, String> {
         let (idx, n) = unknown_index(&self.sys);
-        let n1 = self.sys.wire.nodes();
-        let (x0, v0, a0) = (self.sys.wire.x.clone(), self.sys.wire.v.clone(), self.a.clone());
+        let n1 = self.sys.wire().nodes();
+        let (x0, v0, a0) = (self.sys.wire().x.clone(), self.sys.wire().v.clone(), self.a.clone());
         let mut f = [vec![0.0; n1], vec![0.0; n1], vec![0.0; n1]];
         // Predictor a_{n+1} = a_n.
         let mut anew = a0.clone();
@@ -55,8 +55,8 @@ impl Newmark {
             for k in 0..3 {
                 for i in 0..n1 {
                     let asum = a0[k][i] + anew[k][i];
-                    sys.wire.x[k][i] = x0[k][i] + dt * v0[k][i] + 0.25 * dt * dt * asum;
-                    sys.wire.v[k][i] = v0[k][i] + 0.5 * dt * asum;
+                    sys.wire_mut().x[k][i] = x0[k][i] + dt * v0[k][i] + 0.25 * dt * dt * asum;
+                    sys.wire_mut().v[k][i] = v0[k][i] + 0.5 * dt * asum;
                 }
             }
         };
@@ -69,7 +69,7 @@ impl Newmark {
             for (i, o) in idx.iter().enumerate() {
                 if let Some(r) = o {
                     for k in 0..3 {
-                        g[r + k] = self.sys.wire.mass[i] * anew[k][i] - f[k][i];
+                        g[r + k] = self.sys.wire().mass[i] * anew[k][i] - f[k][i];
                         gmax = gmax.max(g[r + k].abs());
                     }
                 }

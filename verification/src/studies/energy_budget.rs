@@ -28,10 +28,10 @@ const TERMS: [&str; 6] =
 
 /// Nodal force parts `[term][component][node]` at the solver's current state.
 fn parts(s: &Explicit) -> Vec<[Vec<f64>; 3]> {
-    let w = &s.wire;
+    let w = &s.wire();
     let n = w.segments();
     let mut out: Vec<[Vec<f64>; 3]> = (0..5).map(|_| std::array::from_fn(|_| vec![0.0; n + 1])).collect();
-    let wind = match s.loads.wind {
+    let wind = match s.loads().wind {
         Some(WindLoad::Aerodynamic(a)) => a,
         _ => unreachable!("the energy study uses the aerodynamic wind"),
     };
@@ -69,7 +69,7 @@ fn parts(s: &Explicit) -> Vec<[Vec<f64>; 3]> {
 }
 
 fn kinetic(s: &Explicit) -> f64 {
-    (0..s.wire.nodes()).map(|i| 0.5 * s.wire.mass[i] * (0..3).map(|k| s.wire.v[k][i].powi(2)).sum::<f64>()).sum()
+    (0..s.wire().nodes()).map(|i| 0.5 * s.wire().mass[i] * (0..3).map(|k| s.wire().v[k][i].powi(2)).sum::<f64>()).sum()
 }
 
 /// Outcome of one budget run.
@@ -87,7 +87,7 @@ fn budget_run(n: usize, duration: f64, smoothing: f64) -> Result<Budgeted, Strin
     let wire = straight_wire(n, LawKind::TensionOnly, eta);
     let mut s =
         Explicit::new(wire, loads(G_M_PER_S2, [0.0; 3], Some(aerodynamic_wind(0.2))), params(n, 0.8, smoothing, 0.0));
-    let dt = s.params.dt_s;
+    let dt = s.params().dt_s;
     let steps = (duration / dt).ceil() as usize;
     let ke0 = kinetic(&s);
     let el0 = s.diagnostics().elastic_j;
@@ -96,18 +96,18 @@ fn budget_run(n: usize, duration: f64, smoothing: f64) -> Result<Budgeted, Strin
     for _ in 0..steps {
         let f = parts(&s);
         let kick = 0.5 * (s.last_step_s() + dt);
-        let vminus = s.wire.v.clone();
+        let vminus = s.wire().v.clone();
         let unsmoothed = if smoothing > 0.0 {
             let mut c = s.clone();
-            c.params.smoothing = 0.0;
+            c.params_mut().smoothing = 0.0;
             c.step(dt).map_err(|e| e.to_string())?;
-            c.wire.v
+            c.wire().v.clone()
         } else {
             s.step(dt).map_err(|e| e.to_string())?;
-            s.wire.v.clone()
+            s.wire().v.clone()
         };
-        for i in 0..s.wire.nodes() {
-            if s.wire.free[i] == 0.0 {
+        for i in 0..s.wire().nodes() {
+            if s.wire().free[i] == 0.0 {
                 continue;
             }
             for k in 0..3 {
@@ -119,16 +119,16 @@ fn budget_run(n: usize, duration: f64, smoothing: f64) -> Result<Budgeted, Strin
         }
         if smoothing > 0.0 {
             s.step(dt).map_err(|e| e.to_string())?;
-            for i in 0..s.wire.nodes() {
+            for i in 0..s.wire().nodes() {
                 for k in 0..3 {
-                    works[5] += 0.5 * s.wire.mass[i] * (s.wire.v[k][i].powi(2) - unsmoothed[k][i].powi(2));
+                    works[5] += 0.5 * s.wire().mass[i] * (s.wire().v[k][i].powi(2) - unsmoothed[k][i].powi(2));
                 }
             }
         }
         let ke = kinetic(&s);
         peak = peak.max(ke);
         let explained = ke0 + works.iter().sum::<f64>();
-        hist.push((s.time_s, ke, ke - explained));
+        hist.push((s.time_s(), ke, ke - explained));
     }
     let delta_ke = kinetic(&s) - ke0;
     let el1 = s.diagnostics().elastic_j;

@@ -70,7 +70,7 @@ fn measured_frequency(string: &TautString, n: usize, comp: usize) -> f64 {
     let conductor = Conductor { axial_stiffness_n: EA_N, internal_friction_n_s: 0.0, law: LawKind::Linear };
     let wire = Wire::new(conductor, x, vec![ds; n], RHO_KG_PER_M);
     let mut s = Explicit::new(wire, loads(0.0, [0.0; 3], None), params(n, 0.5, 0.0, 0.0));
-    let dt = s.params.dt_s;
+    let dt = s.params().dt_s;
     let mid = n / 2;
     let rest = if comp == 1 { mid as f64 * ds * (1.0 + string.prestrain) } else { 0.0 };
     let period_guess =
@@ -81,13 +81,13 @@ fn measured_frequency(string: &TautString, n: usize, comp: usize) -> f64 {
         period_guess.min(1.0 / string.discrete_longitudinal_frequency_hz(1, n))
     };
     let mut crossings = vec![];
-    let mut prev = s.wire.x[comp][mid] - rest;
-    while s.time_s < 3.2 * period_guess {
-        let t0 = s.time_s;
+    let mut prev = s.wire().x[comp][mid] - rest;
+    while s.time_s() < 3.2 * period_guess {
+        let t0 = s.time_s();
         if s.step(dt).is_err() {
             return f64::NAN;
         }
-        let cur = s.wire.x[comp][mid] - rest;
+        let cur = s.wire().x[comp][mid] - rest;
         if prev * cur < 0.0 {
             crossings.push(t0 + dt * prev / (prev - cur));
         }

@@ -65,7 +65,7 @@ pub fn initial(problem: Dynamic, n: usize, dt: f64) -> Result<Explicit, String> 
                 },
             )
             .map_err(|e| e.to_string())?;
-            s.loads.wind = Some(aerodynamic_wind(0.2));
+            s.loads_mut().wind = Some(aerodynamic_wind(0.2));
             Ok(s)
         }
     }
@@ -74,11 +74,11 @@ pub fn initial(problem: Dynamic, n: usize, dt: f64) -> Result<Explicit, String> 
 /// Position histories sampled at `samples` equal intervals of a run of `steps` steps of `dt`.
 fn run_explicit(problem: Dynamic, n: usize, dt: f64, steps: usize, samples: usize) -> Result<History, String> {
     let mut s = initial(problem, n, dt)?;
-    let mut h = vec![positions(&s.wire)];
+    let mut h = vec![positions(s.wire())];
     for k in 1..=steps {
         s.step(dt).map_err(|e| e.to_string())?;
         if k % (steps / samples) == 0 {
-            h.push(positions(&s.wire));
+            h.push(positions(s.wire()));
         }
     }
     Ok(h)
@@ -88,11 +88,11 @@ fn run_newmark(problem: Dynamic, n: usize, dt: f64, steps: usize, samples: usize
     let s = initial(problem, n, dt)?;
     let tol = crate::setup::residual_tolerance(n, RHO_KG_PER_M * G_M_PER_S2);
     let mut nm = Newmark::new(s, tol);
-    let mut h = vec![positions(&nm.sys.wire)];
+    let mut h = vec![positions(nm.sys.wire())];
     for k in 1..=steps {
         nm.step(dt)?;
         if k % (steps / samples) == 0 {
-            h.push(positions(&nm.sys.wire));
+            h.push(positions(nm.sys.wire()));
         }
     }
     Ok((h, nm.newton_iterations as f64 / steps as f64))
@@ -157,10 +157,10 @@ pub fn run(budget: Budget, dir: &Path) -> Result<StudyReport, String> {
     }
     // Replica check: the Jacobian's function values equal the library's forces (moving, windy state).
     let mut probe = initial(Dynamic::WindStep, 20, 1e-3)?;
-    for (i, v) in probe.wire.v[0].iter_mut().enumerate() {
+    for (i, v) in probe.wire_mut().v[0].iter_mut().enumerate() {
         *v = 0.3 * (i as f64).sin();
     }
-    probe.wire.internal_friction_n_s.fill(50.0);
+    probe.wire_mut().internal_friction_n_s.fill(50.0);
     let gap = replica_gap(&mut probe);
     rep.check("Jacobian replica vs library forces", "< 1e-9 N", sci(gap), gap < 1e-9);
 

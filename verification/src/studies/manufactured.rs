@@ -184,20 +184,20 @@ fn run_one(v: Variant, n: usize, n0: usize, steps: usize) -> Result<f64, String>
     let mut f: [Vec<f64>; 3] = std::array::from_fn(|_| vec![0.0; n + 1]);
     let mut err: f64 = 0.0;
     for step in 1..=steps {
-        let t = s.time_s;
+        let t = s.time_s();
         for i in 1..n {
             let src = source(i as f64 * ds, t, v.physics);
             for k in 0..3 {
                 f[k][i] = ds * src[k];
             }
         }
-        s.nodal_force = Some(f.clone());
+        s.set_nodal_force(Some(f.clone()));
         s.step(p.dt_s).map_err(|e| e.to_string())?;
         if step % (steps / SAMPLES) == 0 {
             let t = step as f64 * p.dt_s;
             for i in 0..=n {
                 let e = r(i as f64 * ds, t, 0, 0);
-                let q = s.wire.position(i);
+                let q = s.wire().position(i);
                 err = err.max(((q[0] - e[0]).powi(2) + (q[1] - e[1]).powi(2) + (q[2] - e[2]).powi(2)).sqrt());
             }
         }

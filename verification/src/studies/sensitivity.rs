@@ -36,12 +36,12 @@ struct Outcome {
 }
 
 fn deflection(s: &Explicit) -> f64 {
-    let m = s.wire.midspan();
+    let m = s.wire().midspan();
     (m[0].powi(2) + (m[1] - 0.5 * SPAN_M).powi(2) + m[2].powi(2)).sqrt()
 }
 
 fn simulate(mut s: Explicit, duration: f64) -> Outcome {
-    let dt = s.params.dt_s;
+    let dt = s.params().dt_s;
     let steps = (duration / dt) as usize;
     let mut hist = Vec::with_capacity(steps);
     let mut o = Outcome { peak_m: 0.0, peak_t: 0.0, settle_s: f64::NAN, final_m: f64::NAN, unstable: false };
@@ -52,9 +52,9 @@ fn simulate(mut s: Explicit, duration: f64) -> Outcome {
         }
         let d = deflection(&s);
         o.peak_m = o.peak_m.max(d);
-        hist.push((s.time_s, d));
+        hist.push((s.time_s(), d));
     }
-    o.peak_t = (0..s.wire.segments()).map(|j| s.segment_tension(j)).fold(0.0, f64::max);
+    o.peak_t = (0..s.wire().segments()).map(|j| s.segment_tension(j)).fold(0.0, f64::max);
     let mut peak_t = o.peak_t;
     // peak tension over the run is approximated by the final and the max at the peak deflection; record final
     o.final_m = hist.last().map(|h| h.1).unwrap_or(f64::NAN);
@@ -73,7 +73,7 @@ fn simulate(mut s: Explicit, duration: f64) -> Outcome {
 
 fn stable(courant_number: f64, eta: f64, b: f64) -> bool {
     let mut s = solver(false, 0.0, b, courant_number, eta, LawKind::Linear);
-    let dt = s.params.dt_s;
+    let dt = s.params().dt_s;
     (0..4000).all(|_| s.step(dt).is_ok())
 }
 

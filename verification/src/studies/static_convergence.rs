@@ -65,9 +65,9 @@ pub fn grid(case: Case, n: usize) -> Result<GridResult, String> {
     let rep = solve_static(&mut nw, &StaticOptions { tolerance_n: Some(tol), max_iterations: 40 })
         .map_err(|e| format!("{} N={n}: {e}", case.name()))?;
     let ex: Vec<[f64; 3]> = (0..=n).map(|i| exact.position(i as f64 * ds)).collect();
-    let num = positions(&s.wire);
+    let num = positions(s.wire());
     let defl_exact = exact.midspan_deflection_m();
-    let m = s.wire.midspan();
+    let m = s.wire().midspan();
     let defl = (m[0].powi(2) + (m[1] - 0.5 * SPAN_M).powi(2) + m[2].powi(2)).sqrt();
     Ok(GridResult {
         case,
@@ -75,7 +75,7 @@ pub fn grid(case: Case, n: usize) -> Result<GridResult, String> {
         deflection_m: defl,
         mid_error: ((defl - defl_exact) / defl_exact).abs(),
         max_error: max_distance(&num, &ex) / defl_exact,
-        newton_gap: max_distance(&num, &positions(&nw.wire)) / defl_exact,
+        newton_gap: max_distance(&num, &positions(nw.wire())) / defl_exact,
         settle_time_s: t,
         newton_history: rep.residual_history,
     })
