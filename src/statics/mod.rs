@@ -79,11 +79,11 @@ use crate::scheme::Explicit;
 /// The reaction of each support at the solver's current state: `(node, R)` for every fixed node, where
 /// `R` [N] is the force the support exerts on the node, `R = -F_i` with `F_i` the net force of the
 /// adjacent segments' tension, the node's own lumped loads and any prescribed force
-/// ([`Explicit::net_force`]). At a static equilibrium the reactions balance the total external load:
-/// `sum R + sum_i f_i = 0` over all nodes.
+/// ([`Explicit::support_forces`] with the sign turned). At a static equilibrium the reactions balance the
+/// total external load: `sum R + sum_i f_i = 0` over all nodes.
 pub fn support_reactions(s: &mut Explicit) -> Vec<(usize, [f64; 3])> {
-    let n1 = s.wire().nodes();
-    let mut f = [vec![0.0; n1], vec![0.0; n1], vec![0.0; n1]];
-    s.net_force(&mut f);
-    (0..n1).filter(|&i| s.wire().free[i] <= 0.0).map(|i| (i, [-f[0][i], -f[1][i], -f[2][i]])).collect()
+    s.evaluate_forces();
+    let mut f = Vec::new();
+    s.support_forces(&mut f);
+    f.into_iter().map(|(i, g)| (i, g.map(|c| -c))).collect()
 }
