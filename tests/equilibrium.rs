@@ -109,3 +109,29 @@ fn equilibrium_start_matches_the_exact_catenary_at_second_order() {
     assert!((order - 2.0).abs() < 0.1, "order {order}");
     assert!(errs[1] < 5e-4, "N = 50: {:.3e}", errs[1]);
 }
+
+#[test]
+fn a_break_from_equilibrium_needs_no_settling_phase() {
+    // The paper's Fig. 4 breaks the wire once it has settled; from the equilibrium start the break can
+    // come at once. Before the break the wire is at rest (the first phase's peak tension is the static
+    // one); the summary's peaks are those from the break on.
+    let text = format!(
+        "{}\n[duration]\nend_time_s = 3.0\n[[events]]\ntime_s = 0.5\naction = \"break\"\nat_fraction = 0.5\n",
+        wire(40, "")
+    );
+    let plan = scenario::plan(&common::scenario(&text), "<test>").expect("valid");
+    let mut s0 = plan.solver.clone();
+    s0.evaluate_forces();
+    let static_tension = s0.max_tension_n();
+    let o = ohl::run::run(plan, &RunOptions::default()).expect("stable");
+    let s = &o.summary;
+    println!(
+        "static tension {static_tension} N; phases {:?}",
+        s.phases.iter().map(|p| (p.start_s, p.peaks.max_tension.value_n)).collect::<Vec<_>>()
+    );
+    assert_eq!(s.phases.len(), 2);
+    let before = s.phases[0].peaks.max_tension.value_n;
+    assert!((before - static_tension).abs() <= 1e-9 * static_tension, "{before} vs {static_tension}");
+    assert_eq!(s.peaks_from_s, 0.5);
+    assert!(s.peak_max_tension_time_s >= 0.5);
+}
