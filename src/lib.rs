@@ -4,12 +4,15 @@
 //! integrated by the explicit staggered-grid scheme (3.1)-(3.7) with Kelvin-Voigt tension (3.4),
 //! aerodynamic loads with damping (2.5)-(2.6) and velocity smoothing (3.3). Everything is in SI units.
 //!
-//! Layers, one folder each:
-//! - [`wire`]: the physics of the wire (state, constitutive law, distributed loads);
+//! Layers, one folder each (`docs/architecture.md` explains the design):
+//! - [`wire`]: the physics of the line: nodes with constraints, segments with their own material,
+//!   constitutive law, distributed loads;
 //! - [`heat`]: heat conduction along the wire (5.1)-(5.4) and thermal expansion (5.5)-(5.6);
 //! - [`scheme`]: the numerical schemes (explicit leapfrog, smoothing, Courant step);
-//! - [`scenario`]: scenario files, their validation and their translation into a solver;
-//! - [`output`]: the files a run writes; [`run`] drives a run;
+//! - [`statics`]: the static equilibrium of the same discrete equations (Newton, faer);
+//! - [`scenario`]: scenario files, their validation and the one conversion into a run plan;
+//! - [`events`]: the event timeline of a run;
+//! - [`run`]: the run loop and its observers; [`output`]: the observers that write or record a run;
 //! - [`exact`]: exact static solutions the scheme is verified against.
 //!
 //! The library holds the model only: the command line `ohl`, the paper cases, the plots, the benchmark

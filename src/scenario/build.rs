@@ -1,5 +1,7 @@
-//! From a validated scenario to a ready solver: derived quantities (`EA`, wave speed, time step), the
-//! initial shape with equally spaced nodes, the loads and the run plan.
+//! The one conversion of a scenario into a run plan ([`build`]): every field checked, then the model
+//! built from the quantities the checks derived (`EA`, chord, length, wave speed, time step): the
+//! initial shape with equally spaced nodes (or the static equilibrium), the loads, the events in their
+//! domain form ([`crate::events::Event`]) and the outputs asked for.
 
 use super::events::{EventSpec, GateSpec, HeatBoundarySpec, break_segment, node_range, segment_range};
 use super::schema::{Scenario, ShapeSpec, TensionLawSpec, WindLawSpec};

@@ -1,6 +1,7 @@
-//! Scenarios: the TOML file format ([`schema`]), its validation ([`validate`]) and its translation into a
-//! solver ([`build`]). Loading a file either returns a scenario that is safe to run or an
-//! [`InputError`] that names the file, the field, the value and what is allowed.
+//! Scenarios: the TOML file format ([`schema`]), its validation ([`validate`]) and the one conversion
+//! into a run plan ([`build`], [`plan`]). Either a plan that is safe to run comes out, or an
+//! [`InputError`] that names the file and, for every problem found, the field, the value and what is
+//! allowed.
 
 pub mod build;
 pub mod events;
