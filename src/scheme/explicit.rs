@@ -391,7 +391,7 @@ impl Explicit {
     pub fn support_forces(&self, out: &mut Vec<(usize, [f64; 3])>) {
         assert!(self.fresh, "support_forces needs evaluate_forces at this time level");
         out.clear();
-        for i in self.wire.fixed_nodes() {
+        for &i in self.wire.fixed_nodes() {
             out.push((i, [0, 1, 2].map(|k| self.node_force(k, i))));
         }
     }

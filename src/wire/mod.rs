@@ -45,8 +45,10 @@ pub enum Constraint {
 pub struct Wire {
     /// constitutive law of every segment (chosen once per run: the kernel is specialised on it)
     pub law: tension::LawKind,
-    /// how each node is held, length `N + 1`
-    pub constraint: Vec<Constraint>,
+    /// how each node is held, length `N + 1` (changed with [`Wire::set_constraint`])
+    constraint: Vec<Constraint>,
+    /// the fixed nodes, in node order (kept with `constraint`)
+    fixed: Vec<usize>,
     /// segment axial stiffness `EA_{i+1/2}` [N], length `N`
     pub axial_stiffness_n: Vec<f64>,
     /// segment Kelvin-Voigt internal friction `eta_{i+1/2}` [N s], eq. (3.4), length `N`
@@ -59,7 +61,8 @@ pub struct Wire {
     pub mass: Vec<f64>,
     /// `1 / m_i` [1/kg]
     pub inv_mass: Vec<f64>,
-    /// 1.0 for a free node, 0.0 for a fixed one [-] (the kernel's form of [`Wire::constraint`])
+    /// 1.0 for a free node, 0.0 for a fixed one [-] (the kernel's form of the constraints; change them
+    /// with [`Wire::set_constraint`])
     pub free: Vec<f64>,
     /// segment stress-free length `l0_{i+1/2}` [m], length `N` (thermal strain scales it)
     pub rest_length: Vec<f64>,
@@ -97,6 +100,7 @@ impl Wire {
         let mut wire = Wire {
             law: conductor.law,
             free: constraint.iter().map(|c| if *c == Constraint::Free { 1.0 } else { 0.0 }).collect(),
+            fixed: vec![0, n],
             constraint,
             axial_stiffness_n: vec![conductor.axial_stiffness_n; n],
             internal_friction_n_s: vec![conductor.internal_friction_n_s; n],
@@ -139,14 +143,20 @@ impl Wire {
     }
 
     /// Indices of the fixed nodes (the supports), in node order.
-    pub fn fixed_nodes(&self) -> impl Iterator<Item = usize> + '_ {
-        self.constraint.iter().enumerate().filter(|(_, c)| **c == Constraint::Fixed).map(|(i, _)| i)
+    pub fn fixed_nodes(&self) -> &[usize] {
+        &self.fixed
+    }
+
+    /// How node `i` is held.
+    pub fn constraint(&self, i: usize) -> Constraint {
+        self.constraint[i]
     }
 
     /// Hold node `i` fixed or let it move.
     pub fn set_constraint(&mut self, i: usize, c: Constraint) {
         self.constraint[i] = c;
         self.free[i] = if c == Constraint::Free { 1.0 } else { 0.0 };
+        self.fixed = (0..self.nodes()).filter(|&j| self.constraint[j] == Constraint::Fixed).collect();
     }
 
     /// Position of node `i` [m].
