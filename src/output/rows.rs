@@ -150,24 +150,28 @@ impl RowFile {
                 k += 1;
                 continue;
             }
-            // Rows k..end fill the page up to `room - bytes`: pad them to end on the boundary.
-            let mut gap = room - bytes;
+            // Rows k..end fill the page up to `room - bytes`: pad them to end on the boundary, the gap
+            // shared out exactly (`gap / paddable` zeros each, one more for the first `gap % paddable`).
+            let gap = room - bytes;
             let paddable = (k..end).filter(|&r| self.rows[r].1.is_some()).count();
+            let (base, extra) = if paddable > 0 { (gap / paddable, gap % paddable) } else { (0, 0) };
             let mut page = std::mem::take(&mut self.page);
             page.clear();
+            let mut padded = 0;
             for r in k..end {
                 let (a, b) = self.row_bytes(r);
                 match self.rows[r].1 {
-                    Some(p) if paddable > 0 && gap > 0 => {
-                        let share = gap.div_ceil(paddable).min(gap);
+                    Some(p) => {
+                        let share = base + usize::from(padded < extra);
+                        padded += 1;
                         page.extend_from_slice(&self.pending[a..p]);
                         page.resize(page.len() + share, b'0');
                         page.extend_from_slice(&self.pending[p..b]);
-                        gap -= share;
                     }
-                    _ => page.extend_from_slice(&self.pending[a..b]),
+                    None => page.extend_from_slice(&self.pending[a..b]),
                 }
             }
+            debug_assert!(paddable == 0 || page.len() == room, "a padded page ends on the boundary");
             let result = self.write(&page);
             self.page = page;
             result?;
@@ -243,6 +247,39 @@ mod tests {
             offset = end;
         }
         assert_eq!(text.lines().count(), 3001);
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    #[test]
+    fn long_rows_of_many_numbers_never_cross_a_page() {
+        // Rows of eleven numbers (about 150 bytes, like snapshots.csv): the gap at the end of a page can
+        // exceed the number of rows in it, and must still be shared out exactly.
+        let dir = std::env::temp_dir().join(format!("ohl-rows-long-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("t.csv");
+        let header: Vec<String> = (0..11).map(|k| format!("c{k}")).collect();
+        let mut f = RowFile::create(&path, &header).unwrap();
+        for i in 0..5000_u64 {
+            for k in 0..11 {
+                f.number((i as f64 + 0.1) * 1.234_567_891_234e-3 * (k as f64 + 1.0) - 7.0);
+            }
+            f.end_row();
+            if i % 13 == 0 {
+                f.commit().unwrap();
+            }
+        }
+        f.finish().unwrap();
+        let text = std::fs::read_to_string(&path).unwrap();
+        let mut offset = 0;
+        for (i, line) in text.lines().enumerate() {
+            let end = offset + line.len() + 1;
+            if i > 0 {
+                assert!(offset / PAGE == (end - 1) / PAGE, "row {i} crosses a page: {offset}..{end}");
+                assert_eq!(line.split(',').count(), 11);
+            }
+            offset = end;
+        }
+        assert_eq!(text.lines().count(), 5001);
         let _ = std::fs::remove_dir_all(&dir);
     }
 }

@@ -283,13 +283,18 @@ impl Explicit {
             (true, true, true) => self.node_pass::<true, true, true>(kick, dt, f),
         };
         self.nodal_force = extra;
+        // Locate a failure before ground contact, which may change the offending velocity.
+        let failure = if ok { None } else { Some(self.locate_instability()) };
         if let Some(g) = self.ground {
             self.ground_contact(g);
         }
         self.dt_prev = dt;
         self.time_s += dt;
         self.steps += 1;
-        if ok { Ok(()) } else { Err(self.locate_instability()) }
+        match failure {
+            None => Ok(()),
+            Some((node, reason)) => Err(Instability { time_s: self.time_s, step: self.steps, node, reason }),
+        }
     }
 
     /// The wire's state (positions, velocities, segment properties).
@@ -631,25 +636,29 @@ impl Explicit {
         }
     }
 
-    /// Find the first offending node after `drift` reported a failure.
+    /// Find the first offending node after the node pass reported a failure: `(node, reason)`. The pass
+    /// flags a speed beyond the bound or a non-finite one, so some node shows it; should none (which
+    /// would be a kernel bug), the fastest node is reported rather than panicking.
     #[cold]
-    fn locate_instability(&self) -> Instability {
+    fn locate_instability(&self) -> (usize, InstabilityReason) {
         let w = &self.wire;
         let bound = self.params.max_speed_m_per_s;
+        let mut fastest = (0, 0.0_f64);
         for i in 0..w.nodes() {
             let v = [w.v[0][i], w.v[1][i], w.v[2][i]];
             let s = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
             let finite = s.is_finite() && w.position(i).iter().all(|c| c.is_finite());
-            let reason = if !finite {
-                InstabilityReason::NonFinite
-            } else if s > bound {
-                InstabilityReason::SpeedLimit { speed_m_per_s: s, bound_m_per_s: bound }
-            } else {
-                continue;
-            };
-            return Instability { time_s: self.time_s, step: self.steps, node: i, reason };
+            if !finite {
+                return (i, InstabilityReason::NonFinite);
+            }
+            if s > bound {
+                return (i, InstabilityReason::SpeedLimit { speed_m_per_s: s, bound_m_per_s: bound });
+            }
+            if s > fastest.1 {
+                fastest = (i, s);
+            }
         }
-        unreachable!("drift reported an instability that no node shows")
+        (fastest.0, InstabilityReason::SpeedLimit { speed_m_per_s: fastest.1, bound_m_per_s: bound })
     }
 
     /// Energies, synchronised velocity and the largest tension at the current time level.
