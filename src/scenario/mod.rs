@@ -1,11 +1,13 @@
 //! Scenarios: the TOML file format ([`schema`]), its validation ([`validate`]) and its translation into a
 //! solver ([`build`]). Loading a file either returns a scenario that is safe to run or an
-//! [`InputError`] that names the file, the field, the value and what is allowed.
+//! [`InputError`] that names the file, the field, the value and what is allowed. [`work`] estimates the
+//! work of a run before it runs and holds the budget above which a run is refused.
 
 pub mod build;
 pub mod events;
 pub mod schema;
 pub mod validate;
+pub mod work;
 
 use std::fmt;
 use std::path::Path;
@@ -13,6 +15,7 @@ use std::path::Path;
 pub use build::{Plan, build};
 pub use schema::Scenario;
 pub use validate::Problem;
+pub use work::{Refusal, WorkEstimate};
 
 /// Why a scenario could not be used. Every variant names the file.
 #[derive(Debug, thiserror::Error)]
