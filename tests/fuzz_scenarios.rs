@@ -11,7 +11,7 @@
 //! - mutations of the seed corpus `app/tests/bad_inputs/*.toml` and `paper_cases/*.toml`: lines removed,
 //!   duplicated, swapped or inserted, values replaced by extreme ones, bytes changed.
 //!
-//! The number of inputs is `OHL_FUZZ_CASES` (default [`DEFAULT_CASES`], about a minute in release on a
+//! The number of inputs is `OHL_FUZZ_CASES` (default [`DEFAULT_CASES`], about 25 s in release on a
 //! shared 2-core machine) and the seed `OHL_FUZZ_SEED` (default fixed, so CI runs the same inputs). A
 //! longer run:
 //!
@@ -32,8 +32,8 @@ use ohl::scenario::{self, Plan};
 use proptest::prelude::*;
 use proptest::test_runner::{Config, RngAlgorithm, TestCaseError, TestError, TestRng, TestRunner};
 
-/// Inputs tried by default (the test's cost: about a minute in release on this project's CI machine).
-const DEFAULT_CASES: u32 = 20_000;
+/// Inputs tried by default (about 25 s in release on a shared 2-core machine).
+const DEFAULT_CASES: u32 = 150_000;
 
 /// Steps a fuzzed plan runs at most.
 const RUN_STEPS: f64 = 200.0;
@@ -46,6 +46,8 @@ const RUN_NODE_STEPS: f64 = 2.0e5;
 struct Known {
     /// short name of the family
     name: &'static str,
+    /// a substring of the finding
+    finding: &'static str,
     /// whether a plan belongs to the family
     matches: fn(&Plan) -> bool,
     /// the minimal input found
@@ -58,7 +60,8 @@ struct Known {
 const KNOWN: &[Known] = &[
     Known {
         name: "node mass overflows",
-        matches: |p| p.solver.wire().mass.iter().chain(&p.solver.wire().segment_mass).any(|m| !m.is_finite()),
+        finding: "non-finite",
+        matches: |p| !(p.solver.wire().total_mass() < 1e300),
         input: "[conductor]\naxial_stiffness_n = 792000.0\nlinear_density_kg_per_m = 1.7976931348623157e308\n\
             [geometry]\nleft_support_m = [0.0, 0.0, 0.0]\nright_support_m = [0.0, 160.0, 0.0]\nsegments = 20\n\
             [duration]\nend_time_s = 0.5\n",
@@ -68,6 +71,7 @@ const KNOWN: &[Known] = &[
     },
     Known {
         name: "heat conduction with the linear boundary",
+        finding: "non-finite",
         matches: |p| {
             p.events.iter().any(|e| {
                 matches!(
@@ -82,6 +86,19 @@ const KNOWN: &[Known] = &[
             action = \"heat_conduction\"\nhold_range = [0.0, 0.989]\nhold_temperature_k = 200.0\n\
             heat_time_per_s = 27.37\nboundary = \"linear\"\n",
         why: "the run completes with the elastic energy NaN (found by the fuzzer; under investigation)",
+    },
+    Known {
+        name: "ground contact hides the instability it follows",
+        finding: "drift reported an instability that no node shows",
+        matches: |p| p.ground.is_some(),
+        input: "[conductor]\naxial_stiffness_n = 91436508.97\nlinear_density_kg_per_m = 3.0476\ntension_law = \"linear\"\n\
+                [geometry]\nleft_support_m = [0.0, 0.0, 6.82]\nright_support_m = [0.0, 122.0756, 0.0]\nsegments = 2\n\
+                unstretched_length_m = 309.2456\n[initial]\nshape = \"parabola\"\nsag_m = 13.14\n[loads]\n\
+                gravity_m_per_s2 = 0.0\n[numerics]\ncourant = 0.9849\nsmoothing = 0.0251\nmax_speed_m_per_s = 2597.25\n\
+                [duration]\nend_time_s = 4.1\n[ground]\nheight_m = -27.99\nrestitution = 0.0\n",
+        why: "a panic in the kernel (src/scheme/explicit.rs, locate_instability: unreachable): the drift flags a \
+              node above the speed bound, then ground contact (restitution 0) zeroes its vertical velocity before \
+              the instability is located, so no node shows it; the kernel is not this change's to edit",
     },
 ];
 
@@ -556,14 +573,16 @@ fn check(text: &str, counts: &Counts) -> Result<(), String> {
 }
 
 fn run_short(plan: Plan, counts: &Counts) -> Result<(), String> {
-    let known = KNOWN.iter().find(|k| (k.matches)(&plan));
-    let result = run_checked(plan, counts);
-    match (result, known) {
-        (Err(finding), Some(k)) => {
-            counts.known.borrow_mut().push(format!("{}: {finding}", k.name));
-            Ok(())
-        }
-        (r, _) => r,
+    let families: Vec<&Known> = KNOWN.iter().filter(|k| (k.matches)(&plan)).collect();
+    match run_checked(plan, counts) {
+        Err(finding) => match families.iter().find(|k| finding.contains(k.finding)) {
+            Some(k) => {
+                counts.known.borrow_mut().push(format!("{}: {finding}", k.name));
+                Ok(())
+            }
+            None => Err(finding),
+        },
+        ok => ok,
     }
 }
 

@@ -38,8 +38,7 @@
 //!
 //! [`BUDGET_NODE_STEPS`] = 2e10 node-steps is about 130 s at that throughput (2-3 minutes on one
 //! core): the largest paper case (`fig6_deicing`) needs 3.2e7 (`ohl run paper_cases/X.toml --dry-run`
-//! prints each), so the budget is 600 times what the paper needs, allows N = 1000 for an hour of
-//! simulated time at Courant 0.5 (1.5e10), and still refuses a mistyped end time or stiffness before it
+//! prints each), so the budget is 600 times what the paper needs and still refuses a mistyped end time or stiffness before it
 //! runs for hours. [`BUDGET_OUTPUT_BYTES`] = 2e9 bytes (2 GB) bounds the files of one run (the paper
 //! cases are estimated at 8.3 MB at most). A scenario above either is refused ([`Refusal`]) unless the caller
 //! allows large runs (`ohl run --allow-large`); a library caller decides by calling
