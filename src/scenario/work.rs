@@ -150,11 +150,11 @@ impl WorkEstimate {
     /// `Err` if the run is above [`BUDGET_NODE_STEPS`] or [`BUDGET_OUTPUT_BYTES`] (or cannot end).
     pub fn check(&self) -> Result<(), Refusal> {
         self.check_resolvable()?;
-        // Written so that NaN fails the check.
-        if !(self.work_node_steps() <= BUDGET_NODE_STEPS) {
+        // `is_le`: a NaN estimate fails the check.
+        if !self.work_node_steps().partial_cmp(&BUDGET_NODE_STEPS).is_some_and(|o| o.is_le()) {
             return Err(Refusal::NodeSteps(*self));
         }
-        if !(self.output_bytes <= BUDGET_OUTPUT_BYTES) {
+        if !self.output_bytes.partial_cmp(&BUDGET_OUTPUT_BYTES).is_some_and(|o| o.is_le()) {
             return Err(Refusal::OutputBytes(*self));
         }
         Ok(())
