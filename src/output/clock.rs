@@ -9,23 +9,40 @@ pub const LANDING: f64 = 1.0e-9;
 #[derive(Clone, Debug)]
 pub struct SampleClock {
     interval_s: f64,
-    next_k: f64,
+    /// the next sample time [s]: `k h` for the next grid index `k`, or just above the last sample's time
+    /// when the grid is finer than the resolution of `t`
+    next_s: f64,
 }
 
 impl SampleClock {
     /// Samples every `interval_s` [s] (> 0), starting at `t = 0`.
     pub fn new(interval_s: f64) -> Self {
-        SampleClock { interval_s, next_k: 0.0 }
+        SampleClock { interval_s, next_s: 0.0 }
     }
 
     /// Whether the level at `t_s` takes a sample (then the next one is the first grid time after it).
     /// Constant work per call, however small the interval.
+    ///
+    /// The next sample time is always strictly after `t_s + tol_s`: when the grid is finer than the
+    /// resolution of `t` (an interval of 1e-300 s: `floor((t + tol) / h) + 1` rounds back to
+    /// `(t + tol) / h`, or overflows to infinity), the next sample is due at the next representable time
+    /// after `t_s + tol_s`, i.e. at the next level. So the clock never samples twice at one time and never
+    /// stops sampling.
     pub fn due(&mut self, t_s: f64, tol_s: f64) -> bool {
-        if t_s < self.next_k * self.interval_s - tol_s {
+        if t_s < self.next_s - tol_s {
             return false;
         }
-        self.next_k = ((t_s + tol_s) / self.interval_s).floor() + 1.0;
+        let reached = t_s + tol_s;
+        let next_k = (reached / self.interval_s).floor() + 1.0;
+        let next_s = next_k * self.interval_s;
+        // Not `next_s <= reached`: a NaN or infinite grid time must fall back too.
+        self.next_s = if next_s > reached && next_s.is_finite() { next_s } else { reached.next_up() };
         true
+    }
+
+    /// The next sample time [s] (strictly after the last sample's time plus the tolerance).
+    pub fn next_s(&self) -> f64 {
+        self.next_s
     }
 }
 
@@ -37,8 +54,10 @@ pub struct ListClock {
 }
 
 impl ListClock {
-    /// The times, sorted here.
+    /// The times, sorted here (a NaN, which no level reaches, is dropped: it would hold back the times
+    /// after it).
     pub fn new(mut times_s: Vec<f64>) -> Self {
+        times_s.retain(|t| !t.is_nan());
         times_s.sort_by(f64::total_cmp);
         ListClock { times_s, next: 0 }
     }
@@ -51,5 +70,68 @@ impl ListClock {
             self.next += 1;
         }
         self.next > before
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Levels `t_k = k dt` from `t0`; every call must take a sample when the interval is below `dt`.
+    fn levels(interval: f64, t0: f64, dt: f64, count: usize) {
+        let mut c = SampleClock::new(interval);
+        let tol = LANDING * dt;
+        let mut taken = 0;
+        for k in 0..count {
+            let t = t0 + k as f64 * dt;
+            if c.due(t, tol) {
+                taken += 1;
+            }
+            assert!(c.next_s() > t + tol, "interval {interval}, t = {t}: next {} not after t", c.next_s());
+            // The same level again takes no second sample.
+            assert!(!c.due(t, tol), "interval {interval}: sampled twice at t = {t}");
+        }
+        if interval < dt {
+            assert_eq!(taken, count, "interval {interval} below dt = {dt}: every level samples");
+        }
+    }
+
+    #[test]
+    fn sample_clock_always_advances_past_t() {
+        for interval in [1e-300, 1e-310, 1e-12, 1e-3, 0.05, 7.0] {
+            for (t0, dt) in [(0.0, 1e-4), (1.0, 1e-9), (1e6, 1e-3), (1e6, 1e-9), (3e5, 0.1)] {
+                levels(interval, t0, dt, 200);
+            }
+        }
+        // A level exactly on t = 0 with no tolerance, then one a single ulp later.
+        let mut c = SampleClock::new(1e-300);
+        assert!(c.due(0.0, 0.0));
+        assert!(c.next_s() > 0.0);
+        assert!(!c.due(0.0, 0.0));
+        assert!(c.due(1e-300, 0.0));
+        let mut c = SampleClock::new(1e-300);
+        assert!(c.due(1e6, 0.0));
+        assert!(!c.due(1e6, 0.0));
+        assert!(c.due(1e6_f64.next_up(), 0.0));
+    }
+
+    #[test]
+    fn sample_clock_keeps_its_grid() {
+        // Interval 0.05 s, steps of 0.012 s: samples at the first level at or after each k * 0.05.
+        let mut c = SampleClock::new(0.05);
+        let taken: Vec<usize> = (0..30).filter(|&k| c.due(k as f64 * 0.012, 1e-12)).collect();
+        assert_eq!(taken, vec![0, 5, 9, 13, 17, 21, 25]);
+    }
+
+    #[test]
+    fn list_clock_consumes_each_time_once() {
+        let mut c = ListClock::new(vec![0.3, f64::NAN, 0.1, 0.1, -f64::NAN, 1e300]);
+        assert!(!c.due(0.05, 0.0));
+        assert!(c.due(0.1, 0.0));
+        assert!(!c.due(0.1, 0.0));
+        assert!(c.due(0.5, 0.0));
+        assert!(!c.due(1e6, 0.0));
+        assert!(c.due(f64::INFINITY, 0.0));
+        assert!(!c.due(f64::INFINITY, 0.0));
     }
 }

@@ -68,6 +68,9 @@ pub fn main(args: PaperArgs) -> ExitCode {
             Ok(c) => {
                 println!("== {} (paper section {}): {}", c.name, c.section, c.title);
                 println!("   run {} in {:.2} s", c.status, c.wall_s);
+                if let Some(e) = &c.estimate {
+                    println!("   estimated before the run: {e}");
+                }
                 for (t, e) in &c.events {
                     println!("   event at t = {t:.3} s: {e}");
                 }

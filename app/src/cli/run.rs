@@ -1,11 +1,16 @@
 //! `ohl run SCENARIO.toml --out DIR`: run one scenario and write its output files.
+//!
+//! Before it runs, the work is estimated ([`ohl::scenario::work`]): `--dry-run` prints the estimate and
+//! exits 0; a scenario above the budget (2e10 node-steps, about 130 s, or 2 GB of output) is refused with
+//! exit 2 unless `--allow-large` is given. When stderr is not a terminal (no progress bar) and the run is
+//! long, one line `running: N steps, about T s` goes to stderr before it starts.
 
 use std::path::PathBuf;
 use std::process::ExitCode;
 
 use ohl::run::{RunError, RunOptions, run_observed};
 
-use ohl::scenario;
+use ohl::scenario::{self, WorkEstimate};
 use ohl_app::paper::heat_spec;
 use ohl_app::progress::Bar;
 
@@ -20,11 +25,21 @@ pub struct RunArgs {
     /// do not print the summary
     #[arg(long)]
     quiet: bool,
+    /// print the work estimate (steps, node-steps, output rows and bytes, wall time) and exit 0 without
+    /// running
+    #[arg(long)]
+    dry_run: bool,
+    /// run a scenario above the work budget (2e10 node-steps or 2 GB of output)
+    #[arg(long)]
+    allow_large: bool,
 }
+
+/// Above this many node-steps a run announces itself on stderr when no progress bar is drawn.
+const ANNOUNCE_NODE_STEPS: f64 = 1.0e9;
 
 /// Run the command; exit 0 on success, 1 if unstable or output failed, 2 on invalid input.
 pub fn main(args: RunArgs) -> ExitCode {
-    let RunArgs { scenario: path, out, quiet } = args;
+    let RunArgs { scenario: path, out, quiet, dry_run, allow_large } = args;
     if let Some(message) = heat_case_refusal(&path) {
         eprintln!("error: {}: {message}", path.display());
         return ExitCode::from(2);
@@ -36,8 +51,22 @@ pub fn main(args: RunArgs) -> ExitCode {
             return ExitCode::from(2);
         }
     };
+    let estimate = plan.work_estimate();
+    if dry_run {
+        print_estimate(&plan.name, &estimate);
+        return ExitCode::SUCCESS;
+    }
+    let checked = if allow_large { estimate.check_resolvable() } else { estimate.check() };
+    if let Err(refusal) = checked {
+        eprintln!("error: {}: {refusal}", path.display());
+        return ExitCode::from(2);
+    }
     let opts = RunOptions { out_dir: Some(out.clone()), record: false };
     let mut bar = Bar::for_plan(&plan);
+    // No bar: stderr is not a terminal (a script, a log file).
+    if bar.is_none() && estimate.work_node_steps() > ANNOUNCE_NODE_STEPS {
+        eprintln!("running: {:.0} steps, about {:.0} s", estimate.steps, estimate.wall_time_s());
+    }
     let mut extra: Vec<&mut dyn ohl::run::Observer> =
         bar.iter_mut().map(|b| b as &mut dyn ohl::run::Observer).collect();
     match run_observed(plan, &opts, &mut extra) {
@@ -67,6 +96,26 @@ pub fn main(args: RunArgs) -> ExitCode {
             ExitCode::from(1)
         }
     }
+}
+
+/// The estimate of `--dry-run`, one quantity a line.
+fn print_estimate(name: &str, e: &WorkEstimate) {
+    use ohl::scenario::work::{BUDGET_NODE_STEPS, BUDGET_OUTPUT_BYTES, THROUGHPUT_NODE_STEPS_PER_S};
+    let within = if e.check().is_ok() { "within the budget" } else { "ABOVE the budget: needs --allow-large" };
+    println!("{name}: dry run, nothing run ({within})");
+    println!("  segments: {}, time step: {:.6e} s, end (or time cap): {} s", e.segments, e.dt_s, e.horizon_s);
+    println!("  steps: {:.6e}", e.steps);
+    println!("  node-steps: {:.6e} (budget {BUDGET_NODE_STEPS:.1e})", e.node_steps);
+    if e.heat_substeps > 0.0 {
+        println!("  heat conduction: {:.6e} sub-steps, {:.6e} node updates", e.heat_substeps, e.heat_node_updates);
+    }
+    println!("  timeseries.csv: {:.6e} rows of {} numbers", e.timeseries_rows, e.timeseries_columns);
+    println!("  snapshots.csv: {:.6e} rows", e.snapshot_rows);
+    println!("  output: at most {:.3e} bytes (budget {BUDGET_OUTPUT_BYTES:.1e})", e.output_bytes);
+    println!(
+        "  wall time: about {:.3e} s at {THROUGHPUT_NODE_STEPS_PER_S:.1e} node-steps/s (one core)",
+        e.wall_time_s()
+    );
 }
 
 /// A heat-conduction case (a file with a `[rod]` section) is not a wire scenario: the message points to

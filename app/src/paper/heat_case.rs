@@ -199,6 +199,7 @@ pub fn run_heat_case(text: &str, file: &str, name: &str, out_dir: Option<&Path>)
         status: format!("{} runs, {equalised} equalised", runs.len()),
         wall_s: started.elapsed().as_secs_f64(),
         figure,
+        estimate: None,
     })
 }
 

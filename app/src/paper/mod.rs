@@ -21,7 +21,7 @@ use std::time::Instant;
 
 use crate::paper::spec::UnitSpec;
 use ohl::run::{RunError, RunOptions, run};
-use ohl::scenario::{self, InputError, Plan};
+use ohl::scenario::{self, InputError, Plan, WorkEstimate};
 
 pub use table::Row;
 
@@ -46,6 +46,9 @@ pub struct CaseReport {
     pub wall_s: f64,
     /// the figure's stem (`.png`, `.svg`, `.csv` beside it), if written
     pub figure: Option<PathBuf>,
+    /// the work estimate of the run before it ran (none for a heat-conduction case); paper cases are not
+    /// held to the budget of `ohl run` (they are far below it)
+    pub estimate: Option<WorkEstimate>,
 }
 
 /// Why a case could not be run.
@@ -105,6 +108,7 @@ pub fn run_case(path: &Path, out_dir: Option<&Path>) -> Result<CaseReport, Paper
     let Some(spec) = spec::parse(&text, &file, plan.stop.horizon_s())? else {
         return Err(PaperError::NotACase(file));
     };
+    let estimate = Some(plan.work_estimate());
     let opts = RunOptions { out_dir: None, record: true };
     let o = run(plan.clone(), &opts).map_err(|e| PaperError::Run { file: file.clone(), source: Box::new(e) })?;
     let cols = extract::Series::of(&o);
@@ -144,6 +148,7 @@ pub fn run_case(path: &Path, out_dir: Option<&Path>) -> Result<CaseReport, Paper
         status: o.summary.status,
         wall_s: started.elapsed().as_secs_f64(),
         figure: figure_stem,
+        estimate,
     })
 }
 
