@@ -23,7 +23,7 @@ use serde::Deserialize;
 #[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct GroundSpec {
-    /// height of the ground plane `x3` [m]; must lie below both supports
+    /// height of the ground plane `x3` [m]; must lie below both supports and below the initial parabola
     pub height_m: f64,
     /// coefficient of restitution on the normal velocity [-], in [0, 1]; the paper's 36 % of the
     /// vertical impact energy returned on rebound is 0.6 (0.6^2 = 0.36, section 4.4)

@@ -81,12 +81,12 @@ pub struct ConductorSpec {
     /// constitutive law; default `"tension_only"`
     #[serde(default)]
     pub tension_law: TensionLawSpec,
-    /// linear thermal expansion coefficient `alpha_t` [1/K], >= 0, eq. (5.5); default 0 (section 5.4
-    /// gives 23.8e-6 for aluminium)
+    /// linear thermal expansion coefficient `alpha_t` [1/K], in [0, 1e-3], eq. (5.5); default 0 (section
+    /// 5.4 gives 23.8e-6 for aluminium; metals are 1e-5 to 3e-5)
     #[serde(default)]
     pub thermal_expansion_per_k: f64,
     /// temperature at which the wire is stress-free at its unstretched length, and its initial
-    /// temperature `u_ref` [K], > 0; default 268.15 K (-5 C, the ambient temperature of section 5.4)
+    /// temperature `u_ref` [K], in (0, 5000]; default 268.15 K (-5 C, the ambient temperature of section 5.4)
     #[serde(default = "default_reference_temperature")]
     pub reference_temperature_k: f64,
 }
@@ -150,7 +150,8 @@ pub struct InitialSpec {
 #[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct LoadsSpec {
-    /// gravitational acceleration `g` [m/s^2] along `-x3`; default 9.81 (the paper's value, 4.1); 0 for none
+    /// gravitational acceleration `g` [m/s^2] along `-x3`, in [0, 100]; default 9.81 (the paper's value,
+    /// 4.1); 0 for none
     #[serde(default = "default_gravity")]
     pub gravity_m_per_s2: f64,
     /// uniform force per unit unstretched length `q` [N/m] in a fixed direction (e.g. a wind drag that
@@ -255,7 +256,7 @@ pub struct NumericsSpec {
     #[serde(default)]
     pub eta_n_s: f64,
     /// mass-proportional damping `zeta` [1/s] (not in the paper: still-air drag or a dynamic-relaxation
-    /// aid), >= 0 with `zeta dt < 1`; default 0
+    /// aid), >= 0 with `zeta dt < 1` (the step's damping factor stays positive); default 0
     #[serde(default)]
     pub mass_damping_per_s: f64,
     /// speed bound [m/s], in (0, 1e7], above which a run is stopped as unstable; default: the longitudinal wave
@@ -318,7 +319,7 @@ pub struct OutputSpec {
     /// interval between rows of `timeseries.csv` [s], in (0, 1e8]; default 0.05
     #[serde(default = "default_sample")]
     pub sample_interval_s: f64,
-    /// times at which the whole shape goes to `snapshots.csv` [s]: taken at the first time step at or
+    /// times at which the whole shape goes to `snapshots.csv` [s], each in [0, end time]: taken at the first time step at or
     /// after each (the rows record the actual time; outputs never shorten a step); the final state is
     /// always written too
     #[serde(default)]
@@ -326,7 +327,7 @@ pub struct OutputSpec {
     /// named points of the wire followed in `timeseries.csv` and `summary.json`, besides mid-span
     #[serde(default)]
     pub probes: Vec<ProbeSpec>,
-    /// the peaks of `summary.json` count from this time [s], >= 0; default: the first event's time (so a
+    /// the peaks of `summary.json` count from this time [s], in [0, end time]; default: the first event's time (so a
     /// settle-then-break run reports the break's peaks), or 0 without events. Every phase between events
     /// has its own peaks in `summary.json` regardless.
     #[serde(default)]
