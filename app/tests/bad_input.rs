@@ -42,6 +42,104 @@ const CASES: &[(&str, &[&str])] = &[
     ),
     ("event_after_end", &["field `events[0].time_s` = 2", "end time"]),
     ("ice_range_out_of_bounds", &["field `events[0].range` = [0.5, 1.5]", "0 <= a < b <= 1"]),
+    // Issue 10: each family of bad input the tester found (one file per case, named for what is wrong).
+    ("ice_on_off_weightless_wire", &["field `conductor.linear_density_kg_per_m` = 1e-30", "[1e-3, 1e3] kg/m"]),
+    (
+        "ice_dropped_before_it_is_added",
+        &["field `events[1].linear_density_kg_per_m` = -0.5", "segments 0..20 at 0.5 kg/m", "time order"],
+    ),
+    (
+        "ice_dropped_beyond_its_range",
+        &[
+            "field `events[1].linear_density_kg_per_m` = -0.5",
+            "segments 10..15 at 0.5 kg/m",
+            "below conductor.linear_density_kg_per_m = 1 kg/m",
+        ],
+    ),
+    ("ice_dropped_twice", &["field `events[2].linear_density_kg_per_m` = -0.3", "at 0.7", "kg/m"]),
+    ("ice_change_too_large", &["field `events[0].linear_density_kg_per_m` = 10000000", "[-1e3, 1e3] kg/m"]),
+    ("support_with_four_components", &["line 7", "invalid length 4, expected exactly 3 components"]),
+    ("uniform_load_with_two_components", &["line 18", "invalid length 2, expected exactly 3 components"]),
+    ("ice_range_with_three_components", &["line 21, column 9", "invalid length 3, expected exactly 2 components"]),
+    ("wind_direction_overflows", &["field `loads.wind.direction` = [1e308, 1e308, 0.0]", "within 1e6"]),
+    ("supports_too_far_apart", &["field `geometry.right_support_m` = [0.0, 20000.0, 0.0]", "above 10000 m", "5.4 km"]),
+    (
+        "support_far_from_origin",
+        &[
+            "field `geometry.left_support_m` = [0.0, 0.0, 1000000000.0]",
+            "within 1e5 m",
+            "field `geometry.right_support_m`",
+        ],
+    ),
+    ("parabola_on_vertical_chord", &["field `initial.shape` = parabola", "not vertical", "sags vertically"]),
+    ("ground_cuts_initial_parabola", &["field `ground.height_m` = -10", "reaches x3 = -20 m", "below the ground"]),
+    ("gust_period_below_time_step", &["field `events[0].period_s` = 0.0001", "dt = 8.0904e-3 s", "time steps"]),
+    (
+        "air_density_in_grams",
+        &["field `loads.wind.air_density_kg_per_m3` = 1225", "kg/m^3, not g/m^3", "sea level 1.225"],
+    ),
+    (
+        "temperature_without_expansion",
+        &["field `events[0].action` = \"temperature\"", "thermal_expansion_per_k > 0", "changes nothing"],
+    ),
+    ("ice_range_narrower_than_a_segment", &["field `events[0].range` = [0.5, 0.51]", "selects no segment", "1/20"]),
+    ("temperature_range_narrower_than_a_segment", &["field `events[0].range` = [0.2, 0.22]", "selects no segment"]),
+    ("same_break_twice", &["field `events[1].at_fraction` = 0.5", "breaks segment 10", "events[0]", "breaks once"]),
+    ("two_breaks_in_one_segment", &["field `events[1].at_fraction` = 0.52", "breaks segment 10", "already broken"]),
+    ("wind_event_without_wind", &["field `events[0].action` = \"wind\"", "[loads.wind]"]),
+    ("gust_event_without_wind", &["field `events[0].action` = \"gust\"", "[loads.wind]"]),
+    ("ground_event_without_ground", &["field `events[0].action` = \"ground\"", "[ground]"]),
+    ("tau_speed_overflows", &["field `output.tau_speed_m_per_s` = 1e308", "[1e-3, 1e3] m/s"]),
+    (
+        "unstretched_length_tiny",
+        &["field `geometry.unstretched_length_m` = 1e-300", "[chord / 2, 100 chord] = [80, 16000] m"],
+    ),
+    ("unstretched_length_huge", &["field `geometry.unstretched_length_m` = 160000", "100 chord"]),
+    (
+        "cooling_to_negative_length",
+        &["field `events[0].temperature_k` = 100", "-0.900000", "1 + alpha_t (u - u_ref)", "u >= 1500 K"],
+    ),
+    (
+        "heating_hold_cools_to_zero_length",
+        &["field `events[0].hold_temperature_k` = 1", "0.001000", "1 + alpha_t (u - u_ref)"],
+    ),
+    ("stiffness_absurd", &["field `conductor.axial_stiffness_n` = 1e30", "[1, 1e10] N"]),
+    ("density_tiny", &["field `conductor.linear_density_kg_per_m` = 1e-30", "[1e-3, 1e3] kg/m"]),
+    ("density_huge", &["field `conductor.linear_density_kg_per_m` = 100000", "[1e-3, 1e3] kg/m"]),
+    ("youngs_modulus_absurd", &["field `conductor.youngs_modulus_pa` = 1e20", "[1e6, 1e12] Pa"]),
+    ("diameter_huge", &["field `conductor.diameter_m` = 5", "[1e-4, 1] m"]),
+    ("end_time_absurd", &["field `duration.end_time_s` = 1e300", "at most 1e8 s"]),
+    ("settle_cap_absurd", &["field `duration.until_settled.max_time_s` = 1e300", "at most 1e8 s"]),
+    ("sample_interval_absurd", &["field `output.sample_interval_s` = 1e300", "at most 1e8 s"]),
+    ("wind_initial_scale_huge", &["field `loads.wind.initial_scale` = 10000000000", "at most 100"]),
+    ("wind_scale_event_huge", &["field `events[0].scale` = 10000000000", "at most 100"]),
+    ("gust_amplitude_huge", &["field `events[0].amplitude` = 10000000000", "at most 100"]),
+    ("pressure_huge", &["field `loads.wind.pressure_n_per_m` = 1000000000", "1e4 N/m"]),
+    ("uniform_load_huge", &["field `loads.uniform_load_n_per_m` = [0.0, 0.0, -1000000000.0]", "within 1e4 N/m"]),
+    ("internal_friction_huge", &["field `numerics.eta_n_s` = 1e12", "1e9 N s"]),
+    ("max_speed_absurd", &["field `numerics.max_speed_m_per_s` = 1e300", "1e7 m/s"]),
+    ("normal_coefficient_huge", &["field `loads.wind.normal_coefficient` = 100", "at most 10"]),
+    ("ramp_absurd", &["field `events[0].ramp_s` = 1e300", "1e8 s"]),
+    ("thermal_expansion_too_large", &["field `conductor.thermal_expansion_per_k` = 1", "[0, 1e-3] 1/K"]),
+    ("reference_temperature_zero", &["field `conductor.reference_temperature_k` = 0", "(0, 5000] K"]),
+    ("heat_time_too_large", &["field `events[0].heat_time_per_s` = 1000000000", "(0, 1000] 1/s"]),
+    ("event_gate_unknown", &["line 26, column 8", "unknown variant `sideways`"]),
+    ("event_number_as_text", &["line 20, column 15", "invalid type: string \"half\", expected f64"]),
+    ("event_action_unknown", &["line 19, column 10", "unknown variant `melt`"]),
+    ("event_field_unknown", &["line 21", "unknown field `gate`"]),
+    ("nesting_too_deep", &["line 2", "max recursion depth"]),
+    ("wind_speed_absurd", &["field `loads.wind.speed_m_per_s` = 1000000", "at most 100 m/s", "km/h"]),
+    ("probe_named_mid", &["field `output.probes[0].name` = \"mid\"", "letters, digits and _ only"]),
+    ("event_time_negative", &["field `events[0].time_s` = -1", "[0, end time]"]),
+    ("break_at_the_support", &["field `events[0].at_fraction` = 1", "(0, 1)"]),
+    ("peaks_after_end", &["field `output.peaks_from_s` = 5", "[0, end time]"]),
+    ("not_utf8", &["line 4, column 36", "not valid UTF-8", "byte 0xb0"]),
+];
+
+/// Heat-conduction cases (`ohl paper CASE --cases tests/bad_inputs`): (file stem, message substrings).
+const PAPER_CASES: &[(&str, &[&str])] = &[
+    ("heat_tiny_temperature_scale", &["field `rod.temperature_scale_k` = 1e-300", "[1, 1e4] K", "overflow"]),
+    ("heat_temperature_absurd", &["field `rod.left_temperature_k` = 1e300", "1e4 K"]),
 ];
 
 fn dir() -> PathBuf {
@@ -65,7 +163,7 @@ fn tmp(name: &str) -> PathBuf {
 
 #[test]
 fn every_invalid_scenario_is_refused_with_a_precise_message() {
-    assert!(CASES.len() >= 12);
+    assert!(CASES.len() + PAPER_CASES.len() >= 80);
     let out = tmp("bad");
     for (stem, needles) in CASES {
         let file = dir().join(format!("{stem}.toml"));
@@ -78,6 +176,33 @@ fn every_invalid_scenario_is_refused_with_a_precise_message() {
         assert!(!err.contains("panicked"), "{stem}: panicked:\n{err}");
         assert!(!out.join("timeseries.csv").exists(), "{stem}: a refused scenario must not start a run");
     }
+}
+
+#[test]
+fn every_invalid_heat_case_is_refused_with_a_precise_message() {
+    let out = tmp("bad-heat");
+    for (stem, needles) in PAPER_CASES {
+        let (code, _, err) = ohl(&["paper", stem, "--cases", dir().to_str().unwrap(), "--out", out.to_str().unwrap()]);
+        assert_eq!(code, 2, "{stem}: exit code {code}, stderr:\n{err}");
+        assert!(err.contains(&format!("{stem}.toml")), "{stem}: message does not name the file:\n{err}");
+        for n in *needles {
+            assert!(err.contains(n), "{stem}: message lacks `{n}`:\n{err}");
+        }
+        assert!(!err.contains("panicked"), "{stem}: panicked:\n{err}");
+    }
+}
+
+#[test]
+fn every_file_of_the_directory_is_a_case() {
+    let mut listed: Vec<&str> = CASES.iter().chain(PAPER_CASES).map(|c| c.0).collect();
+    listed.push("valid");
+    listed.sort_unstable();
+    let mut files: Vec<String> = std::fs::read_dir(dir())
+        .unwrap()
+        .map(|e| e.unwrap().path().file_stem().unwrap().to_string_lossy().into_owned())
+        .collect();
+    files.sort_unstable();
+    assert_eq!(files, listed, "every file of tests/bad_inputs is listed once, and every case has its file");
 }
 
 #[test]

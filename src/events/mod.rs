@@ -85,8 +85,11 @@ impl EventState {
             }
             Action::Ice { segments: r, delta_kg_per_m } => {
                 let text = format!("linear density {delta_kg_per_m:+} kg/m on segments {r:?}");
-                solver.wire_mut().add_linear_density(r, delta_kg_per_m);
-                text
+                if solver.wire_mut().add_linear_density(r, delta_kg_per_m) {
+                    text
+                } else {
+                    format!("{text} refused: it would leave a segment mass non-positive (the wire is unchanged)")
+                }
             }
             Action::Wind { scale, gate } => {
                 self.gust = None;

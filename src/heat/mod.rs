@@ -72,12 +72,23 @@ impl HeatRod {
     /// If `u0` has fewer than 3 values (`N >= 2` is needed by every closure) or a non-finite value: both are
     /// programming errors; scenario input is validated before it reaches here.
     pub fn new(u0: Vec<f64>, boundary: HeatBoundary) -> Self {
-        assert!(u0.len() >= 3, "HeatRod needs at least 3 nodes (N >= 2 segments), got {}", u0.len());
+        match HeatRod::try_new(u0, boundary) {
+            Ok(rod) => rod,
+            Err(why) => panic!("{why}"),
+        }
+    }
+
+    /// As [`HeatRod::new`], but fewer than 3 values or a non-finite value (e.g. a temperature divided by a
+    /// tiny temperature scale, which overflows) is an error that says which, not a panic.
+    pub fn try_new(u0: Vec<f64>, boundary: HeatBoundary) -> Result<Self, String> {
+        if u0.len() < 3 {
+            return Err(format!("HeatRod needs at least 3 nodes (N >= 2 segments), got {}", u0.len()));
+        }
         if let Some(i) = u0.iter().position(|u| !u.is_finite()) {
-            panic!("HeatRod initial temperature u[{i}] = {} is not finite", u0[i]);
+            return Err(format!("HeatRod initial temperature u[{i}] = {} is not finite", u0[i]));
         }
         let next = u0.clone();
-        HeatRod { u: u0, next, boundary, holds: Vec::new(), time: 0.0 }
+        Ok(HeatRod { u: u0, next, boundary, holds: Vec::new(), time: 0.0 })
     }
 
     /// The paper's test 5.4: `segments` segments, nodes with `s < 1/2` at `u_left`, nodes with `s > 1/2` at

@@ -307,3 +307,14 @@ fn segment_temperatures_average_the_end_nodes() {
     assert_eq!(rod.spread(), 7.0);
     assert_eq!(rod.max_stable_step(), 0.5 / 9.0);
 }
+
+#[test]
+fn an_overflowed_temperature_is_an_error_not_a_panic() {
+    // A temperature over a tiny scale (u = T / T_s) overflows: try_new says so, new would panic.
+    let u: f64 = 473.15 / 1.0e-308;
+    assert!(u.is_infinite());
+    let e = HeatRod::try_new(vec![1.0, u, 1.0], HeatBoundary::ZeroFlux).unwrap_err();
+    assert!(e.contains("u[1] = inf is not finite"), "{e}");
+    assert!(HeatRod::try_new(vec![1.0, 2.0], HeatBoundary::ZeroFlux).unwrap_err().contains("at least 3 nodes"));
+    assert!(HeatRod::try_new(vec![1.0, 2.0, 3.0], HeatBoundary::ZeroFlux).is_ok());
+}

@@ -23,7 +23,7 @@ use serde::Deserialize;
 #[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct GroundSpec {
-    /// height of the ground plane `x3` [m]; must lie below both supports
+    /// height of the ground plane `x3` [m]; must lie below both supports and below the initial parabola
     pub height_m: f64,
     /// coefficient of restitution on the normal velocity [-], in [0, 1]; the paper's 36 % of the
     /// vertical impact energy returned on rebound is 0.6 (0.6^2 = 0.36, section 4.4)
@@ -73,24 +73,27 @@ pub enum EventSpec {
         time_s: f64,
         /// position of the break as a fraction of the unstretched length from the left support [-], in
         /// (0, 1); the segment `floor(at_fraction N)` breaks (for 0.5 and even N: the segment right of
-        /// the mid-span node)
+        /// the mid-span node). A segment breaks once: two breaks in one segment are refused
         at_fraction: f64,
     },
     /// Add ice (or drop it, with a negative value): a change of linear density over a span range.
     Ice {
         /// event time [s]
         time_s: f64,
-        /// change of linear density `delta rho0` [kg/m] per unit unstretched length (negative drops ice)
+        /// change of linear density `delta rho0` [kg/m] per unit unstretched length (negative drops ice), in
+        /// [-1e3, 1e3]; applied in time order, no segment may become lighter than the bare wire
+        /// (`conductor.linear_density_kg_per_m`, for which the time step is set)
         linear_density_kg_per_m: f64,
-        /// span range `[a, b]` as fractions of the unstretched length [-]; default the whole span
-        #[serde(default = "whole_span")]
+        /// span range `[a, b]` as fractions of the unstretched length [-], selecting at least one segment;
+        /// default the whole span
+        #[serde(default = "whole_span", deserialize_with = "super::schema::two")]
         range: [f64; 2],
     },
     /// Set the wind to a constant multiple of the scenario's wind load (0 = off, 1 = on); ends a gust.
     Wind {
         /// event time [s]
         time_s: f64,
-        /// multiplier on the wind load [-], >= 0
+        /// multiplier on the wind load [-], in [0, 100]; needs `[loads.wind]`
         scale: f64,
         /// where it acts; default `"always"`
         #[serde(default)]
@@ -101,9 +104,9 @@ pub enum EventSpec {
     Gust {
         /// event time [s]: the gust starts here
         time_s: f64,
-        /// period `P` of `|sin(pi t / P)|` [s], > 0
+        /// period `P` of `|sin(pi t / P)|` [s], at least 10 time steps and at most 1e8 s; needs `[loads.wind]`
         period_s: f64,
-        /// peak multiplier on the wind load [-], >= 0; default 1 (the full pressure head `q0 d`)
+        /// peak multiplier on the wind load [-], in [0, 100]; default 1 (the full pressure head `q0 d`)
         #[serde(default = "one")]
         amplitude: f64,
         /// where it acts; default `"always"` (`"downwind"` is the dancing-wires variant of 4.5)
@@ -115,12 +118,13 @@ pub enum EventSpec {
     Temperature {
         /// event time [s]
         time_s: f64,
-        /// target temperature `u` [K], > 0
+        /// target temperature `u` [K], in (0, 5000], with `1 + alpha_t (u - u_ref) >= 0.5` (a thermal strain
+        /// of at least -50 %); needs `conductor.thermal_expansion_per_k > 0` (else it changes nothing)
         temperature_k: f64,
-        /// span range `[a, b]` [-]; default the whole span
-        #[serde(default = "whole_span")]
+        /// span range `[a, b]` [-], selecting at least one segment; default the whole span
+        #[serde(default = "whole_span", deserialize_with = "super::schema::two")]
         range: [f64; 2],
-        /// duration of a linear ramp from each segment's current temperature to the target [s], >= 0;
+        /// duration of a linear ramp from each segment's current temperature to the target [s], in [0, 1e8];
         /// default 0 (a step)
         #[serde(default)]
         ramp_s: f64,
@@ -130,11 +134,12 @@ pub enum EventSpec {
         /// event time [s]
         time_s: f64,
         /// span range held at `hold_temperature_k` [-]
+        #[serde(deserialize_with = "super::schema::two")]
         hold_range: [f64; 2],
-        /// temperature of the held range [K], > 0
+        /// temperature of the held range [K], in (0, 5000], with `1 + alpha_t (u - u_ref) >= 0.5`
         hold_temperature_k: f64,
         /// dimensionless heat time (the `t` of (5.1), length scaled by the span) per second of the
-        /// mechanical run [1/s], > 0. Physical conduction in aluminium would be `k / (rho c S^2)`, about
+        /// mechanical run [1/s], in (0, 1000]. Physical conduction in aluminium would be `k / (rho c S^2)`, about
         /// 3.4e-9 1/s for a 160 m span (NOTES.md); the paper's de-icing sequence needs about 1.
         heat_time_per_s: f64,
         /// boundary treatment at the wire's ends; default `"zero_flux"`
@@ -174,6 +179,14 @@ impl EventSpec {
             | EventSpec::HeatConduction { time_s, .. }
             | EventSpec::HeatConductionOff { time_s }
             | EventSpec::Ground { time_s, .. } => time_s,
+        }
+    }
+
+    /// The `at_fraction` of a break, `None` for any other event.
+    pub fn break_fraction(&self) -> Option<f64> {
+        match *self {
+            EventSpec::Break { at_fraction, .. } => Some(at_fraction),
+            _ => None,
         }
     }
 

@@ -6,6 +6,7 @@
 
 pub mod build;
 pub mod events;
+mod locate;
 pub mod schema;
 pub mod validate;
 pub mod work;
@@ -64,7 +65,7 @@ impl fmt::Display for Invalid<'_> {
 
 /// Parse a scenario from TOML text; `file` names it in messages.
 pub fn parse(text: &str, file: &str) -> Result<Scenario, InputError> {
-    let scenario: Scenario = toml::from_str(text).map_err(|e| parse_error(file, e))?;
+    let scenario: Scenario = toml::from_str(text).map_err(|e| parse_error_at(text, file, e))?;
     let problems = validate::validate(&scenario);
     if problems.is_empty() { Ok(scenario) } else { Err(InputError::Invalid { file: file.to_string(), problems }) }
 }
@@ -74,6 +75,36 @@ pub fn parse_error(file: &str, e: toml::de::Error) -> InputError {
     InputError::Parse { file: file.to_string(), message: e.to_string() }
 }
 
+/// The error of a TOML file that does not parse, located in `text`: where the parser points at a table
+/// header (a value inside an `[[events]]` table is read through the table as a whole, and serde loses
+/// the value's own position), the message points at the offending value's own line instead.
+pub fn parse_error_at(text: &str, file: &str, e: toml::de::Error) -> InputError {
+    let message = locate::relocate(text, &e).unwrap_or_else(|| e.to_string());
+    InputError::Parse { file: file.to_string(), message }
+}
+
+/// Read a text file: an I/O error names the file; a file that is not UTF-8 is refused with the line and
+/// column of its first invalid byte.
+pub fn read_text(path: &Path) -> Result<String, InputError> {
+    let file = path.display().to_string();
+    let bytes = std::fs::read(path).map_err(|source| InputError::Io { file: file.clone(), source })?;
+    String::from_utf8(bytes).map_err(|e| {
+        let at = e.utf8_error().valid_up_to();
+        let bytes = e.as_bytes();
+        let line_start = bytes[..at].iter().rposition(|&b| b == b'\n').map_or(0, |p| p + 1);
+        let line = bytes[..at].iter().filter(|&&b| b == b'\n').count() + 1;
+        InputError::Parse {
+            file,
+            message: format!(
+                "line {line}, column {}: the file is not valid UTF-8 (byte 0x{:02x} at byte offset {at}): save the \
+                 scenario as UTF-8 text",
+                at - line_start + 1,
+                bytes[at]
+            ),
+        }
+    })
+}
+
 /// Build a parsed scenario into its plan ([`build::build`]), naming `file` in the error.
 pub fn plan(s: &Scenario, file: &str) -> Result<Plan, InputError> {
     build(s).map_err(|problems| InputError::Invalid { file: file.to_string(), problems })
@@ -81,7 +112,6 @@ pub fn plan(s: &Scenario, file: &str) -> Result<Plan, InputError> {
 
 /// Read, parse and validate a scenario file.
 pub fn load(path: &Path) -> Result<Scenario, InputError> {
-    let file = path.display().to_string();
-    let text = std::fs::read_to_string(path).map_err(|source| InputError::Io { file: file.clone(), source })?;
-    parse(&text, &file)
+    let text = read_text(path)?;
+    parse(&text, &path.display().to_string())
 }

@@ -3,7 +3,7 @@
 //! Defaults cite their source. A scenario is data; [`super::validate`] checks it before anything runs and
 //! [`super::build`] turns it into a solver.
 
-use serde::Deserialize;
+use serde::{Deserialize, Deserializer};
 
 pub use super::events::{EventSpec, GateSpec, GroundSpec, HeatBoundarySpec};
 
@@ -63,26 +63,30 @@ pub enum TensionLawSpec {
 #[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct ConductorSpec {
-    /// axial stiffness `EA` [N] (section 4: "E = 80734 g [N]" is this force)
+    /// axial stiffness `EA` [N], in [1, 1e10] (section 4: "E = 80734 g [N]" = 7.9e5 N is this force;
+    /// conductors are 1e6 to 1e9 N)
     #[serde(default)]
     pub axial_stiffness_n: Option<f64>,
-    /// Young's modulus `E` [Pa] (section 5: 6.25e10 Pa for aluminium); needs `diameter_m`
+    /// Young's modulus `E` [Pa], in [1e6, 1e12] (section 5: 6.25e10 Pa for aluminium; steel 2e11);
+    /// needs `diameter_m`
     #[serde(default)]
     pub youngs_modulus_pa: Option<f64>,
-    /// conductor diameter `d` [m]: the aerodynamic law (2.5) and `EA` from `E`
+    /// conductor diameter `d` [m], in [1e-4, 1] (conductors are 5 to 50 mm): the aerodynamic law (2.5)
+    /// and `EA` from `E`
     #[serde(default)]
     pub diameter_m: Option<f64>,
-    /// linear density `rho0` [kg/m] per unit unstretched length (wire plus ice, if iced)
+    /// linear density `rho0` [kg/m] per unit unstretched length (wire plus ice, if iced), in [1e-3, 1e3]
+    /// (bare conductors are 0.1 to 5 kg/m, heavily iced ones up to about 30 kg/m)
     pub linear_density_kg_per_m: f64,
     /// constitutive law; default `"tension_only"`
     #[serde(default)]
     pub tension_law: TensionLawSpec,
-    /// linear thermal expansion coefficient `alpha_t` [1/K], >= 0, eq. (5.5); default 0 (section 5.4
-    /// gives 23.8e-6 for aluminium)
+    /// linear thermal expansion coefficient `alpha_t` [1/K], in [0, 1e-3], eq. (5.5); default 0 (section
+    /// 5.4 gives 23.8e-6 for aluminium; metals are 1e-5 to 3e-5)
     #[serde(default)]
     pub thermal_expansion_per_k: f64,
     /// temperature at which the wire is stress-free at its unstretched length, and its initial
-    /// temperature `u_ref` [K], > 0; default 268.15 K (-5 C, the ambient temperature of section 5.4)
+    /// temperature `u_ref` [K], in (0, 5000]; default 268.15 K (-5 C, the ambient temperature of section 5.4)
     #[serde(default = "default_reference_temperature")]
     pub reference_temperature_k: f64,
 }
@@ -95,14 +99,19 @@ fn default_reference_temperature() -> f64 {
 #[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct GeometrySpec {
-    /// left support position `A = (x1, x2, x3)` [m]
+    /// left support position `A = (x1, x2, x3)` [m]: exactly three components, each within
+    /// `MAX_COORDINATE_M` = 1e5 m (a local frame around the span)
+    #[serde(deserialize_with = "three")]
     pub left_support_m: [f64; 3],
-    /// right support position `B = (x1, x2, x3)` [m]; heights may differ
+    /// right support position `B = (x1, x2, x3)` [m]; heights may differ. The chord `|B - A|` is in
+    /// [1e-6, 1e4] m (`MAX_SPAN_M`: the longest overhead spans built are about 5.4 km)
+    #[serde(deserialize_with = "three")]
     pub right_support_m: [f64; 3],
-    /// number of segments `N` [-] (nodes `0..=N`); even `N` puts a node at mid-span
+    /// number of segments `N` [-] (nodes `0..=N`), in [2, 1e7]; even `N` puts a node at mid-span
     pub segments: usize,
-    /// unstretched (stress-free) length of the wire `S` [m]; default: the length of the initial shape,
-    /// so that the wire starts unstressed
+    /// unstretched (stress-free) length of the wire `S` [m], in [chord / 2, 100 chord] (a strain of 100 %
+    /// is beyond any conductor; a wire 100 times its span is not a line); default: the length of the
+    /// initial shape, so that the wire starts unstressed
     #[serde(default)]
     pub unstretched_length_m: Option<f64>,
 }
@@ -130,7 +139,8 @@ pub struct InitialSpec {
     /// `"straight"` (default), `"parabola"` or `"equilibrium"`
     #[serde(default)]
     pub shape: ShapeSpec,
-    /// mid-span sag `f` [m] below the chord, measured vertically; required with `shape = "parabola"`,
+    /// mid-span sag `f` [m] below the chord, measured vertically, in (0, chord]; the chord must not be
+    /// vertical (at least 1e-3 of it horizontal); required with `shape = "parabola"`,
     /// optional with `"equilibrium"` (then the start of the Newton iteration and the default length)
     #[serde(default)]
     pub sag_m: Option<f64>,
@@ -140,12 +150,14 @@ pub struct InitialSpec {
 #[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct LoadsSpec {
-    /// gravitational acceleration `g` [m/s^2] along `-x3`; default 9.81 (the paper's value, 4.1); 0 for none
+    /// gravitational acceleration `g` [m/s^2] along `-x3`, in [0, 100]; default 9.81 (the paper's value,
+    /// 4.1); 0 for none
     #[serde(default = "default_gravity")]
     pub gravity_m_per_s2: f64,
     /// uniform force per unit unstretched length `q` [N/m] in a fixed direction (e.g. a wind drag that
-    /// does not turn with the wire); default zero
-    #[serde(default)]
+    /// does not turn with the wire), each component within 1e4 N/m (ten times the weight of the heaviest
+    /// iced conductor); default zero
+    #[serde(default, deserialize_with = "three")]
     pub uniform_load_n_per_m: [f64; 3],
     /// wind, if any
     #[serde(default)]
@@ -178,25 +190,30 @@ pub enum WindLawSpec {
 pub struct WindSpec {
     /// `"aerodynamic"` or `"uniform_normal"`
     pub law: WindLawSpec,
-    /// flow direction `w` [-], normalised on reading; default `[1, 0, 0]` (the paper's `x1`)
-    #[serde(default = "default_wind_direction")]
+    /// flow direction `w` [-], normalised on reading: three components, each within 1e6, not all zero
+    /// (norm at least 1e-12); default `[1, 0, 0]` (the paper's `x1`)
+    #[serde(default = "default_wind_direction", deserialize_with = "three")]
     pub direction: [f64; 3],
-    /// undisturbed wind speed `U` [m/s]; scales the damping (2.6) and, for the aerodynamic law, `q`
+    /// undisturbed wind speed `U` [m/s], in (0, 100] (design wind speeds are below about 70 m/s; the
+    /// strongest gust measured, 113 m/s, was not a steady wind); scales the damping (2.6) and, for the
+    /// aerodynamic law, `q`
     pub speed_m_per_s: f64,
-    /// air density `rho_air` [kg/m^3]; default 1.225 (NOTES.md, ISA sea level)
+    /// air density `rho_air` [kg/m^3], in (0, 2] (1.225 at sea level, ISA; the densest cold air is about
+    /// 1.5: a value above 2 is another unit, e.g. g/m^3); default 1.225 (NOTES.md, ISA sea level)
     #[serde(default = "default_air_density")]
     pub air_density_kg_per_m3: f64,
-    /// normal force coefficient `c_n` [-]; default 1.8446 (paper, after (2.5))
+    /// normal force coefficient `c_n` [-], in [0, 10] (drag coefficients of cylinders are about 1 to 2);
+    /// default 1.8446 (paper, after (2.5))
     #[serde(default = "default_cn")]
     pub normal_coefficient: f64,
-    /// tangential force coefficient `c_tau` [-]; default 0.0554 (paper, after (2.5))
+    /// tangential force coefficient `c_tau` [-], in [0, 10]; default 0.0554 (paper, after (2.5))
     #[serde(default = "default_ct")]
     pub tangential_coefficient: f64,
-    /// line pressure `p` [N/m] per unit deformed length, for `law = "uniform_normal"` only
+    /// line pressure `p` [N/m] per unit deformed length, in [0, 1e4], for `law = "uniform_normal"` only
     /// (section 4.1 uses `p = rho_air U^2 d / 2 = 3.805 N/m`)
     #[serde(default)]
     pub pressure_n_per_m: Option<f64>,
-    /// multiplier on the wind load at the start [-], >= 0; default 1 (on). Events `wind` and `gust`
+    /// multiplier on the wind load at the start [-], in [0, 100]; default 1 (on). Events `wind` and `gust`
     /// change it during the run.
     #[serde(default = "default_initial_scale")]
     pub initial_scale: f64,
@@ -235,14 +252,14 @@ pub struct NumericsSpec {
     /// aerodynamic damping coefficient `mu` [-] of (2.6), in [0, 1]; paper range 0.1 to 0.2; default 0
     #[serde(default)]
     pub mu: f64,
-    /// Kelvin-Voigt internal friction `eta` [N s] of (3.4), >= 0; default 0
+    /// Kelvin-Voigt internal friction `eta` [N s] of (3.4), in [0, 1e9]; default 0
     #[serde(default)]
     pub eta_n_s: f64,
     /// mass-proportional damping `zeta` [1/s] (not in the paper: still-air drag or a dynamic-relaxation
-    /// aid), >= 0 with `zeta dt < 1`; default 0
+    /// aid), >= 0 with `zeta dt < 1` (the step's damping factor stays positive); default 0
     #[serde(default)]
     pub mass_damping_per_s: f64,
-    /// speed bound [m/s] above which a run is stopped as unstable; default: the longitudinal wave
+    /// speed bound [m/s], in (0, 1e7], above which a run is stopped as unstable; default: the longitudinal wave
     /// speed `c`, which no material point of a stable solution approaches
     #[serde(default)]
     pub max_speed_m_per_s: Option<f64>,
@@ -269,7 +286,7 @@ fn default_courant() -> f64 {
 #[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct DurationSpec {
-    /// end time `t_end` [s]
+    /// end time `t_end` [s], in (0, 1e8] (about three years)
     #[serde(default)]
     pub end_time_s: Option<f64>,
     /// run until the wire settles
@@ -284,10 +301,10 @@ pub struct DurationSpec {
 pub struct SettleSpec {
     /// threshold as a fraction of the peak kinetic energy [-], in (0, 1)
     pub kinetic_energy_fraction: f64,
-    /// how long the kinetic energy must stay below the threshold [s], > 0; default 1 s
+    /// how long the kinetic energy must stay below the threshold [s], in (0, 1e8]; default 1 s
     #[serde(default = "default_window")]
     pub window_s: f64,
-    /// time cap [s], > 0
+    /// time cap [s], in (0, 1e8]
     pub max_time_s: f64,
 }
 
@@ -299,10 +316,10 @@ fn default_window() -> f64 {
 #[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct OutputSpec {
-    /// interval between rows of `timeseries.csv` [s], > 0; default 0.05
+    /// interval between rows of `timeseries.csv` [s], in (0, 1e8]; default 0.05
     #[serde(default = "default_sample")]
     pub sample_interval_s: f64,
-    /// times at which the whole shape goes to `snapshots.csv` [s]: taken at the first time step at or
+    /// times at which the whole shape goes to `snapshots.csv` [s], each in [0, end time]: taken at the first time step at or
     /// after each (the rows record the actual time; outputs never shorten a step); the final state is
     /// always written too
     #[serde(default)]
@@ -310,13 +327,13 @@ pub struct OutputSpec {
     /// named points of the wire followed in `timeseries.csv` and `summary.json`, besides mid-span
     #[serde(default)]
     pub probes: Vec<ProbeSpec>,
-    /// the peaks of `summary.json` count from this time [s], >= 0; default: the first event's time (so a
+    /// the peaks of `summary.json` count from this time [s], in [0, end time]; default: the first event's time (so a
     /// settle-then-break run reports the break's peaks), or 0 without events. Every phase between events
     /// has its own peaks in `summary.json` regardless.
     #[serde(default)]
     pub peaks_from_s: Option<f64>,
-    /// speed `U` [m/s] of the dimensionless time `tau = t U / l` (l = chord length); default 20 (the
-    /// paper's wind speed, section 4)
+    /// speed `U` [m/s] of the dimensionless time `tau = t U / l` (l = chord length), in [1e-3, 1e3];
+    /// default 20 (the paper's wind speed, section 4)
     #[serde(default = "default_tau_speed")]
     pub tau_speed_m_per_s: f64,
 }
@@ -348,4 +365,23 @@ fn default_sample() -> f64 {
 }
 fn default_tau_speed() -> f64 {
     20.0
+}
+
+/// `[f64; 3]` from a TOML array of exactly three numbers. (serde's own `[f64; 3]` takes the first three of
+/// a longer TOML array and silently drops the rest.)
+pub(crate) fn three<'de, D: Deserializer<'de>>(d: D) -> Result<[f64; 3], D::Error> {
+    exactly(d)
+}
+
+/// `[f64; 2]` from a TOML array of exactly two numbers (span ranges `[a, b]`).
+pub(crate) fn two<'de, D: Deserializer<'de>>(d: D) -> Result<[f64; 2], D::Error> {
+    exactly(d)
+}
+
+fn exactly<'de, D: Deserializer<'de>, const K: usize>(d: D) -> Result<[f64; K], D::Error> {
+    let v: Vec<f64> = Vec::deserialize(d)?;
+    <[f64; K]>::try_from(v.as_slice()).map_err(|_| {
+        let expected = format!("exactly {K} components");
+        serde::de::Error::invalid_length(v.len(), &expected.as_str())
+    })
 }

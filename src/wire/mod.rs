@@ -198,14 +198,27 @@ impl Wire {
     }
 
     /// Add `delta_kg_per_m` [kg/m] of linear density (ice; negative to drop it) on segments `range`,
-    /// per unit reference length, and update the node masses. Panics if a segment mass would become
-    /// non-positive (callers validate first).
-    pub fn add_linear_density(&mut self, range: std::ops::Range<usize>, delta_kg_per_m: f64) {
+    /// per unit reference length, and update the node masses. A change that would leave some segment
+    /// mass non-positive (or not finite) is refused: the wire is left unchanged and `false` returned
+    /// (scenario validation refuses such events up front, [`crate::scenario::validate`]).
+    #[must_use = "a refused change leaves the wire unchanged"]
+    pub fn add_linear_density(&mut self, range: std::ops::Range<usize>, delta_kg_per_m: f64) -> bool {
+        if range.end > self.segments() || range.start > range.end {
+            return false;
+        }
+        let after = |m: f64, l: f64| m + delta_kg_per_m * l;
+        let ok = range.clone().all(|j| {
+            let m = after(self.segment_mass[j], self.reference_length[j]);
+            m.is_finite() && m > 0.0
+        });
+        if !ok {
+            return false;
+        }
         for j in range {
-            self.segment_mass[j] += delta_kg_per_m * self.reference_length[j];
-            assert!(self.segment_mass[j] > 0.0, "segment {j} mass would become non-positive");
+            self.segment_mass[j] = after(self.segment_mass[j], self.reference_length[j]);
         }
         self.update_node_masses();
+        true
     }
 
     /// Set the temperature [K] of segments `range` and rescale their stress-free lengths by thermal

@@ -50,7 +50,7 @@
 use serde::Deserialize;
 
 use ohl::scenario::validate::{Check, Problem};
-use ohl::scenario::{InputError, parse_error};
+use ohl::scenario::{InputError, parse_error_at};
 
 use super::spec::{CheckSpec, check_row};
 use ohl::heat::HeatBoundary;
@@ -90,11 +90,12 @@ fn default_profile_times() -> Vec<f64> {
 pub struct RodSpec {
     /// number of segments `N` [-], even (a node at mid-span takes the mean of the halves)
     pub segments: usize,
-    /// initial temperature of the left half `T_L` [K]
+    /// initial temperature of the left half `T_L` [K], in (0, 1e4]
     pub left_temperature_k: f64,
-    /// initial temperature of the right half `T_R` [K]
+    /// initial temperature of the right half `T_R` [K], in (0, 1e4]
     pub right_temperature_k: f64,
-    /// temperature scale of the paper's dimensionless `u = T / T_s` [K] (273.15 K in section 5.4)
+    /// temperature scale of the paper's dimensionless `u = T / T_s` [K], in [1, 1e4] (273.15 K in section
+    /// 5.4)
     pub temperature_scale_k: f64,
 }
 
@@ -248,9 +249,17 @@ pub fn validate(h: &HeatCase) -> Vec<Problem> {
     if r.segments < 2 || !r.segments.is_multiple_of(2) || r.segments > 100_000 {
         c.fail("rod.segments", r.segments, "must be an even number in [2, 100000] (a node at mid-span)");
     }
-    c.positive("rod.left_temperature_k", r.left_temperature_k);
-    c.positive("rod.right_temperature_k", r.right_temperature_k);
-    c.positive("rod.temperature_scale_k", r.temperature_scale_k);
+    let temperature = "must be a finite number > 0, at most 1e4 K";
+    c.within("rod.left_temperature_k", r.left_temperature_k, f64::MIN_POSITIVE, 1.0e4, temperature);
+    c.within("rod.right_temperature_k", r.right_temperature_k, f64::MIN_POSITIVE, 1.0e4, temperature);
+    // u = T / T_s must stay a modest number: a tiny scale overflows it to infinity.
+    c.within(
+        "rod.temperature_scale_k",
+        r.temperature_scale_k,
+        1.0,
+        1.0e4,
+        "must be in [1, 1e4] K (the paper's u = T / 273.15 K; a tiny scale makes u = T / T_s overflow)",
+    );
     let m = &h.material;
     c.positive("material.span_m", m.span_m);
     c.positive("material.thermal_conductivity_w_per_m_k", m.thermal_conductivity_w_per_m_k);
@@ -310,7 +319,7 @@ pub fn validate(h: &HeatCase) -> Vec<Problem> {
 
 /// Parse and validate a heat case from TOML text; `file` names it in messages.
 pub fn parse(text: &str, file: &str) -> Result<HeatCase, InputError> {
-    let case: HeatCase = toml::from_str(text).map_err(|e| parse_error(file, e))?;
+    let case: HeatCase = toml::from_str(text).map_err(|e| parse_error_at(text, file, e))?;
     let problems = validate(&case);
     if problems.is_empty() { Ok(case) } else { Err(InputError::Invalid { file: file.to_string(), problems }) }
 }

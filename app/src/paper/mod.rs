@@ -99,7 +99,7 @@ pub fn run_case(path: &Path, out_dir: Option<&Path>) -> Result<CaseReport, Paper
     let started = Instant::now();
     let file = path.display().to_string();
     let name = path.file_stem().and_then(|s| s.to_str()).unwrap_or("case").to_string();
-    let text = std::fs::read_to_string(path).map_err(|source| InputError::Io { file: file.clone(), source })?;
+    let text = scenario::read_text(path)?;
     if heat_spec::is_heat_case(&text) {
         return heat_case::run_heat_case(&text, &file, &name, out_dir);
     }
