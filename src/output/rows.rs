@@ -154,7 +154,7 @@ impl RowFile {
             // shared out exactly (`gap / paddable` zeros each, one more for the first `gap % paddable`).
             let gap = room - bytes;
             let paddable = (k..end).filter(|&r| self.rows[r].1.is_some()).count();
-            let (base, extra) = if paddable > 0 { (gap / paddable, gap % paddable) } else { (0, 0) };
+            let (base, extra) = gap.checked_div(paddable).map_or((0, 0), |b| (b, gap % paddable));
             let mut page = std::mem::take(&mut self.page);
             page.clear();
             let mut padded = 0;
