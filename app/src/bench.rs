@@ -33,7 +33,7 @@ pub fn steps_per_rep(n: usize, node_steps: f64) -> usize {
 }
 
 /// Longest stretch of steps timed from one initial state: 4000 steps are 13 s simulated at N = 50
-/// (longer undamped tension-only runs can go unstable, NOTES.md) and 0.1 s at N = 5000.
+/// (longer undamped tension-only runs can go unstable, docs/paper_notes.md) and 0.1 s at N = 5000.
 pub const EPISODE_STEPS: usize = 4000;
 
 /// Run `steps` nominal steps of `config` at `n` segments from its initial state and return the solver

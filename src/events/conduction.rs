@@ -5,7 +5,7 @@
 //! Time scale. (5.1) is dimensionless, `u_t = u_ss` on `s in [0, 1]`. Physical conduction in the
 //! aluminium wire of section 5.4 has diffusivity `k / (rho c) = 209 / (2700 * 900) = 8.6e-5 m^2/s`, so
 //! one unit of dimensionless heat time is `S^2 / D = 160^2 / 8.6e-5 = 3.0e8 s` (about ten years): the
-//! paper's de-icing sequence, where the heat spreads along the span in 5 s, is not physical (NOTES.md).
+//! paper's de-icing sequence, where the heat spreads along the span in 5 s, is not physical (docs/paper_notes.md).
 //! The event therefore states `heat_time_per_s` [1/s], the dimensionless heat time per second of the
 //! mechanical run; each mechanical step `dt` advances the rod by `dt * heat_time_per_s`, in sub-steps no
 //! longer than the scheme's stability limit `h^2 / 2`.

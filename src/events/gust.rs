@@ -1,7 +1,7 @@
 //! The gust law (4.5), written with a physical period.
 //!
 //! The paper writes `p(tau) = q0 d |sin(pi n / delta)|` with `n = tau / dtau` the step counter, so the
-//! gust's period is `delta` steps and changes when the grid is refined (NOTES.md). Written with the
+//! gust's period is `delta` steps and changes when the grid is refined (docs/paper_notes.md). Written with the
 //! period `P` [s] of the pulsation, `|sin(pi n / delta)| = |sin(pi (t - t0) / P)|` with `P = delta dt`:
 //!
 //! ```text

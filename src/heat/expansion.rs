@@ -23,7 +23,7 @@ mod tests {
 
     #[test]
     fn paper_section_5_5_numbers() {
-        // Paper 5.4-5.5: alpha_t = 23.8e-6 1/K, E = 6.25e10 Pa, d = 0.0147 m. The rise (NOTES.md) is from
+        // Paper 5.4-5.5: alpha_t = 23.8e-6 1/K, E = 6.25e10 Pa, d = 0.0147 m. The rise (docs/paper_notes.md) is from
         // -5 C to the equalisation temperature (200 C + (-5 C)) / 2 = 97.5 C: 102.5 K.
         let rise = (200.0 + -5.0) / 2.0 - -5.0;
         assert_eq!(rise, 102.5);

@@ -33,7 +33,7 @@
 //!
 //! Dimensionless time is `t = kappa t_phys / l^2` with the diffusivity `kappa = k / (rho c)` and the span `l`
 //! ([`scale`]). For the paper's aluminium (`kappa = 8.6e-5 m^2/s`) and `l = 160 m`, `t = 1` is about
-//! 3.0e8 s: conduction alone cannot spread heat along a span in seconds (see `NOTES.md`), so a run that
+//! 3.0e8 s: conduction alone cannot spread heat along a span in seconds (see `docs/paper_notes.md`), so a run that
 //! couples this rod to the wire's motion in a few seconds uses a time scale of its own choosing, which the
 //! caller must state.
 

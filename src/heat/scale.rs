@@ -21,7 +21,7 @@ mod tests {
 
     #[test]
     fn paper_aluminium() {
-        // Paper 5.4: k = 209 W/(m K), rho = 2700 kg/m^3, c = 0.9 kJ/(kg K); NOTES.md: kappa ~ 8.6e-5 m^2/s.
+        // Paper 5.4: k = 209 W/(m K), rho = 2700 kg/m^3, c = 0.9 kJ/(kg K); docs/paper_notes.md: kappa ~ 8.6e-5 m^2/s.
         let kappa = thermal_diffusivity(209.0, 2700.0, 900.0);
         assert!((kappa - 8.6008e-5).abs() < 1e-9, "kappa = {kappa:e}");
         // Over the 160 m span one unit of dimensionless time is l^2 / kappa = 2.976e8 s (about 9.4 years).

@@ -99,7 +99,7 @@ pub enum EventSpec {
         #[serde(default)]
         gate: GateSpec,
     },
-    /// Start a gust, law (4.5) written with its physical period `P` (NOTES.md: the paper counts time in
+    /// Start a gust, law (4.5) written with its physical period `P` (docs/paper_notes.md: the paper counts time in
     /// integration steps): the wind load is multiplied by `amplitude |sin(pi (t - time_s) / P)|`.
     Gust {
         /// event time [s]: the gust starts here
@@ -140,7 +140,7 @@ pub enum EventSpec {
         hold_temperature_k: f64,
         /// dimensionless heat time (the `t` of (5.1), length scaled by the span) per second of the
         /// mechanical run [1/s], in (0, 1000]. Physical conduction in aluminium would be `k / (rho c S^2)`, about
-        /// 3.4e-9 1/s for a 160 m span (NOTES.md); the paper's de-icing sequence needs about 1.
+        /// 3.4e-9 1/s for a 160 m span (docs/paper_notes.md); the paper's de-icing sequence needs about 1.
         heat_time_per_s: f64,
         /// boundary treatment at the wire's ends; default `"zero_flux"`
         #[serde(default)]

@@ -199,7 +199,7 @@ pub struct WindSpec {
     /// aerodynamic law, `q`
     pub speed_m_per_s: f64,
     /// air density `rho_air` [kg/m^3], in (0, 2] (1.225 at sea level, ISA; the densest cold air is about
-    /// 1.5: a value above 2 is another unit, e.g. g/m^3); default 1.225 (NOTES.md, ISA sea level)
+    /// 1.5: a value above 2 is another unit, e.g. g/m^3); default 1.225 (docs/paper_notes.md, ISA sea level)
     #[serde(default = "default_air_density")]
     pub air_density_kg_per_m3: f64,
     /// normal force coefficient `c_n` [-], in [0, 10] (drag coefficients of cylinders are about 1 to 2);
@@ -237,7 +237,7 @@ fn default_ct() -> f64 {
 }
 
 /// Numerical parameters. Defaults give the undamped scheme (3.1), (3.6), (3.7): damping is physics the
-/// scenario must state (NOTES.md).
+/// scenario must state (docs/paper_notes.md).
 #[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct NumericsSpec {

@@ -15,7 +15,7 @@ use crate::wire::aero::{Aerodynamic, UniformNormal};
 use crate::wire::tension::LawKind;
 use crate::wire::{Conductor, Wire};
 
-/// Axial stiffness of the paper's test wire, "E = 80734 g" [N] (section 4; NOTES.md).
+/// Axial stiffness of the paper's test wire, "E = 80734 g" [N] (section 4; docs/paper_notes.md).
 pub const EA_N: f64 = 80734.0 * 9.81;
 /// Linear density of the paper's iced test wire [kg/m] (section 4.1).
 pub const RHO_KG_PER_M: f64 = 1.0;

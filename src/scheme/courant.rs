@@ -14,7 +14,7 @@
 //! C <= C_max(z) = sqrt(1 + z^2) - z.
 //! ```
 //!
-//! Internal friction therefore lowers the stable Courant number of the explicit scheme (NOTES.md,
+//! Internal friction therefore lowers the stable Courant number of the explicit scheme (docs/paper_notes.md,
 //! "Internal friction and the time step"); validation rejects a Courant number above `C_max`.
 
 /// Longitudinal wave speed `c = sqrt(EA / rho0)` [m/s] for axial stiffness `EA` [N] and linear density

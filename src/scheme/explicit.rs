@@ -18,7 +18,7 @@
 //!
 //! The kick uses the mean of the previous and the next step, so steps may vary (to land exactly on an
 //! event or snapshot time) without losing second order, and the very first kick (`dt_{-1/2} = 0`) is the
-//! half step `v^{1/2} = v^0 + dt/2 a^0` (NOTES.md, "Starting the leapfrog"). This is kick-drift-kick
+//! half step `v^{1/2} = v^0 + dt/2 a^0` (docs/paper_notes.md, "Starting the leapfrog"). This is kick-drift-kick
 //! velocity Verlet with the two half kicks fused.
 //!
 //! Cost per node and step: one square root, one division, about 60 flops; no allocation, no dynamic

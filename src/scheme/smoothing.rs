@@ -5,11 +5,11 @@
 //! ```
 //!
 //! applied to every free node after the velocity update of (3.1); the smoothed velocity *replaces* `v`
-//! for the position update (3.6) and for the next step (the "damping" reading of NOTES.md). At a free
+//! for the position update (3.6) and for the next step (the "damping" reading of docs/paper_notes.md). At a free
 //! end (after a break) the ghost node of (3.5) copies the end velocity, so the difference across a
 //! broken segment is zero; supports have `v = 0`. Stable for `0 <= b <= 1/4` (the explicit diffusion
 //! limit). Per unit time this is a numerical viscosity of about `b ds^2 / dt`, which scales like `ds` at a
-//! fixed Courant number: transients computed with it converge at first order (NOTES.md).
+//! fixed Courant number: transients computed with it converge at first order (docs/paper_notes.md).
 //!
 //! Stencil over the padded difference array `D_k = intact_{k-1} (v_k - v_{k-1})`, `k = 1..=N`,
 //! `D_0 = D_{N+1} = 0`: `vbar_i = v_i + b free_i (D_{i+1} - D_i)`.

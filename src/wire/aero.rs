@@ -1,7 +1,7 @@
 //! Distributed wind loads on a segment: the aerodynamic law (2.5) with the damping correction (2.6),
 //! and a uniform pressure normal to the wire (the arc test, section 4.1).
 //!
-//! Everything is written in vector form (NOTES.md: the projected equations (2.2) lose the binormal part
+//! Everything is written in vector form (docs/paper_notes.md: the projected equations (2.2) lose the binormal part
 //! of the normal load). For a segment with unit tangent `t`, deformed length `l` and wind direction `w`
 //! (unit vector), let `w_t = w . t = cos(alpha)` and `w_perp = w - w_t t`, so `|w_perp| = sin(alpha)`,
 //! where `alpha` is the angle of attack. The normal load acts along `n = w_perp / |w_perp|`, in the plane

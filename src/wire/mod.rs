@@ -183,7 +183,7 @@ impl Wire {
     }
 
     /// The point at the middle of the span in the Lagrangian coordinate, `s = S/2` [m]: node `N/2` for
-    /// even `N`, the mean of the two middle nodes for odd `N` (NOTES.md, "Mid-span").
+    /// even `N`, the mean of the two middle nodes for odd `N` (docs/paper_notes.md, "Mid-span").
     pub fn midspan(&self) -> [f64; 3] {
         let n = self.segments();
         let (a, b) = (n / 2, n.div_ceil(2));

@@ -8,7 +8,7 @@
 //! stress-free length of the segment (which thermal strain scales). A conductor cannot carry compression,
 //! so the default law is tension-only: a slack segment (`e <= 0`) carries nothing, and the viscous part may
 //! reduce the tension to zero but never make it negative (paper section 2: "e >= 0 under tension";
-//! NOTES.md, "Compression"). The linear law, compression allowed, exists for analytic tests.
+//! docs/paper_notes.md, "Compression"). The linear law, compression allowed, exists for analytic tests.
 //!
 //! The law is a type parameter of the time step, so the choice is made once per run and the node loop
 //! has no branch on it.

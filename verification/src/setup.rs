@@ -1,6 +1,6 @@
 //! The paper's test wire and the three static load cases, built directly (no scenario file).
 //!
-//! Wire of sections 4.1-4.2: span `l = 160 m`, axial stiffness `EA = 80734 g` [N] (NOTES.md: a force, not
+//! Wire of sections 4.1-4.2: span `l = 160 m`, axial stiffness `EA = 80734 g` [N] (docs/paper_notes.md: a force, not
 //! a modulus), linear density `rho0 = 1.0 kg/m` (wire plus ice), `g = 9.81 m/s^2`, wind line load
 //! `p = rho_air U^2 d / 2` with `rho_air = 1.225 kg/m^3`, `U = 20 m/s`, `d = 0.01553 m` (section 4.1).
 

@@ -27,7 +27,7 @@
 //! Variants: (1) no damping: design order 2; (2) Kelvin-Voigt and wind damping, which the kernel evaluates
 //! with the velocities of the previous half step (an O(dt) lag): first order asymptotically; (3) velocity
 //! smoothing (3.3) at the paper's fixed `beta = 0.02 ds^2` (`b = 0.02`): a numerical viscosity
-//! `b ds^2 / dt ~ ds`, first order (NOTES.md); (4) smoothing with `b = 0.02 (ds / ds_0)`, proportional to
+//! `b ds^2 / dt ~ ds`, first order (docs/paper_notes.md); (4) smoothing with `b = 0.02 (ds / ds_0)`, proportional to
 //! `ds`, whose viscosity is O(ds^2): second order restored.
 
 use crate::convergence::{ls_order, pair_orders};
@@ -313,7 +313,7 @@ pub fn run(budget: Budget, dir: &Path) -> Result<StudyReport, String> {
         is then wrong by eta (dt/2) de/dt^2 per unit strain rate, a consistent O(dt) error that makes the damped \
         scheme first order (it would be second order with the velocity extrapolated to t_n, e.g. \
         v^n = (3 v^{n-1/2} - v^{n-3/2}) / 2, at the price of a different stability limit). The paper's smoothing \
-        (3.3) with beta = 0.02 ds^2 is a numerical viscosity beta/dt ~ ds: first order, exactly as NOTES.md \
+        (3.3) with beta = 0.02 ds^2 is a numerical viscosity beta/dt ~ ds: first order, exactly as docs/paper_notes.md \
         predicts. Scaling the coefficient with the grid, b = b0 ds/ds0 (beta ~ ds^3), makes that viscosity \
         O(ds^2) and restores second order while keeping the same damping of the highest modes on the coarsest \
         grid."

@@ -224,7 +224,7 @@ pub fn run(budget: Budget, dir: &Path) -> Result<StudyReport, String> {
         (NaN in the table): mu = 0.05-0.3 and b <= 0.05 damp the fundamental only weakly, so the 'final deflection' \
         column is a snapshot of a still-oscillating wire, not an equilibrium (the equilibria are verified in the \
         `static` study). The tension-only wire released from straight with no damping at all (mu = 0 and b = 0, \
-        Courant 0.9) is stopped as unstable: the slack-segment instability of NOTES.md, distinct from the Courant \
+        Courant 0.9) is stopped as unstable: the slack-segment instability of docs/paper_notes.md, distinct from the Courant \
         limit (the limits below are measured on the linear law, where it does not occur). The measured stability limits match the highest-mode analysis: 1 without friction, \
         sqrt(1+z^2)-z with explicit Kelvin-Voigt friction (friction lowers the limit, contrary to the paper's \
         remark), and sqrt((1-2b)/(1-4b)) with smoothing. The table column 'final tension max' is the largest \
