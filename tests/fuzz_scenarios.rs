@@ -503,19 +503,7 @@ fn guarded<T>(stage: &str, f: impl FnOnce() -> T) -> Result<T, String> {
 
 fn finite_record(o: &ohl::run::Outcome) -> Result<(), String> {
     for s in &o.samples {
-        let v = [
-            s.t_s,
-            s.tau,
-            s.mid_dx1_m,
-            s.mid_dx2_m,
-            s.mid_dx3_m,
-            s.max_tension_n,
-            s.kinetic_j,
-            s.elastic_j,
-            s.potential_j,
-            s.total_j,
-        ];
-        if v.iter().any(|x| !x.is_finite()) {
+        if s.values().iter().any(|x| !x.is_finite()) {
             return Err(format!("non-finite sample at t = {}: {s:?}", s.t_s));
         }
     }

@@ -43,6 +43,36 @@ pub struct Sample {
 }
 
 impl Sample {
+    /// Names of the fixed columns, in the order of [`Sample::values`].
+    pub const COLUMNS: [&'static str; 10] = [
+        "t_s",
+        "tau",
+        "mid_dx1_m",
+        "mid_dx2_m",
+        "mid_dx3_m",
+        "max_tension_n",
+        "kinetic_j",
+        "elastic_j",
+        "potential_j",
+        "total_j",
+    ];
+
+    /// The fixed columns' values, in the order of [`Sample::COLUMNS`].
+    pub fn values(&self) -> [f64; 10] {
+        [
+            self.t_s,
+            self.tau,
+            self.mid_dx1_m,
+            self.mid_dx2_m,
+            self.mid_dx3_m,
+            self.max_tension_n,
+            self.kinetic_j,
+            self.elastic_j,
+            self.potential_j,
+            self.total_j,
+        ]
+    }
+
     /// The fixed columns at a level; `mid` is the mid-span probe.
     pub fn of(level: &Level, mid: &ProbePoint) -> Sample {
         let s = level.solver;
@@ -82,20 +112,7 @@ impl Timeseries {
         probes: Vec<ProbePoint>,
         supports: usize,
     ) -> Result<Self, OutputError> {
-        let mut header: Vec<String> = [
-            "t_s",
-            "tau",
-            "mid_dx1_m",
-            "mid_dx2_m",
-            "mid_dx3_m",
-            "max_tension_n",
-            "kinetic_j",
-            "elastic_j",
-            "potential_j",
-            "total_j",
-        ]
-        .map(String::from)
-        .into();
+        let mut header: Vec<String> = Sample::COLUMNS.map(String::from).into();
         for p in &probes {
             header.extend((1..=3).map(|k| format!("{}_dx{k}_m", p.name)));
         }
@@ -114,18 +131,7 @@ impl Observer for Timeseries {
         }
         let s = Sample::of(level, &self.mid);
         let f = &mut self.file;
-        for x in [
-            s.t_s,
-            s.tau,
-            s.mid_dx1_m,
-            s.mid_dx2_m,
-            s.mid_dx3_m,
-            s.max_tension_n,
-            s.kinetic_j,
-            s.elastic_j,
-            s.potential_j,
-            s.total_j,
-        ] {
+        for x in s.values() {
             f.number(x);
         }
         for p in &self.probes {
