@@ -35,6 +35,10 @@ const CASES: &[(&str, &[&str])] = &[
     ("unknown_tension_law", &["line 5, column 15", "unknown variant `plastic`"]),
     ("snapshot_after_end", &["field `output.snapshot_times_s[1]` = 3", "end time"]),
     ("negative_sample_interval", &["field `output.sample_interval_s` = -0.1", "> 0"]),
+    (
+        "heat_linear_closure_next_to_free_end",
+        &["field `events[0].boundary` = \"linear\"", "node 45, next to the free end node 46", "zero_flux"],
+    ),
     ("mass_damping_too_large", &["field `numerics.mass_damping_per_s` = 1000000", "zeta dt < 1"]),
     (
         "ground_above_support",

@@ -109,6 +109,8 @@ pub struct Summary {
     /// the static solve of the initial state, when the run started from equilibrium
     #[serde(skip_serializing_if = "Option::is_none")]
     pub initial_equilibrium: Option<EquilibriumReport>,
+    /// valid but doubtful input values (field, value, reason): a result computed from them carries the doubt
+    pub warnings: Vec<crate::scenario::Warning>,
     /// the supports, in node order
     pub supports: Vec<SupportSummary>,
     /// the probes (mid-span first)

@@ -204,6 +204,7 @@ pub fn run_observed<'o>(
             residual_n: r.residual_n,
             tolerance_n: r.tolerance_n,
         }),
+        warnings: plan.warnings.clone(),
         supports: supports
             .iter()
             .zip(&forces)

@@ -75,6 +75,8 @@ pub struct Plan {
     pub peaks_from_s: Option<f64>,
     /// the static solve of `[initial] shape = "equilibrium"` (iterations, residual), if the scenario asked
     pub initial_equilibrium: Option<StaticReport>,
+    /// valid but doubtful values ([`super::warnings`]), in the order of the file
+    pub warnings: Vec<super::Warning>,
 }
 
 impl Plan {
@@ -90,9 +92,23 @@ impl Plan {
 
 /// Arc length of the parabola `y = 4 f u (1 - u)` over a chord `l` (`u` in [0, 1]) [m].
 pub fn parabola_length(chord_m: f64, sag_m: f64) -> f64 {
-    // Exact: with k = 4 f / l, L = l/2 sqrt(1 + k^2) + l/(2k) asinh(k).
-    let k = 4.0 * sag_m / chord_m;
-    0.5 * chord_m * (1.0 + k * k).sqrt() + chord_m / (2.0 * k) * k.asinh()
+    // Exact: with k = 4 f / l, L = l/2 sqrt(1 + k^2) + l/(2k) asinh(k) = l P_k(1).
+    chord_m * arc_primitive(4.0 * sag_m / chord_m, 1.0)
+}
+
+/// `P_k(t) = prim(k t) / k` with `prim(y) = (y sqrt(1 + y^2) + asinh y) / 2`, the primitive of
+/// `sqrt(1 + (k t)^2)` in `t`, written so that it stays exact as `k -> 0` (a sag of 1e-300 m is a straight
+/// wire, not `inf * 0`): `asinh(y) / k = t asinh(y) / y`, and `asinh(y) / y = 1 - y^2/6 + 3 y^4/40` below
+/// `|y| = 1e-4` (next term `5 y^6 / 112 < 1e-25`).
+fn arc_primitive(k: f64, t: f64) -> f64 {
+    let y = k * t;
+    let asinh_ratio = if y.abs() < 1.0e-4 {
+        let y2 = y * y;
+        1.0 - y2 / 6.0 + 3.0 * y2 * y2 / 40.0
+    } else {
+        y.asinh() / y
+    };
+    0.5 * t * ((1.0 + y * y).sqrt() + asinh_ratio)
 }
 
 /// Nodes equally spaced in arc length along the initial shape; returns positions and the shape's length.
@@ -108,9 +124,9 @@ fn initial_nodes(s: &Scenario) -> ([Vec<f64>; 3], f64) {
             // inverted by bisection for each node.
             let total = parabola_length(chord, f);
             let k = 4.0 * f / chord;
-            let prim = |y: f64| 0.5 * (y * (1.0 + y * y).sqrt() + y.asinh());
-            // s(u) = (l / (2k)) [prim(k (2u - 1)) + prim(k)] is the arc length from u = 0 (ds/du = l sqrt(1 + (k(1-2u))^2)).
-            let arc = |u: f64| chord / (2.0 * k) * (prim(k * (2.0 * u - 1.0)) + prim(k));
+            // s(u) = (l / (2k)) [prim(k (2u - 1)) + prim(k)] = (l / 2) [P_k(2u - 1) + P_k(1)] is the arc length
+            // from u = 0 (ds/du = l sqrt(1 + (k(1-2u))^2)).
+            let arc = |u: f64| 0.5 * chord * (arc_primitive(k, 2.0 * u - 1.0) + arc_primitive(k, 1.0));
             for i in 0..=n {
                 let target = total * i as f64 / n as f64;
                 let (mut lo, mut hi) = (0.0_f64, 1.0_f64);
@@ -293,6 +309,7 @@ pub fn build(s: &Scenario) -> Result<Plan, Vec<Problem>> {
         probes: s.output.probes.iter().map(|p| (p.name.clone(), p.at_fraction)).collect(),
         peaks_from_s: s.output.peaks_from_s,
         initial_equilibrium,
+        warnings: super::warnings::warnings(s),
     })
 }
 
@@ -334,5 +351,23 @@ mod tests {
         }
         let simpson = sum * h / 3.0;
         assert!((parabola_length(l, f) - simpson).abs() < 1e-9, "{} vs {simpson}", parabola_length(l, f));
+    }
+
+    #[test]
+    fn a_vanishing_sag_gives_the_chord_and_evenly_spaced_nodes() {
+        // L = l (1 + 8 f^2 / (3 l^2) + O(f^4)): below f = 1e-6 l the correction is under 3e-12 l.
+        for f in [1e-3, 1e-5, 1e-9, 1e-300, f64::MIN_POSITIVE] {
+            let len = parabola_length(160.0, f);
+            let expect = 160.0 * (1.0 + 8.0 * f * f / (3.0 * 160.0 * 160.0));
+            assert!((len - expect).abs() < 1e-9, "f = {f}: {len} vs {expect}");
+        }
+        let text = "[conductor]\naxial_stiffness_n = 792000.0\nlinear_density_kg_per_m = 1.0\n[geometry]\n\
+            left_support_m = [0.0, 0.0, 0.0]\nright_support_m = [0.0, 160.0, 0.0]\nsegments = 8\n[initial]\n\
+            shape = \"parabola\"\nsag_m = 2.2250738585072014e-308\n[duration]\nend_time_s = 0.5\n";
+        let sc: Scenario = toml::from_str(text).unwrap();
+        let (x, _) = initial_nodes(&sc);
+        for i in 0..=8 {
+            assert!((x[1][i] - 20.0 * i as f64).abs() < 1e-9 && x[2][i].abs() < 1e-9, "node {i}");
+        }
     }
 }

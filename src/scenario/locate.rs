@@ -16,17 +16,29 @@ pub(crate) fn relocate(text: &str, e: &toml::de::Error) -> Option<String> {
     let wanted = Wanted::from_message(message)?;
     // The table's own lines: after the header, up to the next header.
     let mut found = None;
-    for (k, line) in text[header_start..].lines().enumerate().skip(1) {
+    let lines: Vec<&str> = text[header_start..].lines().collect();
+    let mut k = 1;
+    while k < lines.len() {
+        let line = lines[k];
         let trimmed = line.trim_start();
         if trimmed.starts_with('[') {
             break;
         }
-        let Some((key, value, column)) = key_value(line) else { continue };
-        if wanted.matches(key, value) {
+        let at = k;
+        k += 1;
+        let Some((key, first, column)) = key_value(line) else { continue };
+        // A multi-line array: its value runs to the line where the brackets balance.
+        let mut value = first.to_string();
+        while value.starts_with('[') && depth(&value) > 0 && k < lines.len() {
+            value.push(' ');
+            value.push_str(strip_comment(lines[k]).trim());
+            k += 1;
+        }
+        if wanted.matches(key, &value) {
             if found.is_some() {
                 return None;
             }
-            found = Some((header_line + k, column, line));
+            found = Some((header_line + at, column, line));
         }
     }
     let (line_no, column, line) = found?;
@@ -90,22 +102,38 @@ fn parses_equal(a: &str, b: &str) -> bool {
     matches!((a.parse::<f64>(), b.parse::<f64>()), (Ok(x), Ok(y)) if x == y)
 }
 
+/// A line without its comment (a `#` outside a string).
+fn strip_comment(line: &str) -> &str {
+    let mut in_string = false;
+    for (i, ch) in line.char_indices() {
+        match ch {
+            '"' | '\'' => in_string = !in_string,
+            '#' if !in_string => return &line[..i],
+            _ => {}
+        }
+    }
+    line
+}
+
+/// Open brackets minus closed ones, outside strings.
+fn depth(value: &str) -> i64 {
+    let (mut d, mut in_string) = (0i64, false);
+    for ch in value.chars() {
+        match ch {
+            '"' | '\'' => in_string = !in_string,
+            '[' | '{' if !in_string => d += 1,
+            ']' | '}' if !in_string => d -= 1,
+            _ => {}
+        }
+    }
+    d
+}
+
 /// `key = value` of one line (the comment removed), with the value's 1-based column.
 fn key_value(line: &str) -> Option<(&str, &str, usize)> {
     let eq = line.find('=')?;
     let key = line[..eq].trim().trim_matches('"');
-    let mut in_string = false;
-    let mut end = line.len();
-    for (i, ch) in line.char_indices().skip_while(|(i, _)| *i <= eq) {
-        match ch {
-            '"' | '\'' => in_string = !in_string,
-            '#' if !in_string => {
-                end = i;
-                break;
-            }
-            _ => {}
-        }
-    }
+    let end = eq + 1 + strip_comment(&line[eq + 1..]).len();
     let raw = &line[eq + 1..end];
     let value = raw.trim();
     let column = line[..eq + 1 + (raw.len() - raw.trim_start().len())].chars().count() + 1;
@@ -154,6 +182,13 @@ mod tests {
         let t = format!("{BASE}[[events]]\ntime_s = 0.1\naction = \"wind\"\nscale = 1.0\ngate = \"sideways\" # no\n");
         let m = error(&t);
         assert!(m.contains("line 14, column 8") && m.contains("unknown variant `sideways`"), "{m}");
+        // A multi-line array, with comments and a trailing comma: the error points at its first line.
+        let t = format!(
+            "{BASE}[[events]]\ntime_s = 0.1\naction = \"ice\"\nrange = [\n  0.1, # from\n  0.2,\n  0.3,\n]\n\
+             linear_density_kg_per_m = 0.5\n"
+        );
+        let m = error(&t);
+        assert!(m.contains("line 13, column 9") && m.contains("invalid length 3"), "{m}");
         let t = format!("{BASE}[[events]]\ntime_s = 0.1\naction = \"break\"\nat_fraction = \"half\"\n");
         let m = error(&t);
         assert!(m.contains("line 13, column 15") && m.contains("invalid type: string"), "{m}");
@@ -171,6 +206,7 @@ mod tests {
         assert_eq!(array_len("[1, [2, 3], \"a,b\"]"), Some(3));
         assert_eq!(array_len("[1, 2,]"), Some(2));
         assert_eq!(array_len("[]"), Some(0));
+        assert_eq!(array_len("[ 0.1, 0.2, 0.3, ]"), Some(3));
         assert_eq!(key_value("  gate = 'x' # c"), Some(("gate", "'x'", 10)));
     }
 }

@@ -1,14 +1,16 @@
 //! Scenarios: the TOML file format ([`schema`]), its validation ([`validate`]) and the one conversion
 //! into a run plan ([`build`], [`plan`]). Either a plan that is safe to run comes out, or an
 //! [`InputError`] that names the file and, for every problem found, the field, the value and what is
-//! allowed. [`work`] estimates the
-//! work of a run before it runs and holds the budget above which a run is refused.
+//! allowed. [`warnings`] lists the valid but doubtful values of a plan (printed, and kept in
+//! `summary.json`). [`work`] estimates the work of a run before it runs and holds the budget above which a
+//! run is refused.
 
 pub mod build;
 pub mod events;
 mod locate;
 pub mod schema;
 pub mod validate;
+pub mod warnings;
 pub mod work;
 
 use std::fmt;
@@ -17,6 +19,7 @@ use std::path::Path;
 pub use build::{Plan, build};
 pub use schema::Scenario;
 pub use validate::Problem;
+pub use warnings::Warning;
 pub use work::{Refusal, WorkEstimate};
 
 /// Why a scenario could not be used. Every variant names the file.

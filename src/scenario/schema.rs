@@ -194,7 +194,7 @@ pub struct WindSpec {
     /// (norm at least 1e-12); default `[1, 0, 0]` (the paper's `x1`)
     #[serde(default = "default_wind_direction", deserialize_with = "three")]
     pub direction: [f64; 3],
-    /// undisturbed wind speed `U` [m/s], in (0, 100] (design wind speeds are below about 70 m/s; the
+    /// undisturbed wind speed `U` [m/s], in [0.01, 100] (design wind speeds are below about 70 m/s; the
     /// strongest gust measured, 113 m/s, was not a steady wind); scales the damping (2.6) and, for the
     /// aerodynamic law, `q`
     pub speed_m_per_s: f64,
@@ -236,8 +236,9 @@ fn default_ct() -> f64 {
     0.0554
 }
 
-/// Numerical parameters. Defaults give the undamped scheme (3.1), (3.6), (3.7): damping is physics the
-/// scenario must state (docs/paper_notes.md).
+/// Numerical parameters. Defaults: Courant 0.9 and the paper's velocity smoothing (3.3) `b = 0.02`, the
+/// least damping that keeps the tension-only law stable in long runs; physical damping (`mu`, `eta`) is
+/// stated by the scenario (docs/architecture.md, "stable defaults").
 #[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct NumericsSpec {
@@ -246,8 +247,10 @@ pub struct NumericsSpec {
     #[serde(default = "default_courant")]
     pub courant: f64,
     /// velocity smoothing per step `b = beta / ds^2` [-] (3.3), in [0, 0.25]; paper range 0.015 to 0.03;
-    /// default 0 (no smoothing)
-    #[serde(default)]
+    /// default 0.02, the middle of the paper's range: without any damping the tension-only law can go
+    /// unstable in long runs, and 0.02 kept every tested configuration stable (docs/architecture.md,
+    /// "stable defaults"); 0 turns it off (then [`super::warnings`] warns unless other damping is stated)
+    #[serde(default = "default_smoothing")]
     pub smoothing: f64,
     /// aerodynamic damping coefficient `mu` [-] of (2.6), in [0, 1]; paper range 0.1 to 0.2; default 0
     #[serde(default)]
@@ -269,7 +272,7 @@ impl Default for NumericsSpec {
     fn default() -> Self {
         NumericsSpec {
             courant: default_courant(),
-            smoothing: 0.0,
+            smoothing: default_smoothing(),
             mu: 0.0,
             eta_n_s: 0.0,
             mass_damping_per_s: 0.0,
@@ -280,6 +283,10 @@ impl Default for NumericsSpec {
 
 fn default_courant() -> f64 {
     0.9
+}
+
+fn default_smoothing() -> f64 {
+    0.02
 }
 
 /// Duration: give exactly one of `end_time_s` and `until_settled`.

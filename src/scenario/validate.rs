@@ -5,7 +5,7 @@ use std::fmt;
 
 use std::ops::Range;
 
-use super::events::{EventSpec, break_segment, segment_range};
+use super::events::{EventSpec, HeatBoundarySpec, break_segment, node_range, segment_range};
 use super::schema::{Scenario, ShapeSpec, WindLawSpec};
 use crate::scheme::courant;
 
@@ -90,6 +90,11 @@ pub const MAX_COORDINATE_M: f64 = 1.0e5;
 
 /// Largest wind speed accepted [m/s]: design wind speeds are below about 70 m/s.
 pub const MAX_WIND_SPEED_M_PER_S: f64 = 100.0;
+
+/// Least wind speed accepted [m/s]. The damping (2.6) divides by `U`: `(1 - mu V_n / U)^2` overflows for
+/// a vanishing `U` while `q ~ U^2` underflows, giving `inf * 0`. From 0.01 m/s, with node speeds below the
+/// 1e7 m/s speed bound, `mu V_n / U < 1e9`: no overflow. Still air is a scenario without wind.
+pub const MIN_WIND_SPEED_M_PER_S: f64 = 0.01;
 
 /// Largest air density accepted [kg/m^3]: 1.225 at sea level, about 1.5 in the coldest air.
 pub const MAX_AIR_DENSITY_KG_PER_M3: f64 = 2.0;
@@ -337,10 +342,10 @@ pub(crate) fn check(s: &Scenario) -> (Vec<Problem>, Derived) {
         c.within(
             "loads.wind.speed_m_per_s",
             w.speed_m_per_s,
-            f64::MIN_POSITIVE,
+            MIN_WIND_SPEED_M_PER_S,
             MAX_WIND_SPEED_M_PER_S,
-            "must be a finite number > 0 and at most 100 m/s (design wind speeds are below about 70 m/s; \
-             check the unit: m/s, not km/h)",
+            "must be in [0.01, 100] m/s (design wind speeds are below about 70 m/s; check the unit: m/s, not \
+             km/h; for still air leave out [loads.wind])",
         );
         c.within(
             "loads.wind.air_density_kg_per_m3",
@@ -539,6 +544,28 @@ fn range_ok(c: &mut Check, field: &str, r: [f64; 2]) -> bool {
         c.fail(field, format!("{r:?}"), "must be [a, b] with 0 <= a < b <= 1 (fractions of the unstretched length)");
     }
     ok
+}
+
+/// The corrected closure (5.4), `boundary = "linear"`, updates an end node by
+/// `u_0' = (1 + r) u_0 - 2 r u_1 + r u_2` (`src/heat/boundary.rs`). When node 1 is held and node 0 is not, a
+/// disturbance of `u_0` grows by `1 + r` per heat sub-step and the temperatures overflow (found by the
+/// fuzzer; measured at r = 0.1, 0.3 and 0.5 on 20 segments: every hold that contains node 1 or N - 1 without
+/// the end diverges, and no other hold does).
+fn linear_closure_stable(c: &mut Check, field: &str, held: Range<usize>, n: usize) {
+    for (end, next) in [(0, 1), (n, n - 1)] {
+        if held.contains(&next) && !held.contains(&end) {
+            c.fail(
+                field,
+                "\"linear\"",
+                &format!(
+                    "diverges with the hold range reaching node {next}, next to the free end node {end}: the end \
+                     update u' = (1 + r) u_end - 2 r u_next + r u_next2 then amplifies the end by 1 + r per heat \
+                     sub-step; use boundary = \"zero_flux\" (the default) or extend the hold range to the end"
+                ),
+            );
+            return;
+        }
+    }
 }
 
 /// The segments of a valid grid: their number and, when the length is valid, the unstretched segment
@@ -745,8 +772,13 @@ fn check_ground_and_events(c: &mut Check, s: &Scenario, end: Option<f64>, grid: 
                 }
                 c.within(&f("ramp_s"), ramp_s, 0.0, MAX_TIME_S, "must be a finite number >= 0, at most 1e8 s");
             }
-            EventSpec::HeatConduction { hold_range, hold_temperature_k, heat_time_per_s, .. } => {
-                range_ok(c, &f("hold_range"), hold_range);
+            EventSpec::HeatConduction { hold_range, hold_temperature_k, heat_time_per_s, boundary, .. } => {
+                if range_ok(c, &f("hold_range"), hold_range)
+                    && boundary == HeatBoundarySpec::Linear
+                    && let Some(Grid { n, .. }) = grid
+                {
+                    linear_closure_stable(c, &f("boundary"), node_range(hold_range, n), n);
+                }
                 if c.within(
                     &f("hold_temperature_k"),
                     hold_temperature_k,

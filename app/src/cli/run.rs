@@ -3,7 +3,8 @@
 //! Before it runs, the work is estimated ([`ohl::scenario::work`]): `--dry-run` prints the estimate and
 //! exits 0; a scenario above the budget (2e10 node-steps, about 130 s, or 2 GB of output) is refused with
 //! exit 2 unless `--allow-large` is given. When stderr is not a terminal (no progress bar) and the run is
-//! long, one line `running: N steps, about T s` goes to stderr before it starts.
+//! long, one line `running: N steps, about T s` goes to stderr before it starts. Warnings (valid but
+//! doubtful values, [`ohl::scenario::warnings`]) go to stderr first, one line each, and into `summary.json`.
 
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -51,6 +52,9 @@ pub fn main(args: RunArgs) -> ExitCode {
             return ExitCode::from(2);
         }
     };
+    for w in &plan.warnings {
+        eprintln!("warning: {}: {w}", path.display());
+    }
     let estimate = plan.work_estimate();
     if dry_run {
         print_estimate(&plan.name, &estimate);

@@ -105,6 +105,9 @@ pub fn run_case(path: &Path, out_dir: Option<&Path>) -> Result<CaseReport, Paper
     }
     let sc = scenario::parse(&text, &file)?;
     let plan = scenario::plan(&sc, &file)?;
+    for w in &plan.warnings {
+        eprintln!("warning: {file}: {w}");
+    }
     let Some(spec) = spec::parse(&text, &file, plan.stop.horizon_s())? else {
         return Err(PaperError::NotACase(file));
     };
