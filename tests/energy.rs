@@ -21,6 +21,7 @@ fn total_energy_is_conserved_without_damping() {
         segments = 50
         [numerics]
         courant = 0.9
+        smoothing = 0.0
         [duration]
         end_time_s = 10.0
         [output]
