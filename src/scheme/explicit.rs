@@ -221,6 +221,9 @@ pub struct Explicit {
     fs: [Vec<f64>; 3],
     /// half the segment load `P / 2` [N], padded like `fs`
     es: [Vec<f64>; 3],
+    /// force of each suspension insulator string on its clamp node `(node, F)` [N], in the order of
+    /// `Wire::insulators`, from the last segment pass
+    point_force: Vec<(usize, [f64; 3])>,
     /// run the passes compiled for AVX2 (detected at construction; see [`Explicit::step`])
     avx2: bool,
 }
@@ -244,6 +247,7 @@ impl Explicit {
             viscous: None,
             fs: z(),
             es: z(),
+            point_force: Vec::new(),
             avx2: avx2_available(),
         }
     }
@@ -272,16 +276,22 @@ impl Explicit {
         let extra = self.nodal_force.take();
         let none = [const { Vec::new() }; 3];
         let f = extra.as_ref().unwrap_or(&none);
+        let points = std::mem::take(&mut self.point_force);
+        let p = &points[..];
         let ok = match (extra.is_some(), damp, smooth) {
-            (false, false, false) => self.node_pass::<false, false, false>(kick, dt, f),
-            (false, true, false) => self.node_pass::<false, true, false>(kick, dt, f),
-            (true, false, false) => self.node_pass::<true, false, false>(kick, dt, f),
-            (true, true, false) => self.node_pass::<true, true, false>(kick, dt, f),
-            (false, false, true) => self.node_pass::<false, false, true>(kick, dt, f),
-            (false, true, true) => self.node_pass::<false, true, true>(kick, dt, f),
-            (true, false, true) => self.node_pass::<true, false, true>(kick, dt, f),
-            (true, true, true) => self.node_pass::<true, true, true>(kick, dt, f),
+            (false, false, false) => self.node_pass::<false, false, false>(kick, dt, f, p),
+            (false, true, false) => self.node_pass::<false, true, false>(kick, dt, f, p),
+            (true, false, false) => self.node_pass::<true, false, false>(kick, dt, f, p),
+            (true, true, false) => self.node_pass::<true, true, false>(kick, dt, f, p),
+            (false, false, true) => self.node_pass::<false, false, true>(kick, dt, f, p),
+            (false, true, true) => self.node_pass::<false, true, true>(kick, dt, f, p),
+            (true, false, true) => self.node_pass::<true, false, true>(kick, dt, f, p),
+            (true, true, true) => self.node_pass::<true, true, true>(kick, dt, f, p),
         };
+        if !points.is_empty() {
+            self.advance_crossarms(&points, kick, dt);
+        }
+        self.point_force = points;
         self.nodal_force = extra;
         // Locate a failure before ground contact, which may change the offending velocity.
         let failure = if ok { None } else { Some(self.locate_instability()) };
@@ -399,6 +409,11 @@ impl Explicit {
         for &i in self.wire.fixed_nodes() {
             out.push((i, [0, 1, 2].map(|k| self.node_force(k, i))));
         }
+        // Suspension supports: the force the string applies to its crossarm, minus its force on the clamp.
+        for &(i, f) in &self.point_force {
+            out.push((i, [-f[0], -f[1], -f[2]]));
+        }
+        out.sort_by_key(|&(i, _)| i);
     }
 
     /// Length of the last step `dt_{n-1/2}` [s].
@@ -406,8 +421,32 @@ impl Explicit {
         self.dt_prev
     }
 
-    /// Pass 1 over segments: tension force and distributed load, dispatched once on (wind, gate, law).
+    /// Pass 1 over segments: tension force and distributed load, dispatched once on (wind, gate, law);
+    /// then the force of each insulator string on its clamp ([`crate::wire::insulator`]).
     fn compute_segment_forces(&mut self) {
+        self.segment_and_load_pass();
+        self.point_force.clear();
+        for ins in &self.wire.insulators {
+            self.point_force.push((ins.node, ins.force_on_clamp(self.wire.position(ins.node))));
+        }
+    }
+
+    /// Leapfrog step of the elastic crossarms ([`crate::wire::insulator`]): the kick with the string force
+    /// of this level `points` and the springs, then the drift; the pivots of rigid crossarms stay.
+    fn advance_crossarms(&mut self, points: &[(usize, [f64; 3])], kick: f64, dt: f64) {
+        for (ins, &(_, f)) in self.wire.insulators.iter_mut().zip(points) {
+            let p = ins.pivot_m;
+            let Some(arm) = ins.crossarm.as_mut() else { continue };
+            let spring = arm.spring_force(p);
+            for k in 0..2 {
+                let a = (spring[k] - f[k]) / arm.mass_kg;
+                arm.velocity_m_per_s[k] += kick * a;
+                ins.pivot_m[k] += dt * arm.velocity_m_per_s[k];
+            }
+        }
+    }
+
+    fn segment_and_load_pass(&mut self) {
         let scale = self.loads.wind_scale;
         let q = self.loads.uniform_load_n_per_m;
         match self.loads.wind {
@@ -520,7 +559,7 @@ impl Explicit {
     isa_dispatch! {
         /// The node pass ([`Explicit::kick_drift`]), from the AVX2 copy where the processor has it.
         fn node_pass[const EXTRA: bool, const DAMP: bool, const SMOOTH: bool][EXTRA, DAMP, SMOOTH](
-            kick: f64, dt: f64, extra: &[Vec<f64>; 3]) -> bool
+            kick: f64, dt: f64, extra: &[Vec<f64>; 3], points: &[(usize, [f64; 3])]) -> bool
             = kick_drift;
     }
 
@@ -531,12 +570,17 @@ impl Explicit {
     ///
     /// Each operation is the one of the unfused passes, in the same order, so the result is identical:
     /// `a = (F / m + g_k) - zeta v`, `v + (kick free) a`, `x + dt v`.
+    ///
+    /// `points` are point forces on a few nodes (the insulator strings on their clamps): their kick
+    /// `kick F / m` is added after the node loop (and, without smoothing, its drift `dt kick F / m`), which
+    /// is the same update up to rounding and leaves the loop over all nodes untouched.
     #[inline(always)]
     fn kick_drift<const EXTRA: bool, const DAMP: bool, const SMOOTH: bool>(
         &mut self,
         kick: f64,
         dt: f64,
         extra: &[Vec<f64>; 3],
+        points: &[(usize, [f64; 3])],
     ) -> bool {
         let w = &mut self.wire;
         let n1 = w.nodes();
@@ -589,6 +633,19 @@ impl Explicit {
                 x3[i] += dt * v[2];
                 // `<=` is false for NaN, so a NaN anywhere fails the check.
                 ok &= v[0] * v[0] + v[1] * v[1] + v[2] * v[2] <= bound2;
+            }
+        }
+        for &(i, f) in points {
+            let kf = kick * free[i] * inv_m[i];
+            let dv = [kf * f[0], kf * f[1], kf * f[2]];
+            v1[i] += dv[0];
+            v2[i] += dv[1];
+            v3[i] += dv[2];
+            if !SMOOTH {
+                x1[i] += dt * dv[0];
+                x2[i] += dt * dv[1];
+                x3[i] += dt * dv[2];
+                ok &= v1[i] * v1[i] + v2[i] * v2[i] + v3[i] * v3[i] <= bound2;
             }
         }
         if !SMOOTH {
@@ -730,6 +787,18 @@ impl Explicit {
                 d.potential_j -= q[k] * w.reference_length[j] * 0.5 * (a[k] + b[k]);
             }
         }
+        // Insulator strings and elastic crossarms; a crossarm's velocity is synchronised like the nodes'.
+        for (ins, &(_, f)) in w.insulators.iter().zip(&self.point_force) {
+            d.elastic_j += ins.energy(w.position(ins.node));
+            if let Some(arm) = &ins.crossarm {
+                d.elastic_j += arm.spring_energy(ins.pivot_m);
+                let spring = arm.spring_force(ins.pivot_m);
+                for k in 0..2 {
+                    let u = arm.velocity_m_per_s[k] + half * (spring[k] - f[k]) / arm.mass_kg;
+                    d.kinetic_j += 0.5 * arm.mass_kg * u * u;
+                }
+            }
+        }
         d
     }
 
@@ -743,6 +812,11 @@ impl Explicit {
         }
         if let Some(x) = &self.nodal_force {
             f += x[k][i];
+        }
+        for &(node, p) in &self.point_force {
+            if node == i {
+                f += p[k];
+            }
         }
         f
     }

@@ -171,6 +171,15 @@ pub fn pattern(s: &Explicit) -> Vec<Pair<usize, usize>> {
             out.push(Pair::new(o + k, o + k));
         }
     }
+    // The 3x3 diagonal block of each insulator string on its (free) clamp node.
+    for ins in &s.wire().insulators {
+        let Some(o) = idx[ins.node] else { continue };
+        for k in 0..3 {
+            for l in 0..3 {
+                out.push(Pair::new(o + k, o + l));
+            }
+        }
+    }
     out
 }
 
@@ -210,6 +219,11 @@ fn values_with<const S: usize>(s: &Explicit, cv: f64, cm: f64, floor_n: Option<f
             }
         }
     }
+    for ins in &s.wire().insulators {
+        if free[ins.node] > 0.0 {
+            out.extend(ins.stiffness(s.wire().position(ins.node), floor_n));
+        }
+    }
 }
 
 /// Largest difference [N] between the replica's nodal forces (plus gravity and prescribed forces) and
@@ -224,6 +238,12 @@ pub fn replica_gap(s: &mut Explicit) -> f64 {
         for k in 0..3 {
             mine[k][j] += fa[k].v;
             mine[k][j + 1] += fb[k].v;
+        }
+    }
+    for ins in &s.wire().insulators {
+        let f = ins.force_on_clamp(s.wire().position(ins.node));
+        for k in 0..3 {
+            mine[k][ins.node] += f[k];
         }
     }
     let mut gap: f64 = 0.0;

@@ -86,6 +86,12 @@ pub enum StaticError {
     /// The wire has no free node.
     #[error("the wire has no free node")]
     NoFreeNode,
+    /// An elastic crossarm: its pivot is not an unknown of the static solver.
+    #[error("insulator {insulator} has an elastic crossarm: not supported by the static solver")]
+    ElasticCrossarm {
+        /// the insulator (index in `Wire::insulators`)
+        insulator: usize,
+    },
     /// The sparse pattern was rejected (internal error).
     #[error("sparse factorisation: {0}")]
     Factorisation(String),
@@ -186,6 +192,9 @@ fn check_supported(s: &Explicit) -> Result<(), StaticError> {
     }
     if !s.wire().free.iter().any(|&f| f > 0.0) {
         return Err(StaticError::NoFreeNode);
+    }
+    if let Some(k) = s.wire().insulators.iter().position(|i| i.crossarm.is_some()) {
+        return Err(StaticError::ElasticCrossarm { insulator: k });
     }
     Ok(())
 }

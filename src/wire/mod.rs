@@ -11,7 +11,11 @@
 //! components zero.
 
 pub mod aero;
+pub mod insulator;
+pub mod section;
 pub mod tension;
+
+pub use insulator::{Crossarm, Insulator};
 
 /// Default reference temperature [K]: 268.15 K = -5 C, the ambient temperature of section 5.4.
 pub const REFERENCE_TEMPERATURE_K: f64 = 268.15;
@@ -81,6 +85,11 @@ pub struct Wire {
     pub reference_temperature_k: f64,
     /// linear thermal expansion coefficient `alpha_t` [1/K], eq. (5.5)
     pub thermal_expansion_per_k: f64,
+    /// point mass lumped at each node besides the conductor `m_p` [kg] (an insulator string at its clamp),
+    /// length `N + 1`; call [`Wire::update_node_masses`] after changing it
+    pub point_mass_kg: Vec<f64>,
+    /// suspension insulator strings, each holding a node of the line ([`insulator`])
+    pub insulators: Vec<Insulator>,
 }
 
 impl Wire {
@@ -116,6 +125,8 @@ impl Wire {
             temperature_k: vec![REFERENCE_TEMPERATURE_K; n_nodes - 1],
             reference_temperature_k: REFERENCE_TEMPERATURE_K,
             thermal_expansion_per_k: 0.0,
+            point_mass_kg: vec![0.0; n_nodes],
+            insulators: Vec::new(),
         };
         wire.update_node_masses();
         wire
@@ -131,13 +142,14 @@ impl Wire {
         self.x[0].len()
     }
 
-    /// Recompute the lumped node masses from the segment masses (after ice is added or dropped).
+    /// Recompute the lumped node masses from the segment masses (after ice is added or dropped) and the
+    /// point masses.
     pub fn update_node_masses(&mut self) {
         let n = self.segments();
         for i in 0..=n {
             let left = if i > 0 { self.segment_mass[i - 1] } else { 0.0 };
             let right = if i < n { self.segment_mass[i] } else { 0.0 };
-            self.mass[i] = 0.5 * (left + right);
+            self.mass[i] = 0.5 * (left + right) + self.point_mass_kg[i];
             self.inv_mass[i] = 1.0 / self.mass[i];
         }
     }
@@ -177,9 +189,16 @@ impl Wire {
         self.rest_length.iter().sum()
     }
 
-    /// Total mass [kg].
+    /// Total mass of the conductor [kg] (point masses not included).
     pub fn total_mass(&self) -> f64 {
         self.segment_mass.iter().sum()
+    }
+
+    /// Hang node `node` from a suspension insulator string (its mass lumped at the node).
+    pub fn add_insulator(&mut self, ins: Insulator) {
+        self.point_mass_kg[ins.node] += ins.mass_kg;
+        self.insulators.push(ins);
+        self.update_node_masses();
     }
 
     /// The point at the middle of the span in the Lagrangian coordinate, `s = S/2` [m]: node `N/2` for
