@@ -62,6 +62,11 @@ pub enum Action {
     },
     /// Stop heat conduction.
     HeatConductionOff,
+    /// Insulator string `insulator` (index in `Wire::insulators`) fails: it carries nothing from now on.
+    InsulatorFailure {
+        /// the string
+        insulator: usize,
+    },
     /// Switch contact with the scenario's ground plane on or off.
     Ground {
         /// true: contact on

@@ -91,6 +91,13 @@ impl EventState {
                     format!("{text} refused: it would leave a segment mass non-positive (the wire is unchanged)")
                 }
             }
+            Action::InsulatorFailure { insulator } => match solver.wire_mut().insulators.get_mut(insulator) {
+                Some(ins) => {
+                    ins.intact = false;
+                    format!("failure of the insulator string at node {}", ins.node)
+                }
+                None => format!("failure of insulator string {insulator} ignored: no such string"),
+            },
             Action::Wind { scale, gate } => {
                 self.gust = None;
                 solver.loads_mut().wind_scale = scale;

@@ -12,6 +12,22 @@ use crate::wire::Wire;
 /// Name of the probe every run has: the mid-span point `f = 1/2`.
 pub const MIDSPAN: &str = "mid";
 
+/// Where a probe is.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ProbeAt {
+    /// a fraction of the whole line's unstretched length [-]
+    Line(f64),
+    /// a fraction [-] of the span between nodes `first` and `last` (a span of a section)
+    Span {
+        /// the span's first node
+        first: usize,
+        /// its last node
+        last: usize,
+        /// fraction of its unstretched length [-]
+        fraction: f64,
+    },
+}
+
 /// A named Lagrangian point.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ProbePoint {
@@ -31,8 +47,22 @@ impl ProbePoint {
     /// The probe at fraction `f` of the wire's unstretched length, for a wire whose end nodes are at
     /// `a` and `b` [m] at the start.
     pub fn new(name: &str, f: f64, wire: &Wire) -> Self {
-        let n = wire.segments();
-        let lengths = &wire.reference_length;
+        Self::between(name, f, 0, wire.segments(), wire)
+    }
+
+    /// The probe of [`ProbeAt`].
+    pub fn at(name: &str, at: ProbeAt, wire: &Wire) -> Self {
+        match at {
+            ProbeAt::Line(f) => Self::new(name, f, wire),
+            ProbeAt::Span { first, last, fraction } => Self::between(name, fraction, first, last, wire),
+        }
+    }
+
+    /// The probe at fraction `f` of the unstretched length between nodes `first` and `last` (a span of a
+    /// section), its displacement measured from the chord between those two nodes at the start.
+    pub fn between(name: &str, f: f64, first: usize, last: usize, wire: &Wire) -> Self {
+        let n = last - first;
+        let lengths = &wire.reference_length[first..last];
         let (segment, weight) = if lengths.iter().all(|l| l.to_bits() == lengths[0].to_bits()) {
             // Equal segments: exact integer arithmetic on f N (f = 1/2 lands on node N/2 for even N).
             let fn_ = f * n as f64;
@@ -51,9 +81,9 @@ impl ProbePoint {
             }
             found
         };
-        let (a, b) = (wire.position(0), wire.position(n));
+        let (a, b) = (wire.position(first), wire.position(last));
         let reference_m = [0, 1, 2].map(|k| (1.0 - f) * a[k] + f * b[k]);
-        ProbePoint { name: name.to_string(), at_fraction: f, segment, weight, reference_m }
+        ProbePoint { name: name.to_string(), at_fraction: f, segment: first + segment, weight, reference_m }
     }
 
     /// Position of the point [m].

@@ -138,9 +138,9 @@ pub fn run_observed<'o>(
     let mut solver = plan.solver.clone();
     let wire = &solver.wire();
     let mid = ProbePoint::new(crate::output::probe::MIDSPAN, 0.5, wire);
-    let named: Vec<ProbePoint> = plan.probes.iter().map(|(name, f)| ProbePoint::new(name, *f, wire)).collect();
+    let named: Vec<ProbePoint> = plan.probes.iter().map(|(name, at)| ProbePoint::at(name, *at, wire)).collect();
     let all_probes: Vec<ProbePoint> = std::iter::once(mid.clone()).chain(named.iter().cloned()).collect();
-    let supports: Vec<(usize, [f64; 3])> = wire.fixed_nodes().iter().map(|&i| (i, wire.position(i))).collect();
+    let supports: Vec<(usize, [f64; 3])> = wire.supports();
     let from_s = plan.peaks_from_s.unwrap_or_else(|| plan.events.first().map_or(0.0, |e| e.time_s));
     let mut peaks = Peaks::new(from_s, all_probes.clone(), supports.len());
     let mut settle = match plan.stop {

@@ -4,10 +4,11 @@
 //! domain form ([`crate::events::Event`]) and the outputs asked for.
 
 use super::events::{EventSpec, GateSpec, HeatBoundarySpec, break_segment, node_range, segment_range};
-use super::schema::{Scenario, ShapeSpec, TensionLawSpec, WindLawSpec};
+use super::schema::{GeometrySpec, Scenario, ShapeSpec, TensionLawSpec, WindLawSpec};
 use super::validate::Problem;
 use crate::events::{Action, Event};
 use crate::heat::HeatBoundary;
+use crate::output::probe::ProbeAt;
 use crate::scheme::{Explicit, Ground, Loads, StepParams, WindGate, WindLoad};
 use crate::statics::{self, StaticOptions, StaticReport};
 use crate::wire::aero::{Aerodynamic, UniformNormal};
@@ -70,7 +71,7 @@ pub struct Plan {
     /// the ground plane, if the scenario has one (on the solver from the start if it is active)
     pub ground: Option<Ground>,
     /// named probes besides mid-span: (name, fraction of the unstretched length [-])
-    pub probes: Vec<(String, f64)>,
+    pub probes: Vec<(String, ProbeAt)>,
     /// the run's peaks count from this time [s]; default the first event's time (0 without events)
     pub peaks_from_s: Option<f64>,
     /// the static solve of `[initial] shape = "equilibrium"` (iterations, residual), if the scenario asked
@@ -112,9 +113,9 @@ fn arc_primitive(k: f64, t: f64) -> f64 {
 }
 
 /// Nodes equally spaced in arc length along the initial shape; returns positions and the shape's length.
-fn initial_nodes(s: &Scenario) -> ([Vec<f64>; 3], f64) {
-    let (a, b) = (s.geometry.left_support_m, s.geometry.right_support_m);
-    let n = s.geometry.segments;
+fn initial_nodes(s: &Scenario, g: &GeometrySpec) -> ([Vec<f64>; 3], f64) {
+    let (a, b) = (g.left_support_m, g.right_support_m);
+    let n = g.segments;
     let d = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
     let chord = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
     let mut x = [vec![0.0; n + 1], vec![0.0; n + 1], vec![0.0; n + 1]];
@@ -174,12 +175,37 @@ fn gate(g: GateSpec) -> WindGate {
     }
 }
 
-/// The event of an `[[events]]` table on an `n`-segment wire: span fractions resolved to indices.
-fn event(e: &EventSpec, n: usize) -> Event {
+/// The events of an `[[events]]` table on an `n`-segment wire: span fractions resolved to indices, a
+/// break or ice event in the span (first segment, segments) it names (`spans[0]` by default), a failing
+/// string by its support's node. A progressive ice change (a shedding front moving at `v` [m/s]) becomes
+/// one change per segment, at the time the front reaches the segment's middle.
+fn events_of(e: &EventSpec, n: usize, spans: &[(usize, usize)], wire: &Wire, support_node: &[usize]) -> Vec<Event> {
+    let (first, n_span) = spans[e.span().unwrap_or(0)];
+    let shift = |r: std::ops::Range<usize>| first + r.start..first + r.end;
     let action = match *e {
-        EventSpec::Break { at_fraction, .. } => Action::Break { segment: break_segment(at_fraction, n) },
+        EventSpec::Break { at_fraction, .. } => Action::Break { segment: first + break_segment(at_fraction, n_span) },
+        EventSpec::Ice { linear_density_kg_per_m, range, front_speed_m_per_s: Some(v), time_s, .. } => {
+            // The front starts at the range's first end (a < b) and moves toward its second.
+            let mut s_m = 0.0;
+            return shift(segment_range(range, n_span))
+                .map(|j| {
+                    let l = wire.reference_length[j];
+                    let middle = s_m + 0.5 * l;
+                    s_m += l;
+                    Event {
+                        time_s: time_s + middle / v,
+                        action: Action::Ice { segments: j..j + 1, delta_kg_per_m: linear_density_kg_per_m },
+                    }
+                })
+                .collect();
+        }
         EventSpec::Ice { linear_density_kg_per_m, range, .. } => {
-            Action::Ice { segments: segment_range(range, n), delta_kg_per_m: linear_density_kg_per_m }
+            Action::Ice { segments: shift(segment_range(range, n_span)), delta_kg_per_m: linear_density_kg_per_m }
+        }
+        EventSpec::InsulatorFailure { support, .. } => {
+            let node = support_node.get(support).copied().unwrap_or(usize::MAX);
+            let insulator = wire.insulators.iter().position(|i| i.node == node).unwrap_or(usize::MAX);
+            Action::InsulatorFailure { insulator }
         }
         EventSpec::Wind { scale, gate: g, .. } => Action::Wind { scale, gate: gate(g) },
         EventSpec::Gust { period_s, amplitude, gate: g, .. } => Action::Gust { period_s, amplitude, gate: gate(g) },
@@ -201,7 +227,7 @@ fn event(e: &EventSpec, n: usize) -> Event {
         EventSpec::HeatConductionOff { .. } => Action::HeatConductionOff,
         EventSpec::Ground { on, .. } => Action::Ground { on },
     };
-    Event { time_s: e.time_s(), action }
+    vec![Event { time_s: e.time_s(), action }]
 }
 
 /// The one conversion of a scenario into a solver and its run plan: every field is checked
@@ -224,15 +250,25 @@ pub fn build(s: &Scenario) -> Result<Plan, Vec<Problem>> {
     let dt = d.dt_s.ok_or_else(|| vec![missing("numerics.courant")])?;
     let cd = &s.conductor;
     let rho = cd.linear_density_kg_per_m;
-    let n = s.geometry.segments;
-    let (x, _) = initial_nodes(s);
-    let ds = length / n as f64;
-    let law = match cd.tension_law {
-        TensionLawSpec::TensionOnly => LawKind::TensionOnly,
-        TensionLawSpec::Linear => LawKind::Linear,
+    let (mut wire, spans, support_node) = match (&d.section, &s.geometry) {
+        (Some(sg), _) => {
+            let l = &sg.layout;
+            let spans = (0..l.first_node.len() - 1).map(|k| (l.first_node[k], l.first_node[k + 1] - l.first_node[k]));
+            (sg.wire.clone(), spans.collect(), l.support_node.clone())
+        }
+        (None, Some(g)) => {
+            let n = g.segments;
+            let (x, _) = initial_nodes(s, g);
+            let law = match cd.tension_law {
+                TensionLawSpec::TensionOnly => LawKind::TensionOnly,
+                TensionLawSpec::Linear => LawKind::Linear,
+            };
+            let conductor = Conductor { axial_stiffness_n: ea, internal_friction_n_s: s.numerics.eta_n_s, law };
+            (Wire::new(conductor, x, vec![length / n as f64; n], rho), vec![(0, n)], vec![0, n])
+        }
+        (None, None) => return Err(vec![missing("geometry")]),
     };
-    let conductor = Conductor { axial_stiffness_n: ea, internal_friction_n_s: s.numerics.eta_n_s, law };
-    let mut wire = Wire::new(conductor, x, vec![ds; n], rho);
+    let n = wire.segments();
     wire.thermal_expansion_per_k = cd.thermal_expansion_per_k;
     wire.reference_temperature_k = cd.reference_temperature_k;
     wire.temperature_k.fill(cd.reference_temperature_k);
@@ -281,9 +317,17 @@ pub fn build(s: &Scenario) -> Result<Plan, Vec<Problem>> {
     let mut snaps = s.output.snapshot_times_s.clone();
     snaps.sort_by(f64::total_cmp);
     snaps.dedup();
-    let (a, b) = (s.geometry.left_support_m, s.geometry.right_support_m);
-    let mut events: Vec<Event> = s.events.iter().map(|e| event(e, n)).collect();
+    let (a, b) = (wire.position(0), wire.position(n));
+    let mut events: Vec<Event> = s.events.iter().flat_map(|e| events_of(e, n, &spans, &wire, &support_node)).collect();
     events.sort_by(|p, q| p.time_s.total_cmp(&q.time_s));
+    // A section's spans each get a mid-span probe `span{k}_mid`, measured from the span's own chord.
+    let mut probes: Vec<(String, ProbeAt)> = Vec::new();
+    if d.section.is_some() {
+        for (k, &(first, n_k)) in spans.iter().enumerate() {
+            probes.push((format!("span{k}_mid"), ProbeAt::Span { first, last: first + n_k, fraction: 0.5 }));
+        }
+    }
+    probes.extend(s.output.probes.iter().map(|p| (p.name.clone(), ProbeAt::Line(p.at_fraction))));
     let mut solver = Explicit::new(wire, loads, params);
     let initial_equilibrium = match s.initial.shape {
         ShapeSpec::Equilibrium => Some(equilibrium(&mut solver, s)?),
@@ -306,7 +350,7 @@ pub fn build(s: &Scenario) -> Result<Plan, Vec<Problem>> {
         tau_speed_m_per_s: s.output.tau_speed_m_per_s,
         events,
         ground: s.ground.as_ref().map(|g| Ground { height_m: g.height_m, restitution: g.restitution }),
-        probes: s.output.probes.iter().map(|p| (p.name.clone(), p.at_fraction)).collect(),
+        probes,
         peaks_from_s: s.output.peaks_from_s,
         initial_equilibrium,
         warnings: super::warnings::warnings(s),
@@ -365,7 +409,7 @@ mod tests {
             left_support_m = [0.0, 0.0, 0.0]\nright_support_m = [0.0, 160.0, 0.0]\nsegments = 8\n[initial]\n\
             shape = \"parabola\"\nsag_m = 2.2250738585072014e-308\n[duration]\nend_time_s = 0.5\n";
         let sc: Scenario = toml::from_str(text).unwrap();
-        let (x, _) = initial_nodes(&sc);
+        let (x, _) = initial_nodes(&sc, sc.geometry.as_ref().unwrap());
         for i in 0..=8 {
             assert!((x[1][i] - 20.0 * i as f64).abs() < 1e-9 && x[2][i].abs() < 1e-9, "node {i}");
         }

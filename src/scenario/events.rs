@@ -75,6 +75,9 @@ pub enum EventSpec {
         /// (0, 1); the segment `floor(at_fraction N)` breaks (for 0.5 and even N: the segment right of
         /// the mid-span node). A segment breaks once: two breaks in one segment are refused
         at_fraction: f64,
+        /// in a `[section]`: the span (0-based) that `at_fraction` refers to; default 0
+        #[serde(default)]
+        span: Option<usize>,
     },
     /// Add ice (or drop it, with a negative value): a change of linear density over a span range.
     Ice {
@@ -88,6 +91,22 @@ pub enum EventSpec {
         /// default the whole span
         #[serde(default = "whole_span", deserialize_with = "super::schema::two")]
         range: [f64; 2],
+        /// in a `[section]`: the span (0-based) that `range` refers to; default 0
+        #[serde(default)]
+        span: Option<usize>,
+        /// progressive change (ice shedding along the span): a front starting at the range's first end
+        /// at `time_s` and moving at this speed [m/s] along the unstretched length, changing each segment
+        /// when it reaches the segment's middle; in [0.1, 1e4] m/s (shedding fronts run at metres to tens
+        /// of metres per second); default: the whole range at once
+        #[serde(default)]
+        front_speed_m_per_s: Option<f64>,
+    },
+    /// A suspension insulator string fails: from then on it carries nothing (its mass stays at the clamp).
+    InsulatorFailure {
+        /// event time [s]
+        time_s: f64,
+        /// the support (0-based, in `section.supports`), which must be a suspension
+        support: usize,
     },
     /// Set the wind to a constant multiple of the scenario's wind load (0 = off, 1 = on); ends a gust.
     Wind {
@@ -178,7 +197,16 @@ impl EventSpec {
             | EventSpec::Temperature { time_s, .. }
             | EventSpec::HeatConduction { time_s, .. }
             | EventSpec::HeatConductionOff { time_s }
+            | EventSpec::InsulatorFailure { time_s, .. }
             | EventSpec::Ground { time_s, .. } => time_s,
+        }
+    }
+
+    /// The span a break or an ice event addresses in a `[section]` (`None`: not given).
+    pub fn span(&self) -> Option<usize> {
+        match *self {
+            EventSpec::Break { span, .. } | EventSpec::Ice { span, .. } => span,
+            _ => None,
         }
     }
 
@@ -200,6 +228,7 @@ impl EventSpec {
             EventSpec::Temperature { .. } => "temperature",
             EventSpec::HeatConduction { .. } => "heat_conduction",
             EventSpec::HeatConductionOff { .. } => "heat_conduction_off",
+            EventSpec::InsulatorFailure { .. } => "insulator_failure",
             EventSpec::Ground { .. } => "ground",
         }
     }

@@ -9,6 +9,7 @@ pub mod build;
 pub mod events;
 mod locate;
 pub mod schema;
+pub mod section;
 pub mod validate;
 pub mod warnings;
 pub mod work;

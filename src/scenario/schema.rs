@@ -19,8 +19,12 @@ pub struct Scenario {
     pub description: Option<String>,
     /// the conductor's material and section
     pub conductor: ConductorSpec,
-    /// supports and discretisation
-    pub geometry: GeometrySpec,
+    /// supports and discretisation of a single span (give exactly one of `[geometry]` and `[section]`)
+    #[serde(default)]
+    pub geometry: Option<GeometrySpec>,
+    /// a line section: several spans on suspension insulator strings between two dead-ends
+    #[serde(default)]
+    pub section: Option<SectionSpec>,
     /// initial shape (at rest)
     #[serde(default)]
     pub initial: InitialSpec,
@@ -112,6 +116,84 @@ pub struct GeometrySpec {
     /// unstretched (stress-free) length of the wire `S` [m], in [chord / 2, 100 chord] (a strain of 100 %
     /// is beyond any conductor; a wire 100 times its span is not a line); default: the length of the
     /// initial shape, so that the wire starts unstressed
+    #[serde(default)]
+    pub unstretched_length_m: Option<f64>,
+}
+
+/// A line section: an ordered list of supports (the first and last dead-ends, suspension strings
+/// between) and the spans between them, all of the `[conductor]`. Coordinates as for `[geometry]`; the
+/// section runs along `x2` (its supports in increasing `x2`), `x3` up.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SectionSpec {
+    /// horizontal tension `H0` [N] at which every span is strung, with the strings hanging plumb, at the
+    /// conductor's reference temperature; in (0, 1e7] (a per-span value or unstretched length overrides it)
+    #[serde(default)]
+    pub horizontal_tension_n: Option<f64>,
+    /// segments per span `N_k` [-] unless a span states its own, in [2, 1e6]
+    #[serde(default)]
+    pub segments_per_span: Option<usize>,
+    /// the supports, in order along the line (at least two)
+    pub supports: Vec<SupportSpec>,
+    /// the spans, one fewer than the supports (optional: each span defaults to the section's values)
+    #[serde(default)]
+    pub spans: Vec<SpanSpec>,
+}
+
+/// One support of a section.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields, tag = "kind", rename_all = "snake_case")]
+pub enum SupportSpec {
+    /// the conductor fixed to a point (a strain tower)
+    DeadEnd {
+        /// attachment point `(x1, x2, x3)` [m], each within 1e5 m
+        #[serde(deserialize_with = "three")]
+        point_m: [f64; 3],
+    },
+    /// a suspension insulator string hanging from a crossarm pivot to the conductor clamp
+    Suspension {
+        /// crossarm pivot (top of the string) `(x1, x2, x3)` [m], each within 1e5 m
+        #[serde(deserialize_with = "three")]
+        pivot_m: [f64; 3],
+        /// string length `L_i` [m], in [0.01, 20] (suspension strings are 1 to 10 m)
+        insulator_length_m: f64,
+        /// string mass `m_i` [kg], lumped at the clamp, in [0, 5000] (50 to 150 kg for 3 to 5 m strings)
+        insulator_mass_kg: f64,
+        /// string axial stiffness `EA_i` [N], in [1e4, 1e10] (long-rod and cap-and-pin strings: about 1e7
+        /// to 1e8 N)
+        insulator_stiffness_n: f64,
+        /// an elastic crossarm (tower flexibility); default rigid
+        #[serde(default)]
+        crossarm: Option<CrossarmSpecToml>,
+    },
+}
+
+/// Springs, mass and damping of an elastic crossarm (horizontal motion of the pivot).
+#[derive(Clone, Copy, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct CrossarmSpecToml {
+    /// spring along the line `k_l` [N/m], in (0, 1e10]
+    pub longitudinal_n_per_m: f64,
+    /// spring across the line `k_t` [N/m], in (0, 1e10]
+    pub transverse_n_per_m: f64,
+    /// mass moving with the pivot `M` [kg], in (0, 1e6]
+    pub mass_kg: f64,
+    /// viscous damping `c_d` [N s/m], in [0, 1e9]; default 0
+    #[serde(default)]
+    pub damping_n_s_per_m: f64,
+}
+
+/// One span of a section: what differs from the section's defaults.
+#[derive(Clone, Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SpanSpec {
+    /// segments `N_k` [-], in [2, 1e6]; default `section.segments_per_span`
+    #[serde(default)]
+    pub segments: Option<usize>,
+    /// horizontal tension `H0` [N] at stringing, in (0, 1e7]; default `section.horizontal_tension_n`
+    #[serde(default)]
+    pub horizontal_tension_n: Option<f64>,
+    /// unstretched length `S_k` [m] instead of a stringing tension, in [chord / 2, 2 chord]
     #[serde(default)]
     pub unstretched_length_m: Option<f64>,
 }

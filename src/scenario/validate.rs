@@ -6,8 +6,11 @@ use std::fmt;
 use std::ops::Range;
 
 use super::events::{EventSpec, HeatBoundarySpec, break_segment, node_range, segment_range};
-use super::schema::{Scenario, ShapeSpec, WindLawSpec};
+use super::schema::{Scenario, ShapeSpec, SupportSpec, TensionLawSpec, WindLawSpec};
+use super::section::SectionGrid;
 use crate::scheme::courant;
+use crate::wire::Conductor;
+use crate::wire::tension::LawKind;
 
 /// One invalid field.
 #[derive(Clone, Debug, PartialEq)]
@@ -115,7 +118,7 @@ pub fn validate(s: &Scenario) -> Vec<Problem> {
 
 /// The quantities validation derives on the way, each `None` where its inputs were invalid. The builder
 /// uses these and derives none of them again.
-#[derive(Clone, Copy, Debug, Default)]
+#[derive(Clone, Debug, Default)]
 pub(crate) struct Derived {
     /// axial stiffness `EA` [N]
     pub ea_n: Option<f64>,
@@ -127,6 +130,8 @@ pub(crate) struct Derived {
     pub wave_speed_m_per_s: Option<f64>,
     /// nominal time step (3.7) [s]
     pub dt_s: Option<f64>,
+    /// the built line of a `[section]`
+    pub section: Option<SectionGrid>,
 }
 
 /// Every problem of a scenario, and what was derived from its valid parts.
@@ -215,101 +220,139 @@ pub(crate) fn check(s: &Scenario) -> (Vec<Problem>, Derived) {
         }
     };
 
-    // Geometry.
-    let g = &s.geometry;
-    let a_ok = c.coordinates("geometry.left_support_m", g.left_support_m);
-    let b_ok = c.coordinates("geometry.right_support_m", g.right_support_m);
+    // Geometry: one span (`[geometry]`) or a section of several (`[section]`).
     let mut chord = None;
-    if a_ok && b_ok {
-        let d: f64 = (0..3).map(|k| (g.right_support_m[k] - g.left_support_m[k]).powi(2)).sum::<f64>().sqrt();
-        if d <= 1.0e-6 {
-            c.fail(
-                "geometry.right_support_m",
-                format!("{:?}", g.right_support_m),
-                "the supports must be at least 1e-6 m apart (it coincides with geometry.left_support_m)",
-            );
-        } else if d > MAX_SPAN_M {
-            c.fail(
-                "geometry.right_support_m",
-                format!("{:?}", g.right_support_m),
-                &format!(
-                    "the span |B - A| = {d} m is above {MAX_SPAN_M} m (the longest overhead spans built are \
-                     about 5.4 km): check the unit (m) and geometry.left_support_m"
-                ),
-            );
-        } else {
-            chord = Some(d);
-        }
-    }
-    let n_ok = g.segments >= 2 && g.segments <= MAX_SEGMENTS;
-    if !n_ok {
-        c.fail("geometry.segments", g.segments, &format!("must be an integer in [2, {MAX_SEGMENTS}]"));
-    }
-    let mut length_ok = true;
-    if let Some(l) = g.unstretched_length_m {
-        length_ok = c.positive("geometry.unstretched_length_m", l);
-        if let (true, Some(ch)) = (length_ok, chord)
-            && !(0.5 * ch..=100.0 * ch).contains(&l)
-        {
-            length_ok = false;
-            c.fail(
-                "geometry.unstretched_length_m",
-                number(l),
-                &format!(
-                    "must be in [chord / 2, 100 chord] = [{}, {}] m for the chord |B - A| = {ch} m (a strain of \
-                     100 % is beyond any conductor)",
-                    0.5 * ch,
-                    100.0 * ch
-                ),
-            );
-        }
-    }
+    let mut n_ok = false;
+    let mut n_total = 0usize;
+    let mut length: Option<f64> = None;
+    let mut section_grid: Option<SectionGrid> = None;
+    match (&s.geometry, &s.section) {
+        (Some(g), None) => {
+            let a_ok = c.coordinates("geometry.left_support_m", g.left_support_m);
+            let b_ok = c.coordinates("geometry.right_support_m", g.right_support_m);
+            if a_ok && b_ok {
+                let d: f64 = (0..3).map(|k| (g.right_support_m[k] - g.left_support_m[k]).powi(2)).sum::<f64>().sqrt();
+                if d <= 1.0e-6 {
+                    c.fail(
+                        "geometry.right_support_m",
+                        format!("{:?}", g.right_support_m),
+                        "the supports must be at least 1e-6 m apart (it coincides with geometry.left_support_m)",
+                    );
+                } else if d > MAX_SPAN_M {
+                    c.fail(
+                        "geometry.right_support_m",
+                        format!("{:?}", g.right_support_m),
+                        &format!(
+                            "the span |B - A| = {d} m is above {MAX_SPAN_M} m (the longest overhead spans built are \
+                             about 5.4 km): check the unit (m) and geometry.left_support_m"
+                        ),
+                    );
+                } else {
+                    chord = Some(d);
+                }
+            }
+            n_ok = g.segments >= 2 && g.segments <= MAX_SEGMENTS;
+            n_total = g.segments;
+            if !n_ok {
+                c.fail("geometry.segments", g.segments, &format!("must be an integer in [2, {MAX_SEGMENTS}]"));
+            }
+            let mut length_ok = true;
+            if let Some(l) = g.unstretched_length_m {
+                length_ok = c.positive("geometry.unstretched_length_m", l);
+                if let (true, Some(ch)) = (length_ok, chord)
+                    && !(0.5 * ch..=100.0 * ch).contains(&l)
+                {
+                    length_ok = false;
+                    c.fail(
+                        "geometry.unstretched_length_m",
+                        number(l),
+                        &format!(
+                            "must be in [chord / 2, 100 chord] = [{}, {}] m for the chord |B - A| = {ch} m (a strain of \
+                             100 % is beyond any conductor)",
+                            0.5 * ch,
+                            100.0 * ch
+                        ),
+                    );
+                }
+            }
 
-    // Initial shape.
-    let ini = &s.initial;
-    let mut shape_length = chord;
-    match (ini.shape, ini.sag_m) {
-        (ShapeSpec::Straight, Some(f)) => c.fail("initial.sag_m", f, "only with initial.shape = \"parabola\""),
-        (ShapeSpec::Straight, None) => {}
-        (ShapeSpec::Parabola, None) => {
-            c.fail("initial.sag_m", "(missing)", "required with initial.shape = \"parabola\"")
-        }
-        (ShapeSpec::Equilibrium, None) => {}
-        (ShapeSpec::Parabola | ShapeSpec::Equilibrium, Some(f)) => {
-            let hi = chord.unwrap_or(f64::INFINITY);
-            if c.within("initial.sag_m", f, f64::MIN_POSITIVE, hi, "must be > 0 and at most the chord length") {
-                shape_length = chord.map(|l| super::build::parabola_length(l, f));
-                if let Some(l) = chord {
-                    let (a, b) = (g.left_support_m, g.right_support_m);
-                    let horizontal = (b[0] - a[0]).hypot(b[1] - a[1]);
-                    if horizontal < 1.0e-3 * l {
-                        shape_length = None;
-                        c.fail(
-                            "initial.shape",
-                            format!("{:?}", ini.shape).to_lowercase(),
-                            &format!(
-                                "a parabola needs a chord that is not vertical: it sags vertically, in the plane \
-                                 of the chord (the supports are {} m apart horizontally, less than \
-                                 1e-3 of the chord {l} m); use initial.shape = \"straight\"",
-                                number(horizontal)
-                            ),
-                        );
-                    } else if let (ShapeSpec::Parabola, Some(gr)) = (ini.shape, &s.ground) {
-                        let (u, low) = parabola_lowest(a, b, f);
-                        if gr.height_m.is_finite() && low < gr.height_m {
-                            c.fail(
-                                "ground.height_m",
-                                number(gr.height_m),
-                                &format!(
-                                    "the initial parabola (initial.sag_m = {f} m) reaches x3 = {low} m at {u:.4} \
-                                     of the chord, below the ground: the ground must lie below the initial shape"
-                                ),
-                            );
+            // Initial shape.
+            let ini = &s.initial;
+            let mut shape_length = chord;
+            match (ini.shape, ini.sag_m) {
+                (ShapeSpec::Straight, Some(f)) => c.fail("initial.sag_m", f, "only with initial.shape = \"parabola\""),
+                (ShapeSpec::Straight, None) => {}
+                (ShapeSpec::Parabola, None) => {
+                    c.fail("initial.sag_m", "(missing)", "required with initial.shape = \"parabola\"")
+                }
+                (ShapeSpec::Equilibrium, None) => {}
+                (ShapeSpec::Parabola | ShapeSpec::Equilibrium, Some(f)) => {
+                    let hi = chord.unwrap_or(f64::INFINITY);
+                    if c.within("initial.sag_m", f, f64::MIN_POSITIVE, hi, "must be > 0 and at most the chord length") {
+                        shape_length = chord.map(|l| super::build::parabola_length(l, f));
+                        if let Some(l) = chord {
+                            let (a, b) = (g.left_support_m, g.right_support_m);
+                            let horizontal = (b[0] - a[0]).hypot(b[1] - a[1]);
+                            if horizontal < 1.0e-3 * l {
+                                shape_length = None;
+                                c.fail(
+                                    "initial.shape",
+                                    format!("{:?}", ini.shape).to_lowercase(),
+                                    &format!(
+                                        "a parabola needs a chord that is not vertical: it sags vertically, in the plane \
+                                         of the chord (the supports are {} m apart horizontally, less than \
+                                         1e-3 of the chord {l} m); use initial.shape = \"straight\"",
+                                        number(horizontal)
+                                    ),
+                                );
+                            } else if let (ShapeSpec::Parabola, Some(gr)) = (ini.shape, &s.ground) {
+                                let (u, low) = parabola_lowest(a, b, f);
+                                if gr.height_m.is_finite() && low < gr.height_m {
+                                    c.fail(
+                                        "ground.height_m",
+                                        number(gr.height_m),
+                                        &format!(
+                                            "the initial parabola (initial.sag_m = {f} m) reaches x3 = {low} m at {u:.4} \
+                                             of the chord, below the ground: the ground must lie below the initial shape"
+                                        ),
+                                    );
+                                }
+                            }
                         }
                     }
                 }
             }
+            if length_ok {
+                length = g.unstretched_length_m.or(shape_length);
+            }
         }
+        (None, Some(sec)) => {
+            let law = match cd.tension_law {
+                TensionLawSpec::TensionOnly => LawKind::TensionOnly,
+                TensionLawSpec::Linear => LawKind::Linear,
+            };
+            let conductor = ea.filter(|_| rho_ok).map(|ea| {
+                let c = Conductor { axial_stiffness_n: ea, internal_friction_n_s: s.numerics.eta_n_s, law };
+                (c, cd.linear_density_kg_per_m)
+            });
+            section_grid = super::section::check(&mut c, s, sec, conductor);
+            if let Some(sg) = &section_grid {
+                chord = Some(sg.chord_m);
+                n_ok = true;
+                n_total = sg.wire.segments();
+                length = Some(sg.wire.total_rest_length());
+            }
+        }
+        (Some(_), Some(_)) => c.fail(
+            "section",
+            "(given with [geometry])",
+            "give either [geometry] (one span) or [section] (several spans), not both",
+        ),
+        (None, None) => c.fail(
+            "geometry",
+            "(missing)",
+            "give [geometry] (one span between two supports) or [section] (several spans on insulator strings)",
+        ),
     }
 
     // Loads.
@@ -404,7 +447,6 @@ pub(crate) fn check(s: &Scenario) -> (Vec<Problem>, Derived) {
         );
     }
     // Stability limits need EA, rho0, the segment length: check them only when those are valid.
-    let length = if length_ok { g.unstretched_length_m.or(shape_length) } else { None };
     derived.ea_n = ea;
     derived.chord_m = chord;
     derived.length_m = length.filter(|l| l.is_finite() && *l > 0.0);
@@ -413,7 +455,7 @@ pub(crate) fn check(s: &Scenario) -> (Vec<Problem>, Derived) {
         && len > 0.0
     {
         let cw = courant::wave_speed(ea, cd.linear_density_kg_per_m);
-        let ds = len / g.segments as f64;
+        let ds = section_grid.as_ref().map_or(len / n_total as f64, |sg| sg.ds_min_m);
         derived.wave_speed_m_per_s = Some(cw);
         if courant_ok && eta_ok {
             let z = courant::friction_number(ea, nm.eta_n_s, cw, ds);
@@ -429,7 +471,9 @@ pub(crate) fn check(s: &Scenario) -> (Vec<Problem>, Derived) {
                     ),
                 );
             }
-            let dt = courant::time_step(nm.courant, ds, cw);
+            // A section's clamps may need a shorter step (module doc of `super::section`).
+            let clamp = section_grid.as_ref().map_or(f64::INFINITY, |sg| nm.courant * sg.clamp_step_s);
+            let dt = courant::time_step(nm.courant, ds, cw).min(clamp);
             derived.dt_s = Some(dt);
             if zeta_ok && nm.mass_damping_per_s * dt >= 1.0 {
                 c.fail(
@@ -502,8 +546,22 @@ pub(crate) fn check(s: &Scenario) -> (Vec<Problem>, Derived) {
     if let Some(t) = out.peaks_from_s {
         c.within("output.peaks_from_s", t, 0.0, end.unwrap_or(f64::INFINITY), "must be in [0, end time] [s]");
     }
-    let grid = (n_ok && rho_ok).then(|| Grid { n: g.segments, ds: derived.length_m.map(|l| l / g.segments as f64) });
-    check_ground_and_events(&mut c, s, end, grid, derived.dt_s);
+    // The grid of each span: (first segment, segments, unstretched segment length); one for [geometry].
+    let spans: Vec<SpanGrid> = match &section_grid {
+        Some(sg) => (0..sg.layout.first_node.len() - 1)
+            .map(|k| {
+                let seg = sg.layout.segments(k);
+                SpanGrid { first: seg.start, n: seg.len(), ds: Some(sg.wire.rest_length[seg.start]) }
+            })
+            .collect(),
+        None if n_ok && rho_ok => {
+            vec![SpanGrid { first: 0, n: n_total, ds: derived.length_m.map(|l| l / n_total as f64) }]
+        }
+        None => Vec::new(),
+    };
+    let lowest = section_grid.as_ref().map(|sg| sg.lowest_m);
+    check_ground_and_events(&mut c, s, end, &spans, n_total, lowest, derived.dt_s);
+    derived.section = section_grid;
     (c.0, derived)
 }
 
@@ -514,7 +572,7 @@ const SCALE_ALLOWED: &str = "must be a finite number >= 0, at most 100 (a multip
 
 impl Check {
     /// Three finite coordinates within [`MAX_COORDINATE_M`].
-    fn coordinates(&mut self, field: &str, v: [f64; 3]) -> bool {
+    pub(crate) fn coordinates(&mut self, field: &str, v: [f64; 3]) -> bool {
         if !self.finite3(field, v) {
             return false;
         }
@@ -568,12 +626,45 @@ fn linear_closure_stable(c: &mut Check, field: &str, held: Range<usize>, n: usiz
     }
 }
 
-/// The segments of a valid grid: their number and, when the length is valid, the unstretched segment
-/// length [m].
+/// The segments of a valid line (for the ranges of events over the whole line).
 #[derive(Clone, Copy)]
 struct Grid {
     n: usize,
+}
+
+/// The segments of one span: the first, their number and, when the length is valid, their unstretched
+/// length [m]. A `[geometry]` scenario has one span.
+#[derive(Clone, Copy, Debug)]
+struct SpanGrid {
+    first: usize,
+    n: usize,
     ds: Option<f64>,
+}
+
+/// The span an event addresses (`span`, default 0) and its grid, `None` (with a problem recorded) for
+/// a span that does not exist, or when the grid is not valid.
+fn span_of(
+    c: &mut Check,
+    field: &str,
+    span: Option<usize>,
+    spans: &[SpanGrid],
+    section: bool,
+) -> Option<(usize, SpanGrid)> {
+    let k = span.unwrap_or(0);
+    if span.is_some() && !section {
+        c.fail(field, k, "only in a scenario with [section] (a [geometry] scenario has one span)");
+        return None;
+    }
+    if spans.is_empty() {
+        return None;
+    }
+    match spans.get(k) {
+        Some(g) => Some((k, *g)),
+        None => {
+            c.fail(field, k, &format!("must be a span of the section, 0 to {}", spans.len() - 1));
+            None
+        }
+    }
 }
 
 /// A range that selects no segment on the grid is an event that does nothing.
@@ -638,15 +729,29 @@ pub(crate) fn ice_shortfalls(n: usize, ds: f64, rho: f64, events: &[IceEvent]) -
 }
 
 /// `[ground]` and `[[events]]`.
-fn check_ground_and_events(c: &mut Check, s: &Scenario, end: Option<f64>, grid: Option<Grid>, dt: Option<f64>) {
-    let g = &s.geometry;
+fn check_ground_and_events(
+    c: &mut Check,
+    s: &Scenario,
+    end: Option<f64>,
+    spans: &[SpanGrid],
+    n_total: usize,
+    lowest: Option<f64>,
+    dt: Option<f64>,
+) {
+    let grid = (!spans.is_empty()).then_some(Grid { n: n_total });
     if let Some(gr) = &s.ground {
-        let low = g.left_support_m[2].min(g.right_support_m[2]);
-        if !(gr.height_m.is_finite() && gr.height_m < low) {
+        let low = match (&s.geometry, lowest) {
+            (Some(g), _) => Some(g.left_support_m[2].min(g.right_support_m[2])),
+            (None, low) => low,
+        };
+        if let Some(low) = low
+            && !(gr.height_m.is_finite() && gr.height_m < low)
+        {
+            let what = if s.geometry.is_some() { "the lower support" } else { "the section's lowest initial point" };
             c.fail(
                 "ground.height_m",
                 gr.height_m,
-                &format!("must be a finite height below both supports (the lower support is at x3 = {low} m)"),
+                &format!("must be a finite height below both supports ({what} is at x3 = {low} m)"),
             );
         }
         c.within("ground.restitution", gr.restitution, 0.0, 1.0, "must be in [0, 1] (0.6 returns 36 % of the energy)");
@@ -674,8 +779,9 @@ fn check_ground_and_events(c: &mut Check, s: &Scenario, end: Option<f64>, grid: 
     // Events in the order they apply (the builder's stable sort by time).
     let mut order: Vec<usize> = (0..s.events.len()).collect();
     order.sort_by(|&a, &b| s.events[a].time_s().total_cmp(&s.events[b].time_s()));
-    let mut ice: Vec<IceEvent> = Vec::new();
+    let mut ice: Vec<Vec<IceEvent>> = vec![Vec::new(); spans.len()];
     let mut broken: Vec<(usize, usize)> = Vec::new(); // (segment, event index)
+    let mut failed: Vec<(usize, usize)> = Vec::new(); // (support, event index)
     for k in order {
         let e = &s.events[k];
         let f = |name: &str| format!("events[{k}].{name}");
@@ -690,6 +796,7 @@ fn check_ground_and_events(c: &mut Check, s: &Scenario, end: Option<f64>, grid: 
         if needs_wind && s.loads.wind.is_none() {
             c.fail(&f("action"), format!("\"{}\"", e.action()), "needs a wind load ([loads.wind]) to switch");
         }
+        let span = span_of(c, &f("span"), e.span(), spans, s.section.is_some());
         match *e {
             EventSpec::Break { at_fraction, .. } => {
                 let ok = c.within(
@@ -699,8 +806,8 @@ fn check_ground_and_events(c: &mut Check, s: &Scenario, end: Option<f64>, grid: 
                     1.0 - f64::EPSILON,
                     "must be in (0, 1)",
                 );
-                if let (true, Some(gd)) = (ok, grid) {
-                    let j = break_segment(at_fraction, gd.n);
+                if let (true, Some((_, gd))) = (ok, span) {
+                    let j = gd.first + break_segment(at_fraction, gd.n);
                     if let Some(&(_, first)) = broken.iter().find(|b| b.0 == j) {
                         c.fail(
                             &f("at_fraction"),
@@ -718,7 +825,7 @@ fn check_ground_and_events(c: &mut Check, s: &Scenario, end: Option<f64>, grid: 
                     }
                 }
             }
-            EventSpec::Ice { linear_density_kg_per_m: d, range, .. } => {
+            EventSpec::Ice { linear_density_kg_per_m: d, range, front_speed_m_per_s, .. } => {
                 let d_ok = c.within(
                     &f("linear_density_kg_per_m"),
                     d,
@@ -726,11 +833,25 @@ fn check_ground_and_events(c: &mut Check, s: &Scenario, end: Option<f64>, grid: 
                     1.0e3,
                     "must be a finite change of linear density in [-1e3, 1e3] kg/m",
                 );
+                if let Some(v) = front_speed_m_per_s {
+                    c.within(&f("front_speed_m_per_s"), v, 0.1, 1.0e4, "must be in [0.1, 1e4] m/s");
+                }
                 if range_ok(c, &f("range"), range)
-                    && let Some(seg) = segments_of(c, &f("range"), range, grid)
+                    && let Some((sp, gd)) = span
+                    && let Some(seg) = segments_of(c, &f("range"), range, Some(Grid { n: gd.n }))
                     && d_ok
                 {
-                    ice.push((k, seg, d));
+                    ice[sp].push((k, seg, d));
+                }
+            }
+            EventSpec::InsulatorFailure { support, .. } => {
+                let suspension = s.section.as_ref().and_then(|sec| sec.supports.get(support));
+                if !matches!(suspension, Some(SupportSpec::Suspension { .. })) {
+                    c.fail(&f("support"), support, "must be the index of a suspension support of [section]");
+                } else if let Some(&(_, first)) = failed.iter().find(|x| x.0 == support) {
+                    c.fail(&f("support"), support, &format!("its string already failed at events[{first}]"));
+                } else {
+                    failed.push((support, k));
                 }
             }
             EventSpec::Wind { scale, .. } => {
@@ -775,7 +896,7 @@ fn check_ground_and_events(c: &mut Check, s: &Scenario, end: Option<f64>, grid: 
             EventSpec::HeatConduction { hold_range, hold_temperature_k, heat_time_per_s, boundary, .. } => {
                 if range_ok(c, &f("hold_range"), hold_range)
                     && boundary == HeatBoundarySpec::Linear
-                    && let Some(Grid { n, .. }) = grid
+                    && let Some(Grid { n }) = grid
                 {
                     linear_closure_stable(c, &f("boundary"), node_range(hold_range, n), n);
                 }
@@ -798,10 +919,12 @@ fn check_ground_and_events(c: &mut Check, s: &Scenario, end: Option<f64>, grid: 
             }
         }
     }
-    // Ice: the linear density of every segment, as the events change it in the order they apply.
-    if let Some(Grid { n, ds: Some(ds) }) = grid {
+    // Ice: the linear density of every segment, as the events change it in the order they apply (span by
+    // span: an ice event lies in one span; a progressive one counts as applied at its start).
+    for (sg, ice) in spans.iter().zip(&ice) {
+        let Some(ds) = sg.ds else { continue };
         let rho = cd.linear_density_kg_per_m;
-        for (k, seg, least) in ice_shortfalls(n, ds, rho, &ice) {
+        for (k, seg, least) in ice_shortfalls(sg.n, ds, rho, ice) {
             let d = match s.events[k] {
                 EventSpec::Ice { linear_density_kg_per_m, .. } => linear_density_kg_per_m,
                 _ => f64::NAN,

@@ -109,7 +109,7 @@ impl WorkEstimate {
         let events = plan.events.len() as f64;
         let steps = (horizon / dt).ceil().max(0.0) + events;
         let (heat_substeps, _) = heat_substeps(plan, n, dt, horizon);
-        let supports = plan.solver.wire().fixed_nodes().len() as f64;
+        let supports = plan.solver.wire().supports().len() as f64;
         let timeseries_columns = TIMESERIES_FIXED_COLUMNS + 3.0 * plan.probes.len() as f64 + 3.0 * supports;
         let grid = (horizon / plan.sample_interval_s).floor() + 1.0;
         let timeseries_rows = nan_is_inf(grid).min(steps + 1.0);

@@ -159,6 +159,15 @@ impl Wire {
         &self.fixed
     }
 
+    /// The supports in node order: each fixed node with its position, and each suspension string's clamp
+    /// node with the string's pivot [m] (the point the support force acts on).
+    pub fn supports(&self) -> Vec<(usize, [f64; 3])> {
+        let mut out: Vec<(usize, [f64; 3])> = self.fixed.iter().map(|&i| (i, self.position(i))).collect();
+        out.extend(self.insulators.iter().map(|s| (s.node, s.pivot_m)));
+        out.sort_by_key(|&(i, _)| i);
+        out
+    }
+
     /// How node `i` is held.
     pub fn constraint(&self, i: usize) -> Constraint {
         self.constraint[i]

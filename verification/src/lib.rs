@@ -8,8 +8,10 @@
 //! Shared machinery: [`setup`] (the paper's test wire and loads), [`convergence`] (least-squares order,
 //! Richardson extrapolation, Grid Convergence Index), [`implicit`] (Newmark integrator on the library's
 //! Jacobian and sparse LU, `ohl::statics`), [`report`].
+//! Independent exact references: [`exact_section`] (static equilibrium of a section on suspension strings).
 
 pub mod convergence;
+pub mod exact_section;
 pub mod implicit;
 pub mod report;
 pub mod setup;
