@@ -3,6 +3,7 @@
 //! - `ohl run SCENARIO.toml --out DIR` runs a scenario and writes `DIR/timeseries.csv`,
 //!   `DIR/snapshots.csv` and `DIR/summary.json`;
 //! - `ohl paper CASE|all` reproduces a case of the paper into `figures/`;
+//! - `ohl cases CASE|all` runs a line-section case of `cases/` into `figures/cases/`;
 //! - `ohl bench` measures the explicit kernel's throughput.
 //!
 //! Exit codes: 0 success; 1 the run went unstable (or an output file could not be written), and what
@@ -28,6 +29,8 @@ enum Command {
     Run(cli::run::RunArgs),
     /// Reproduce a case of the paper (or `all`) into figures/, with a paper-versus-computed table.
     Paper(cli::paper::PaperArgs),
+    /// Run a line-section case of cases/ (or `all`) into figures/cases/, with load figures and tables.
+    Cases(cli::cases::CasesArgs),
     /// Measure the throughput of the explicit kernel (node-steps per second).
     Bench(cli::bench::BenchArgs),
 }
@@ -36,6 +39,7 @@ fn main() -> ExitCode {
     match Cli::parse().command {
         Command::Run(a) => cli::run::main(a),
         Command::Paper(a) => cli::paper::main(a),
+        Command::Cases(a) => cli::cases::main(a),
         Command::Bench(a) => cli::bench::main(a),
     }
 }

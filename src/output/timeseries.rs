@@ -6,7 +6,11 @@
 //! `kinetic_j`, `elastic_j`, `potential_j` [J] (gravity and uniform load), `total_j` [J] (their sum); then
 //! for each named probe `NAME_dx1_m`, `NAME_dx2_m`, `NAME_dx3_m` [m] (see [`super::probe`]); then for each
 //! support `k` (fixed nodes in node order) `support{k}_f1_n`, `support{k}_f2_n`, `support{k}_f3_n` [N],
-//! the force the wire applies to the support (tension plus the node's share of the loads and weight).
+//! the force the wire applies to the support (tension plus the node's share of the loads and weight; for
+//! a suspension support the force its string applies to the crossarm); then for each suspension support
+//! `k` `support{k}_swing_along_deg`, `support{k}_swing_across_deg` [deg] (the string's swing from plumb,
+//! along the line and across it) and `support{k}_arm_dx1_m`, `support{k}_arm_dx2_m` [m] (the crossarm
+//! pivot's displacement; zero for a rigid crossarm).
 
 use std::path::Path;
 
@@ -100,6 +104,7 @@ pub struct Timeseries {
     mid: ProbePoint,
     probes: Vec<ProbePoint>,
     forces: Vec<(usize, [f64; 3])>,
+    strings: bool,
 }
 
 impl Timeseries {
@@ -111,6 +116,7 @@ impl Timeseries {
         mid: ProbePoint,
         probes: Vec<ProbePoint>,
         supports: usize,
+        suspensions: &[usize],
     ) -> Result<Self, OutputError> {
         let mut header: Vec<String> = Sample::COLUMNS.map(String::from).into();
         for p in &probes {
@@ -119,8 +125,14 @@ impl Timeseries {
         for s in 0..supports {
             header.extend((1..=3).map(|k| format!("support{s}_f{k}_n")));
         }
+        for s in suspensions {
+            header.extend(
+                ["swing_along_deg", "swing_across_deg", "arm_dx1_m", "arm_dx2_m"].map(|c| format!("support{s}_{c}")),
+            );
+        }
         let file = RowFile::create(path, &header).map_err(OutputError::at(path))?;
-        Ok(Timeseries { file, clock: SampleClock::new(interval_s), mid, probes, forces: Vec::new() })
+        let strings = !suspensions.is_empty();
+        Ok(Timeseries { file, clock: SampleClock::new(interval_s), mid, probes, forces: Vec::new(), strings })
     }
 }
 
@@ -143,6 +155,16 @@ impl Observer for Timeseries {
         for (_, force) in &self.forces {
             for x in force {
                 f.number(*x);
+            }
+        }
+        if self.strings {
+            let w = level.solver.wire();
+            for ins in &w.insulators {
+                let [along, across] = ins.swing(w.position(ins.node));
+                let d = ins.pivot_displacement_m();
+                for x in [along.to_degrees(), across.to_degrees(), d[0], d[1]] {
+                    f.number(x);
+                }
             }
         }
         f.end_row();

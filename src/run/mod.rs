@@ -152,7 +152,11 @@ pub fn run_observed<'o>(
     let (mut series, mut snaps) = match &opts.out_dir {
         Some(d) => {
             std::fs::create_dir_all(d).map_err(OutputError::at(d))?;
-            let ts = Timeseries::create(&d.join("timeseries.csv"), plan.sample_interval_s, mid, named, supports.len())?;
+            // Suspension supports: their index among the supports, in the order of the wire's strings.
+            let strings: Vec<usize> =
+                (wire.insulators.iter()).map(|s| supports.iter().position(|p| p.0 == s.node).unwrap_or(0)).collect();
+            let path = d.join("timeseries.csv");
+            let ts = Timeseries::create(&path, plan.sample_interval_s, mid, named, supports.len(), &strings)?;
             (Some(ts), Some(Snapshots::create(&d.join("snapshots.csv"), plan.snapshot_times_s.clone())?))
         }
         None => (None, None),

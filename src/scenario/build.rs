@@ -168,6 +168,10 @@ fn initial_nodes(s: &Scenario, g: &GeometrySpec) -> ([Vec<f64>; 3], f64) {
     }
 }
 
+fn ground(g: &super::events::GroundSpec) -> Ground {
+    Ground { height_m: g.height_m, restitution: g.restitution, friction: g.friction }
+}
+
 fn gate(g: GateSpec) -> WindGate {
     match g {
         GateSpec::Always => WindGate::Always,
@@ -330,12 +334,24 @@ pub fn build(s: &Scenario) -> Result<Plan, Vec<Problem>> {
     probes.extend(s.output.probes.iter().map(|p| (p.name.clone(), ProbeAt::Line(p.at_fraction))));
     let mut solver = Explicit::new(wire, loads, params);
     let initial_equilibrium = match s.initial.shape {
-        ShapeSpec::Equilibrium => Some(equilibrium(&mut solver, s)?),
+        ShapeSpec::Equilibrium => {
+            // Ice present from the start (events at t = 0) is part of the state whose equilibrium is
+            // solved: applied to the wire here and taken off the timeline.
+            let (now, later): (Vec<Event>, Vec<Event>) =
+                events.into_iter().partition(|e| e.time_s == 0.0 && matches!(e.action, Action::Ice { .. }));
+            events = later;
+            for e in now {
+                if let Action::Ice { segments, delta_kg_per_m } = e.action
+                    && !solver.wire_mut().add_linear_density(segments, delta_kg_per_m)
+                {
+                    return Err(vec![missing("events (ice at t = 0)")]);
+                }
+            }
+            Some(equilibrium(&mut solver, s)?)
+        }
         _ => None,
     };
-    solver.set_ground(
-        s.ground.as_ref().filter(|g| g.active).map(|g| Ground { height_m: g.height_m, restitution: g.restitution }),
-    );
+    solver.set_ground(s.ground.as_ref().filter(|g| g.active).map(ground));
     Ok(Plan {
         name: s.name.clone().unwrap_or_else(|| "scenario".into()),
         solver,
@@ -349,7 +365,7 @@ pub fn build(s: &Scenario) -> Result<Plan, Vec<Problem>> {
         snapshot_times_s: snaps,
         tau_speed_m_per_s: s.output.tau_speed_m_per_s,
         events,
-        ground: s.ground.as_ref().map(|g| Ground { height_m: g.height_m, restitution: g.restitution }),
+        ground: s.ground.as_ref().map(ground),
         probes,
         peaks_from_s: s.output.peaks_from_s,
         initial_equilibrium,

@@ -31,6 +31,10 @@ pub struct GroundSpec {
     /// whether contact is on from the start; default true (an `action = "ground"` event switches it)
     #[serde(default = "yes")]
     pub active: bool,
+    /// Coulomb friction coefficient `mu_g` [-] of a node on the ground, in [0, 2]; default 0
+    /// (frictionless, the paper's section 4.4); about 0.5 for a conductor on grass or soil
+    #[serde(default)]
+    pub friction: f64,
 }
 
 fn yes() -> bool {

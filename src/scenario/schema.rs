@@ -208,7 +208,8 @@ pub enum ShapeSpec {
     /// a parabola in the vertical plane through the chord, sagging `sag_m` below the chord's midpoint
     Parabola,
     /// at rest on the static equilibrium of the loads at `t = 0` (weight, uniform load, the wind at its
-    /// initial scale), solved by Newton's method on the scheme's own discrete equations
+    /// initial scale, and the ice of events at `t = 0`, which then are part of the initial state rather
+    /// than events of the run), solved by Newton's method on the scheme's own discrete equations
     /// ([`crate::statics`]); the unstretched length is `geometry.unstretched_length_m`, or the length of
     /// the parabola of `sag_m` if given, or the chord
     Equilibrium,

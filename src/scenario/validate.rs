@@ -755,6 +755,7 @@ fn check_ground_and_events(
             );
         }
         c.within("ground.restitution", gr.restitution, 0.0, 1.0, "must be in [0, 1] (0.6 returns 36 % of the energy)");
+        c.within("ground.friction", gr.friction, 0.0, 2.0, "must be in [0, 2] (conductor on soil or grass: about 0.5)");
     }
     let hi = end.unwrap_or(f64::INFINITY);
     let cd = &s.conductor;

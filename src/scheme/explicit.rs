@@ -72,6 +72,9 @@ pub struct Ground {
     pub height_m: f64,
     /// coefficient of restitution on the normal velocity [-], in [0, 1]
     pub restitution: f64,
+    /// Coulomb friction coefficient `mu_g` [-]: the contact's tangential impulse is at most `mu_g` times
+    /// its normal impulse (0: frictionless)
+    pub friction: f64,
 }
 
 /// Numerical parameters of the step.
@@ -678,7 +681,11 @@ impl Explicit {
     }
 
     /// Ground contact after the drift: project onto the plane, reflect the downward velocity with the
-    /// restitution coefficient, and mark the node as no longer exposed to distributed loads.
+    /// restitution coefficient, and mark the node as no longer exposed to distributed loads. Coulomb
+    /// friction: the contact's normal impulse per unit mass is `(1 + e) |v_n|`; the horizontal velocity
+    /// loses at most `mu_g` times that, and no more than it has (friction stops a node, never reverses
+    /// it). Summed over the contacts, the friction impulse is at most `mu_g` times the normal impulse,
+    /// which is Coulomb's law for impulses.
     #[inline(never)]
     fn ground_contact(&mut self, g: Ground) {
         let w = &mut self.wire;
@@ -686,7 +693,16 @@ impl Explicit {
             if w.x[2][i] < g.height_m {
                 w.x[2][i] = g.height_m;
                 if w.v[2][i] < 0.0 {
+                    let normal = (1.0 + g.restitution) * -w.v[2][i];
                     w.v[2][i] *= -g.restitution;
+                    if g.friction > 0.0 {
+                        let vt = w.v[0][i].hypot(w.v[1][i]);
+                        if vt > 0.0 {
+                            let keep = (1.0 - g.friction * normal / vt).max(0.0);
+                            w.v[0][i] *= keep;
+                            w.v[1][i] *= keep;
+                        }
+                    }
                 }
                 w.exposed[i] = 0.0;
             }
@@ -915,7 +931,7 @@ mod tests {
         s.loads.uniform_load_n_per_m = [0.5, 0.0, -1.0];
         s.loads.wind_gate = WindGate::Downwind;
         s.nodal_force = Some([vec![0.1; 42], vec![-0.2; 42], vec![0.3; 42]]);
-        s.ground = Some(Ground { height_m: -0.05, restitution: 0.6 });
+        s.ground = Some(Ground { height_m: -0.05, restitution: 0.6, friction: 0.0 });
         s.wire.break_segment(20);
         cases.push(("all options".into(), s));
         cases

@@ -71,11 +71,12 @@ pub enum StaticError {
         /// iteration at which it happened [-]
         iteration: usize,
     },
-    /// A segment is broken: the static problem of a broken wire is out of scope.
-    #[error("segment {segment} is broken: static solve of a broken wire is not supported")]
+    /// A piece of the wire, cut off by broken segments, hangs from no support: it has no static
+    /// equilibrium (it falls). Pieces that hang from a support or a string are solved.
+    #[error("node {node} belongs to a piece of the wire that no support holds (broken segments cut it off)")]
     BrokenSegment {
-        /// the first broken segment
-        segment: usize,
+        /// a node of the detached piece
+        node: usize,
     },
     /// The downwind wind gate depends on the direction of motion, which a static state does not have.
     #[error("the downwind wind gate has no static meaning")]
@@ -180,12 +181,29 @@ pub fn default_tolerance_n(s: &Explicit) -> f64 {
     (1e-10 * f_max).max(32.0 * rounding_floor_n(s))
 }
 
+/// A free node of a piece (nodes joined by intact segments) with no fixed node and no insulator string.
+fn detached_node(s: &Explicit) -> Option<usize> {
+    let w = s.wire();
+    let held = |i: usize| w.free[i] <= 0.0 || w.insulators.iter().any(|ins| ins.node == i && ins.intact);
+    let mut start = 0;
+    for j in 0..=w.segments() {
+        // A piece ends at a broken segment or at the last node.
+        if j == w.segments() || w.intact[j] != 1.0 {
+            if !(start..=j).any(held) {
+                return Some(start);
+            }
+            start = j + 1;
+        }
+    }
+    None
+}
+
 fn check_supported(s: &Explicit) -> Result<(), StaticError> {
     if s.loads().wind.is_some() && s.loads().wind_gate == WindGate::Downwind {
         return Err(StaticError::DownwindGate);
     }
-    if let Some(j) = s.wire().intact.iter().position(|&v| v != 1.0) {
-        return Err(StaticError::BrokenSegment { segment: j });
+    if let Some(node) = detached_node(s) {
+        return Err(StaticError::BrokenSegment { node });
     }
     if s.ground().is_some() {
         return Err(StaticError::GroundContact);

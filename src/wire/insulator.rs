@@ -93,6 +93,8 @@ pub struct Insulator {
     pub mass_kg: f64,
     /// false once the string has failed: it then carries nothing
     pub intact: bool,
+    /// horizontal unit vector along the line at the support [-] (swing angles are measured in it)
+    pub along: [f64; 3],
     /// an elastic crossarm, or `None` for a rigid one
     pub crossarm: Option<Crossarm>,
 }
@@ -125,6 +127,16 @@ impl Insulator {
         }
         let e = (norm(sub(clamp, self.pivot_m)) / self.length_m - 1.0).max(0.0);
         0.5 * self.stiffness_n * self.length_m * e * e
+    }
+
+    /// Swing angles of the string from plumb [rad] at its own line direction [`Insulator::along`].
+    pub fn swing(&self, clamp: [f64; 3]) -> [f64; 2] {
+        self.swing_rad(clamp, self.along)
+    }
+
+    /// Displacement of the pivot from its rest position [m] (zero for a rigid crossarm).
+    pub fn pivot_displacement_m(&self) -> [f64; 3] {
+        self.crossarm.map_or([0.0; 3], |a| sub(self.pivot_m, a.rest_m))
     }
 
     /// Swing angles of the string from plumb [rad]: along the line (positive toward `+e_l`) and across
@@ -190,6 +202,7 @@ mod tests {
             stiffness_n: 5.0e7,
             mass_kg: 100.0,
             intact: true,
+            along: [0.0, 1.0, 0.0],
             crossarm: None,
         }
     }

@@ -300,6 +300,7 @@ pub fn build(section: &Section) -> Result<(Wire, Layout), SectionError> {
                     stiffness_n,
                     mass_kg,
                     intact: true,
+                    along: along[k],
                     crossarm: crossarm.map(|c| Crossarm {
                         rest_m: pivot_m,
                         longitudinal: along[k],

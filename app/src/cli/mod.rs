@@ -1,5 +1,6 @@
 //! Subcommands of the `ohl` binary, one file each; the work itself lives in the library.
 
 pub mod bench;
+pub mod cases;
 pub mod paper;
 pub mod run;

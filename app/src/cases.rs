@@ -1,0 +1,374 @@
+//! Line-section cases of `cases/`: real-line studies, each one scenario file, run into
+//! `figures/cases/<case>/` (the run's `timeseries.csv`, `snapshots.csv`, `summary.json`) with figures and
+//! a table drawn from the files the run wrote:
+//!
+//! - `<case>_loads.png/.svg`: the force of the conductor on every support along the line (`f2`) and
+//!   vertically (`f3`) [kN], the strings' swing along the line [deg] and each span's mid-span height
+//!   change [m], against time;
+//! - `<case>_shapes.png/.svg`: the section (height `x3` against the distance along the line `x2`) at the
+//!   snapshot times;
+//! - `<case>_table.csv` and the printed table: per support, the longitudinal load at the start, its peak
+//!   (largest magnitude) and time, the residual static load and the ratio of peak to residual; per span
+//!   the jump of its mid-span point (highest rise above its starting height).
+//!
+//! The residual static load is the static equilibrium after the event, solved by Newton
+//! ([`ohl::statics`]) from the run's final state: the design quantity of a broken-conductor or
+//! ice-shedding load case (the residual static load of ASCE 74). The ground is taken away for it (it
+//! carries part of a fallen piece's weight, not the longitudinal load), and a broken span's pieces are
+//! first re-hung below the clamps they hang from (10 degrees off vertical, unstretched): from a piece
+//! lying on the ground Newton would have to swing it through 90 degrees, outside its basin
+//! (`tests/statics.rs`, `a_broken_span_hangs_straight_down_from_its_supports`). Should the solve fail,
+//! the table uses the last sample and says so.
+
+use std::collections::HashMap;
+use std::path::{Path, PathBuf};
+
+use ohl::run::{RunOptions, run};
+use ohl::scenario;
+use ohl::scheme::Explicit;
+use ohl::statics::{self, StaticOptions};
+
+use crate::plot::{Chart, Series, Style, render};
+
+/// One support's loads.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SupportRow {
+    /// support index along the line
+    pub support: usize,
+    /// longitudinal load at t = 0 [N]
+    pub initial_n: f64,
+    /// largest-magnitude longitudinal load [N]
+    pub peak_n: f64,
+    /// when [s]
+    pub peak_time_s: f64,
+    /// longitudinal load at the end [N]
+    pub residual_n: f64,
+    /// vertical load at the end [N]
+    pub residual_vertical_n: f64,
+    /// largest-magnitude swing along the line [deg] (suspension supports)
+    pub peak_swing_deg: Option<f64>,
+}
+
+/// What a case produced.
+#[derive(Clone, Debug)]
+pub struct CaseOutcome {
+    /// case name
+    pub name: String,
+    /// how the run ended (`completed`, `settled`, `not_settled`)
+    pub status: String,
+    /// simulated time [s]
+    pub final_time_s: f64,
+    /// wall time of the time loop [s]
+    pub wall_s: f64,
+    /// node-steps per second of the time loop
+    pub node_steps_per_second: f64,
+    /// per support
+    pub supports: Vec<SupportRow>,
+    /// per span: jump of the mid-span point (highest rise above its start) [m] and when [s]
+    pub jumps: Vec<(f64, f64)>,
+    /// where the files are
+    pub dir: PathBuf,
+    /// how the residual loads were obtained
+    pub residual: String,
+}
+
+/// The residual static loads (force on each support [N], in support order) after the run: Newton from
+/// the final state, ground off, broken pieces re-hung (module doc).
+fn residual_loads(final_state: &Explicit) -> Result<Vec<[f64; 3]>, String> {
+    let mut s = final_state.clone();
+    s.set_ground(None);
+    rehang_broken_pieces(&mut s);
+    let opts = StaticOptions { max_iterations: 1000, ..StaticOptions::default() };
+    statics::solve(&mut s, &opts).map_err(|e| e.to_string())?;
+    s.evaluate_forces();
+    let mut f = Vec::new();
+    s.support_forces(&mut f);
+    Ok(f.into_iter().map(|(_, v)| v).collect())
+}
+
+/// Each piece cut by a broken segment is put on a line 10 degrees off the vertical below the node that
+/// holds it (a fixed node or a string's clamp), unstretched, on the side of its free end.
+fn rehang_broken_pieces(s: &mut Explicit) {
+    let w = s.wire();
+    let n = w.segments();
+    let held = |i: usize| w.free[i] <= 0.0 || w.insulators.iter().any(|ins| ins.node == i && ins.intact);
+    let mut moves: Vec<(usize, [f64; 3])> = Vec::new();
+    let tilt = 10f64.to_radians();
+    for j in (0..n).filter(|&j| w.intact[j] != 1.0) {
+        // The piece left of the break ends at node j; the one right of it starts at node j + 1.
+        for (end, step) in [(j, -1i64), (j + 1, 1i64)] {
+            let mut path = vec![end];
+            let mut i = end as i64;
+            while !held(i as usize) {
+                let next = i + step;
+                let seg = if step < 0 { next } else { i } as usize;
+                if next < 0 || next > n as i64 || w.intact[seg] != 1.0 {
+                    path.clear();
+                    break;
+                }
+                i = next;
+                path.push(i as usize);
+            }
+            let Some(&top) = path.last() else { continue };
+            let p = w.position(top);
+            let side = -step as f64; // the free end lies on this side of the holding node (along x2)
+            let mut d = 0.0;
+            for pair in path.windows(2).rev() {
+                let (below, above) = (pair[0], pair[1]);
+                d += w.rest_length[below.min(above)];
+                moves.push((below, [p[0], p[1] + side * d * tilt.sin(), p[2] - d * tilt.cos()]));
+            }
+        }
+    }
+    let w = s.wire_mut();
+    for (i, x) in moves {
+        for k in 0..3 {
+            w.x[k][i] = x[k];
+        }
+    }
+}
+
+/// A case failed.
+#[derive(Debug, thiserror::Error)]
+pub enum CaseError {
+    /// invalid scenario
+    #[error("{0}")]
+    Input(#[from] scenario::InputError),
+    /// the run failed
+    #[error("{0}")]
+    Run(#[from] Box<ohl::run::RunError>),
+    /// a file could not be read or written
+    #[error("{0}")]
+    Io(String),
+}
+
+/// The columns of a CSV file by name.
+fn read_columns(path: &Path) -> Result<HashMap<String, Vec<f64>>, CaseError> {
+    let io = |e: &dyn std::fmt::Display| CaseError::Io(format!("{}: {e}", path.display()));
+    let mut r = csv::Reader::from_path(path).map_err(|e| io(&e))?;
+    let names: Vec<String> = r.headers().map_err(|e| io(&e))?.iter().map(String::from).collect();
+    let mut cols: HashMap<String, Vec<f64>> = names.iter().map(|n| (n.clone(), Vec::new())).collect();
+    for rec in r.records() {
+        let rec = rec.map_err(|e| io(&e))?;
+        for (n, v) in names.iter().zip(rec.iter()) {
+            if let Some(c) = cols.get_mut(n) {
+                c.push(v.trim().parse().unwrap_or(f64::NAN));
+            }
+        }
+    }
+    Ok(cols)
+}
+
+/// Run the case file `path` into `<out>/<case>/` and draw its figures and table.
+pub fn run_case(path: &Path, out: &Path) -> Result<CaseOutcome, CaseError> {
+    let name = path.file_stem().and_then(|s| s.to_str()).unwrap_or("case").to_string();
+    let file = path.display().to_string();
+    let sc = scenario::load(path)?;
+    let plan = scenario::plan(&sc, &file)?;
+    for w in &plan.warnings {
+        eprintln!("warning: {file}: {w}");
+    }
+    let dir = out.join(&name);
+    let o = run(plan, &RunOptions { out_dir: Some(dir.clone()), record: false }).map_err(Box::new)?;
+    let residual = residual_loads(&o.solver);
+    let ts = read_columns(&dir.join("timeseries.csv"))?;
+    let t = ts.get("t_s").cloned().unwrap_or_default();
+    let col = |n: &str| ts.get(n).cloned().unwrap_or_default();
+    let n_sup = (0..).take_while(|k| ts.contains_key(&format!("support{k}_f2_n"))).count();
+    let n_span = (0..).take_while(|k| ts.contains_key(&format!("span{k}_mid_dx3_m"))).count();
+    let mut supports = Vec::new();
+    for k in 0..n_sup {
+        let f2 = col(&format!("support{k}_f2_n"));
+        let f3 = col(&format!("support{k}_f3_n"));
+        let i = (0..f2.len()).max_by(|&a, &b| f2[a].abs().total_cmp(&f2[b].abs())).unwrap_or(0);
+        let swing = ts.get(&format!("support{k}_swing_along_deg"));
+        supports.push(SupportRow {
+            support: k,
+            initial_n: f2.first().copied().unwrap_or(f64::NAN),
+            peak_n: f2.get(i).copied().unwrap_or(f64::NAN),
+            peak_time_s: t.get(i).copied().unwrap_or(f64::NAN),
+            residual_n: residual.as_ref().map_or(f2.last().copied().unwrap_or(f64::NAN), |r| r[k][1]),
+            residual_vertical_n: residual.as_ref().map_or(f3.last().copied().unwrap_or(f64::NAN), |r| r[k][2]),
+            peak_swing_deg: swing
+                .map(|s| s.iter().copied().fold(0.0, |m: f64, x| if x.abs() > m.abs() { x } else { m })),
+        });
+    }
+    let mut jumps = Vec::new();
+    for k in 0..n_span {
+        let z = col(&format!("span{k}_mid_dx3_m"));
+        let z0 = z.first().copied().unwrap_or(0.0);
+        let i = (0..z.len()).max_by(|&a, &b| z[a].total_cmp(&z[b])).unwrap_or(0);
+        jumps.push((z.get(i).map_or(f64::NAN, |v| v - z0), t.get(i).copied().unwrap_or(f64::NAN)));
+    }
+    draw(&name, &dir, &t, &ts, n_sup, n_span)?;
+    write_table(&dir.join(format!("{name}_table.csv")), &supports, &jumps)?;
+    let s = &o.summary;
+    Ok(CaseOutcome {
+        residual: match &residual {
+            Ok(_) => "static (Newton)".into(),
+            Err(e) => format!("last sample (static solve failed: {e})"),
+        },
+        name,
+        status: s.status.clone(),
+        final_time_s: s.final_time_s,
+        wall_s: s.wall_time_s,
+        node_steps_per_second: s.node_steps_per_second,
+        supports,
+        jumps,
+        dir,
+    })
+}
+
+fn draw(
+    name: &str,
+    dir: &Path,
+    t: &[f64],
+    ts: &HashMap<String, Vec<f64>>,
+    n_sup: usize,
+    n_span: usize,
+) -> Result<(), CaseError> {
+    let series = |col: String, label: String, k: usize, scale: f64| {
+        let y = ts.get(&col).cloned().unwrap_or_default();
+        Series::new(label, t.iter().zip(&y).map(|(&a, &b)| (a, b * scale)).collect(), Style::Line, k)
+    };
+    let mut charts = vec![
+        Chart {
+            title: "Longitudinal load on each support".into(),
+            x_label: "time t [s]".into(),
+            y_label: "force along the line f2 [kN]".into(),
+            series: (0..n_sup).map(|k| series(format!("support{k}_f2_n"), format!("support {k}"), k, 1e-3)).collect(),
+            ..Default::default()
+        },
+        Chart {
+            title: "Vertical load on each support".into(),
+            x_label: "time t [s]".into(),
+            y_label: "vertical force f3 [kN]".into(),
+            series: (0..n_sup).map(|k| series(format!("support{k}_f3_n"), format!("support {k}"), k, 1e-3)).collect(),
+            ..Default::default()
+        },
+    ];
+    let swings: Vec<Series> = (0..n_sup)
+        .filter(|k| ts.contains_key(&format!("support{k}_swing_along_deg")))
+        .map(|k| series(format!("support{k}_swing_along_deg"), format!("support {k}"), k, 1.0))
+        .collect();
+    if !swings.is_empty() {
+        charts.push(Chart {
+            title: "Insulator swing along the line".into(),
+            x_label: "time t [s]".into(),
+            y_label: "swing from plumb [deg]".into(),
+            series: swings,
+            ..Default::default()
+        });
+    }
+    charts.push(Chart {
+        title: "Mid-span height change of each span".into(),
+        x_label: "time t [s]".into(),
+        y_label: "mid-span x3 - chord midpoint [m]".into(),
+        series: (0..n_span).map(|k| series(format!("span{k}_mid_dx3_m"), format!("span {k}"), k, 1.0)).collect(),
+        ..Default::default()
+    });
+    let plot_err = |e: crate::plot::PlotError| CaseError::Io(e.to_string());
+    render(&charts, 2, (640, 420), &dir.join(format!("{name}_loads"))).map_err(plot_err)?;
+    // Shapes at the snapshot times.
+    let snaps = read_columns(&dir.join("snapshots.csv"))?;
+    let (st, x2, x3) = (snaps.get("t_s"), snaps.get("x2_m"), snaps.get("x3_m"));
+    if let (Some(st), Some(x2), Some(x3)) = (st, x2, x3) {
+        let mut times: Vec<f64> = st.clone();
+        times.dedup();
+        let shapes: Vec<Series> = times
+            .iter()
+            .enumerate()
+            .map(|(k, &tk)| {
+                let pts = (0..st.len()).filter(|&i| st[i] == tk).map(|i| (x2[i], x3[i])).collect();
+                Series::new(format!("t = {tk:.2} s"), pts, Style::Line, k)
+            })
+            .collect();
+        let chart = Chart {
+            title: "The section at the snapshot times".into(),
+            x_label: "distance along the line x2 [m]".into(),
+            y_label: "height x3 [m]".into(),
+            series: shapes,
+            ..Default::default()
+        };
+        render(&[chart], 1, (1200, 480), &dir.join(format!("{name}_shapes"))).map_err(plot_err)?;
+    }
+    Ok(())
+}
+
+fn write_table(path: &Path, supports: &[SupportRow], jumps: &[(f64, f64)]) -> Result<(), CaseError> {
+    let io = |e: &dyn std::fmt::Display| CaseError::Io(format!("{}: {e}", path.display()));
+    let mut w = csv::Writer::from_path(path).map_err(|e| io(&e))?;
+    w.write_record([
+        "item",
+        "initial_f2_n",
+        "peak_f2_n",
+        "peak_time_s",
+        "residual_f2_n",
+        "peak_over_residual",
+        "residual_f3_n",
+        "peak_swing_deg",
+        "jump_m",
+        "jump_time_s",
+    ])
+    .map_err(|e| io(&e))?;
+    for s in supports {
+        let ratio = s.peak_n / s.residual_n;
+        let swing = s.peak_swing_deg.map_or(String::new(), |v| format!("{v:.3}"));
+        w.write_record([
+            format!("support {}", s.support),
+            format!("{:.3}", s.initial_n),
+            format!("{:.3}", s.peak_n),
+            format!("{:.4}", s.peak_time_s),
+            format!("{:.3}", s.residual_n),
+            format!("{ratio:.4}"),
+            format!("{:.3}", s.residual_vertical_n),
+            swing,
+            String::new(),
+            String::new(),
+        ])
+        .map_err(|e| io(&e))?;
+    }
+    for (k, (j, tj)) in jumps.iter().enumerate() {
+        let mut rec = vec![format!("span {k}")];
+        rec.extend(std::iter::repeat_n(String::new(), 7));
+        rec.extend([format!("{j:.4}"), format!("{tj:.4}")]);
+        w.write_record(rec).map_err(|e| io(&e))?;
+    }
+    w.flush().map_err(|e| io(&e))
+}
+
+/// The printed table of a case.
+pub fn format_table(c: &CaseOutcome) -> String {
+    let mut s = String::new();
+    s.push_str(&format!(
+        "== {}: {} at t = {:.2} s, time loop {:.2} s ({:.3e} node-steps/s); files in {}\n   residual loads: {}\n",
+        c.name,
+        c.status,
+        c.final_time_s,
+        c.wall_s,
+        c.node_steps_per_second,
+        c.dir.display(),
+        c.residual
+    ));
+    s.push_str("| support | f2 at t=0 [kN] | peak f2 [kN] | at [s] | residual f2 [kN] | peak/residual | residual f3 [kN] | peak swing [deg] |\n");
+    s.push_str("|---|---|---|---|---|---|---|---|\n");
+    for r in &c.supports {
+        let swing = r.peak_swing_deg.map_or("-".into(), |v| format!("{v:.1}"));
+        s.push_str(&format!(
+            "| {} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} | {} |\n",
+            r.support,
+            r.initial_n / 1e3,
+            r.peak_n / 1e3,
+            r.peak_time_s,
+            r.residual_n / 1e3,
+            r.peak_n / r.residual_n,
+            r.residual_vertical_n / 1e3,
+            swing
+        ));
+    }
+    s.push_str("| span | mid-span jump [m] | at [s] |\n|---|---|---|\n");
+    for (k, (j, t)) in c.jumps.iter().enumerate() {
+        s.push_str(&format!("| {k} | {j:.3} | {t:.2} |\n"));
+    }
+    s
+}

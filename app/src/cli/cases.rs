@@ -1,0 +1,54 @@
+//! `ohl cases CASE|all`: run the line-section cases of `cases/` into `figures/cases/<case>/` with their
+//! load figures, shapes and peak-to-residual tables ([`ohl_app::cases`]).
+//!
+//! Exit codes: 0 when every case ran; 1 when a run failed or a file could not be written; 2 for an
+//! invalid case file or an unknown case.
+
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+use ohl_app::cases::{self, CaseError};
+
+/// Arguments of `ohl cases`.
+#[derive(clap::Args)]
+pub struct CasesArgs {
+    /// case name (a file `<cases>/<case>.toml`) or `all`
+    case: String,
+    /// directory of the case files
+    #[arg(long, default_value = "cases")]
+    cases: PathBuf,
+    /// directory for the results (one folder per case)
+    #[arg(long, default_value = "figures/cases")]
+    out: PathBuf,
+}
+
+/// Run the command.
+pub fn main(args: CasesArgs) -> ExitCode {
+    let paths = if args.case == "all" {
+        match ohl_app::paper::case_files(&args.cases) {
+            Ok(v) if !v.is_empty() => v,
+            _ => {
+                eprintln!("error: no case files (*.toml) in {}", args.cases.display());
+                return ExitCode::from(2);
+            }
+        }
+    } else {
+        let p = args.cases.join(format!("{}.toml", args.case));
+        if !p.exists() {
+            eprintln!("error: no case `{}` ({} does not exist)", args.case, p.display());
+            return ExitCode::from(2);
+        }
+        vec![p]
+    };
+    let mut code = 0u8;
+    for p in &paths {
+        match cases::run_case(p, &args.out) {
+            Ok(c) => println!("{}", cases::format_table(&c)),
+            Err(e) => {
+                eprintln!("error: {e}");
+                code = code.max(if matches!(e, CaseError::Input(_)) { 2 } else { 1 });
+            }
+        }
+    }
+    ExitCode::from(code)
+}
