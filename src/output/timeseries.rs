@@ -10,7 +10,9 @@
 //! a suspension support the force its string applies to the crossarm); then for each suspension support
 //! `k` `support{k}_swing_along_deg`, `support{k}_swing_across_deg` [deg] (the string's swing from plumb,
 //! along the line and across it) and `support{k}_arm_dx1_m`, `support{k}_arm_dx2_m` [m] (the crossarm
-//! pivot's displacement; zero for a rigid crossarm).
+//! pivot's displacement; zero for a rigid crossarm); then for each span `k` of a section
+//! `span{k}_max_tension_n` [N] (its largest segment tension) and, with a ground plane,
+//! `span{k}_clearance_m` [m] (its lowest node's height above the ground).
 
 use std::path::Path;
 
@@ -97,6 +99,19 @@ impl Sample {
     }
 }
 
+/// What the line has that gets columns of its own: supports, strings, spans.
+#[derive(Clone, Debug, Default)]
+pub struct LineColumns {
+    /// number of supports (fixed nodes and strings, in node order)
+    pub supports: usize,
+    /// each string's support index, in the order of `Wire::insulators`
+    pub strings: Vec<usize>,
+    /// a section's spans as (first node, last node); empty for one span
+    pub spans: Vec<(usize, usize)>,
+    /// ground height [m], for the spans' clearance
+    pub ground_m: Option<f64>,
+}
+
 /// Writes `timeseries.csv` (rows reach the file a page at a time, always whole: [`super::rows`]).
 pub struct Timeseries {
     file: RowFile,
@@ -105,6 +120,8 @@ pub struct Timeseries {
     probes: Vec<ProbePoint>,
     forces: Vec<(usize, [f64; 3])>,
     strings: bool,
+    spans: Vec<(usize, usize)>,
+    ground_m: Option<f64>,
 }
 
 impl Timeseries {
@@ -115,9 +132,9 @@ impl Timeseries {
         interval_s: f64,
         mid: ProbePoint,
         probes: Vec<ProbePoint>,
-        supports: usize,
-        suspensions: &[usize],
+        line: LineColumns,
     ) -> Result<Self, OutputError> {
+        let LineColumns { supports, strings: suspensions, spans, ground_m } = line;
         let mut header: Vec<String> = Sample::COLUMNS.map(String::from).into();
         for p in &probes {
             header.extend((1..=3).map(|k| format!("{}_dx{k}_m", p.name)));
@@ -125,14 +142,29 @@ impl Timeseries {
         for s in 0..supports {
             header.extend((1..=3).map(|k| format!("support{s}_f{k}_n")));
         }
-        for s in suspensions {
+        for s in &suspensions {
             header.extend(
                 ["swing_along_deg", "swing_across_deg", "arm_dx1_m", "arm_dx2_m"].map(|c| format!("support{s}_{c}")),
             );
         }
+        for k in 0..spans.len() {
+            header.push(format!("span{k}_max_tension_n"));
+            if ground_m.is_some() {
+                header.push(format!("span{k}_clearance_m"));
+            }
+        }
         let file = RowFile::create(path, &header).map_err(OutputError::at(path))?;
         let strings = !suspensions.is_empty();
-        Ok(Timeseries { file, clock: SampleClock::new(interval_s), mid, probes, forces: Vec::new(), strings })
+        Ok(Timeseries {
+            file,
+            clock: SampleClock::new(interval_s),
+            mid,
+            probes,
+            forces: Vec::new(),
+            strings,
+            spans,
+            ground_m,
+        })
     }
 }
 
@@ -165,6 +197,14 @@ impl Observer for Timeseries {
                 for x in [along.to_degrees(), across.to_degrees(), d[0], d[1]] {
                     f.number(x);
                 }
+            }
+        }
+        for &(first, last) in &self.spans {
+            let s = level.solver;
+            let w = s.wire();
+            f.number((first..last).map(|j| s.segment_tension(j)).fold(0.0, f64::max));
+            if let Some(h) = self.ground_m {
+                f.number(w.x[2][first..=last].iter().copied().fold(f64::INFINITY, f64::min) - h);
             }
         }
         f.end_row();

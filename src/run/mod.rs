@@ -20,6 +20,7 @@ use crate::events::EventState;
 use crate::output::clock::LANDING;
 use crate::output::rows::write_atomically;
 use crate::output::summary::{EquilibriumReport, EventRecord, InstabilityReport, ProbeSummary, SupportSummary};
+use crate::output::timeseries::LineColumns;
 use crate::output::{Peaks, ProbePoint, Recorder, Sample, Snapshots, Summary, Timeseries};
 use crate::scenario::Plan;
 use crate::scenario::build::Stop;
@@ -156,7 +157,13 @@ pub fn run_observed<'o>(
             let strings: Vec<usize> =
                 (wire.insulators.iter()).map(|s| supports.iter().position(|p| p.0 == s.node).unwrap_or(0)).collect();
             let path = d.join("timeseries.csv");
-            let ts = Timeseries::create(&path, plan.sample_interval_s, mid, named, supports.len(), &strings)?;
+            let line = LineColumns {
+                supports: supports.len(),
+                strings,
+                spans: plan.spans.clone(),
+                ground_m: plan.ground.map(|g| g.height_m),
+            };
+            let ts = Timeseries::create(&path, plan.sample_interval_s, mid, named, line)?;
             (Some(ts), Some(Snapshots::create(&d.join("snapshots.csv"), plan.snapshot_times_s.clone())?))
         }
         None => (None, None),

@@ -78,6 +78,8 @@ pub struct Plan {
     pub initial_equilibrium: Option<StaticReport>,
     /// valid but doubtful values ([`super::warnings`]), in the order of the file
     pub warnings: Vec<super::Warning>,
+    /// the spans of a `[section]` as (first node, last node); empty for a `[geometry]` scenario
+    pub spans: Vec<(usize, usize)>,
 }
 
 impl Plan {
@@ -370,6 +372,7 @@ pub fn build(s: &Scenario) -> Result<Plan, Vec<Problem>> {
         peaks_from_s: s.output.peaks_from_s,
         initial_equilibrium,
         warnings: super::warnings::warnings(s),
+        spans: if d.section.is_some() { spans.iter().map(|&(f, n)| (f, f + n)).collect() } else { Vec::new() },
     })
 }
 

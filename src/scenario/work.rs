@@ -111,8 +111,9 @@ impl WorkEstimate {
         let (heat_substeps, _) = heat_substeps(plan, n, dt, horizon);
         let supports = plan.solver.wire().supports().len() as f64;
         let strings = plan.solver.wire().insulators.len() as f64;
+        let span_columns = plan.spans.len() as f64 * if plan.ground.is_some() { 2.0 } else { 1.0 };
         let timeseries_columns =
-            TIMESERIES_FIXED_COLUMNS + 3.0 * plan.probes.len() as f64 + 3.0 * supports + 4.0 * strings;
+            TIMESERIES_FIXED_COLUMNS + 3.0 * plan.probes.len() as f64 + 3.0 * supports + 4.0 * strings + span_columns;
         let grid = (horizon / plan.sample_interval_s).floor() + 1.0;
         let timeseries_rows = nan_is_inf(grid).min(steps + 1.0);
         let snapshots = plan.snapshot_times_s.iter().filter(|&&t| t <= horizon).count() as f64;
