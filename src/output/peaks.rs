@@ -1,6 +1,7 @@
 //! Peaks, tracked at every time level (never only at samples), each with its time: the largest segment
 //! tension, the largest-magnitude displacement of every probe per component, and per support the largest
-//! force magnitude and the largest-magnitude component. Two views are kept:
+//! force magnitude and the largest-magnitude component, and for a suspension support the string's
+//! largest swing along and across the line. Two views are kept:
 //!
 //! - the run's peaks from `from_s` on ([`Peaks::new`]): by default the time of the first event, so that a
 //!   run that settles and then breaks, ices or gusts reports the peaks of what the events do and not the
@@ -35,6 +36,17 @@ pub struct PeakForce {
     pub tau: f64,
 }
 
+/// The extreme of an angle: the value of largest magnitude, with its sign.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
+pub struct PeakAngle {
+    /// the angle of largest magnitude, with its sign [deg]
+    pub value_deg: f64,
+    /// when it occurred [s]
+    pub time_s: f64,
+    /// when it occurred, dimensionless `tau = t U / l` [-]
+    pub tau: f64,
+}
+
 /// Peaks of the force the wire applies to one support.
 #[derive(Clone, Debug, Default, PartialEq, Serialize)]
 pub struct SupportPeaks {
@@ -42,6 +54,9 @@ pub struct SupportPeaks {
     pub magnitude: PeakForce,
     /// largest-magnitude value of each component `F1, F2, F3` [N]
     pub components: [PeakForce; 3],
+    /// a suspension support's string: largest swing from plumb along and across the line [deg]
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub swing: Option<[PeakAngle; 2]>,
 }
 
 /// Everything tracked over one stretch of time.
@@ -93,7 +108,15 @@ impl PeakSet {
         }
     }
 
-    fn update(&mut self, t: f64, tau: f64, tension: f64, disp: &[[f64; 3]], forces: &[(usize, [f64; 3])]) {
+    fn update(
+        &mut self,
+        t: f64,
+        tau: f64,
+        tension: f64,
+        disp: &[[f64; 3]],
+        forces: &[(usize, [f64; 3])],
+        swings: &[Option<[f64; 2]>],
+    ) {
         largest(&mut self.max_tension, tension, t, tau);
         for (p, d) in self.probes.iter_mut().zip(disp) {
             for k in 0..3 {
@@ -104,6 +127,16 @@ impl PeakSet {
             largest(&mut s.magnitude, (f[0] * f[0] + f[1] * f[1] + f[2] * f[2]).sqrt(), t, tau);
             for k in 0..3 {
                 signed_force(&mut s.components[k], f[k], t, tau);
+            }
+        }
+        for (s, sw) in self.supports.iter_mut().zip(swings) {
+            if let Some(a) = sw {
+                let peaks = s.swing.get_or_insert_with(Default::default);
+                for k in 0..2 {
+                    if a[k].abs() > peaks[k].value_deg.abs() {
+                        peaks[k] = PeakAngle { value_deg: a[k], time_s: t, tau };
+                    }
+                }
             }
         }
     }
@@ -120,6 +153,7 @@ pub struct Peaks {
     pub phases: Vec<Phase>,
     disp: Vec<[f64; 3]>,
     forces: Vec<(usize, [f64; 3])>,
+    swings: Vec<Option<[f64; 2]>>,
 }
 
 impl Peaks {
@@ -135,6 +169,7 @@ impl Peaks {
             supports,
             disp: vec![[0.0; 3]; n],
             forces: Vec::new(),
+            swings: Vec::new(),
         }
     }
 
@@ -152,11 +187,17 @@ impl Observer for Peaks {
             *d = p.displacement(s.wire());
         }
         s.support_forces(&mut self.forces);
+        let w = s.wire();
+        self.swings.clear();
+        for &(node, _) in &self.forces {
+            let string = w.insulators.iter().find(|i| i.node == node);
+            self.swings.push(string.map(|i| i.swing(w.position(node)).map(f64::to_degrees)));
+        }
         let tension = s.max_tension_n();
         let phase = self.phases.last_mut().expect("the first phase exists from the start");
-        phase.peaks.update(t, tau, tension, &self.disp, &self.forces);
+        phase.peaks.update(t, tau, tension, &self.disp, &self.forces, &self.swings);
         if t >= self.from_s - super::clock::LANDING * s.params().dt_s {
-            self.run.update(t, tau, tension, &self.disp, &self.forces);
+            self.run.update(t, tau, tension, &self.disp, &self.forces, &self.swings);
         }
         Ok(Control::Continue)
     }

@@ -139,13 +139,17 @@ impl Insulator {
         self.crossarm.map_or([0.0; 3], |a| sub(self.pivot_m, a.rest_m))
     }
 
-    /// Swing angles of the string from plumb [rad]: along the line (positive toward `+e_l`) and across
-    /// it (positive toward `+e_t`), for the line's horizontal direction `along` (unit).
+    /// Swing angles of the string [rad], for the line's horizontal direction `along` (unit): along the
+    /// line, the angle from plumb within the line's vertical plane, `atan2(d . e_l, -d3)` (positive toward
+    /// `+e_l`, beyond 90 degrees when the clamp rises above the pivot); across it, the angle out of that
+    /// plane, `asin(d . e_t / |d|)` (positive toward `+e_t`). For a string in the plane the second is 0
+    /// at any swing (an `atan2` over `-d3` would jump to 180 degrees there).
     pub fn swing_rad(&self, clamp: [f64; 3], along: [f64; 3]) -> [f64; 2] {
         let d = sub(clamp, self.pivot_m);
         let across = [-along[1], along[0], 0.0];
-        let down = -d[2];
-        [dot(d, along).atan2(down), dot(d, across).atan2(down)]
+        let len = norm(d);
+        let out = if len > 0.0 { (dot(d, across) / len).clamp(-1.0, 1.0).asin() } else { 0.0 };
+        [dot(d, along).atan2(-d[2]), out]
     }
 
     /// Derivative of [`Insulator::force_on_clamp`] with respect to the clamp position [N/m] (row-major
@@ -253,6 +257,14 @@ mod tests {
         let c = [0.0, 3.5 * 0.1f64.sin(), 10.0 - 3.5 * 0.1f64.cos()];
         let [along, across] = s.swing_rad(c, [0.0, 1.0, 0.0]);
         assert!((along - 0.1).abs() < 1e-12 && across.abs() < 1e-12);
+        // Swung beyond horizontal in the line's plane: along > 90 degrees, across still 0.
+        let up = [0.0, 3.5 * 2.0f64.sin(), 10.0 - 3.5 * 2.0f64.cos()];
+        let [along, across] = s.swing_rad(up, [0.0, 1.0, 0.0]);
+        assert!((along - 2.0).abs() < 1e-12 && across == 0.0, "{along} {across}");
+        // Out of the plane toward e_t = e3 x e2 = -e1: x1 = -L sin(0.2) gives +0.2 across.
+        let side = [-3.5 * 0.2f64.sin(), 0.0, 10.0 - 3.5 * 0.2f64.cos()];
+        let [_, across] = s.swing_rad(side, [0.0, 1.0, 0.0]);
+        assert!((across - 0.2).abs() < 1e-12, "{across}");
         // Drake on 4 m segments (EA = 2.9e7 N) with a 100 kg string: well above the conductor's 8.5e-4 s.
         let dt = clamp_stable_step_s(100.0 + 6.5, 5.0e7 / 3.5, 2.9e7 / 4.0, 2.9e7 / 4.0);
         assert!(dt > 3.0e-3 && dt < 3.2e-3, "{dt}");
