@@ -79,6 +79,10 @@ pub struct ConductorSpec {
     /// and `EA` from `E`
     #[serde(default)]
     pub diameter_m: Option<f64>,
+    /// rated tensile strength (RTS) [N], in (0, 1e7] (ACSR Drake: about 140 kN): the reference of a
+    /// section strung at a fraction of it (`section.tension_fraction_of_rts`)
+    #[serde(default)]
+    pub rated_tensile_strength_n: Option<f64>,
     /// linear density `rho0` [kg/m] per unit unstretched length (wire plus ice, if iced), in [1e-3, 1e3]
     /// (bare conductors are 0.1 to 5 kg/m, heavily iced ones up to about 30 kg/m)
     pub linear_density_kg_per_m: f64,
@@ -130,6 +134,10 @@ pub struct SectionSpec {
     /// conductor's reference temperature; in (0, 1e7] (a per-span value or unstretched length overrides it)
     #[serde(default)]
     pub horizontal_tension_n: Option<f64>,
+    /// the same tension as a fraction of `conductor.rated_tensile_strength_n` [-], in (0, 0.6] (lines are
+    /// strung at 0.1 to 0.25 of RTS); give this or `horizontal_tension_n`, not both
+    #[serde(default)]
+    pub tension_fraction_of_rts: Option<f64>,
     /// segments per span `N_k` [-] unless a span states its own, in [2, 1e6]
     #[serde(default)]
     pub segments_per_span: Option<usize>,
@@ -196,6 +204,13 @@ pub struct SpanSpec {
     /// unstretched length `S_k` [m] instead of a stringing tension, in [chord / 2, 2 chord]
     #[serde(default)]
     pub unstretched_length_m: Option<f64>,
+    /// this span's conductor linear density `rho0` [kg/m], in [1e-3, 1e3]; default `[conductor]`'s (a
+    /// section joining conductors of different kinds)
+    #[serde(default)]
+    pub linear_density_kg_per_m: Option<f64>,
+    /// this span's axial stiffness `EA` [N], in [1, 1e10]; default `[conductor]`'s
+    #[serde(default)]
+    pub axial_stiffness_n: Option<f64>,
 }
 
 /// Initial shape kind.

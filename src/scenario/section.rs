@@ -25,12 +25,14 @@ pub(crate) struct SectionGrid {
     pub layout: Layout,
     /// distance between the two dead-ends [m] (the length scale of `tau`)
     pub chord_m: f64,
-    /// shortest unstretched segment [m]
-    pub ds_min_m: f64,
     /// smallest stable step of the clamps [s] (infinite without suspension supports)
     pub clamp_step_s: f64,
     /// lowest initial node height [m]
     pub lowest_m: f64,
+    /// largest longitudinal wave speed `sqrt(EA / rho0)` over the spans [m/s]
+    pub wave_speed_max_m_per_s: f64,
+    /// smallest crossing time of a segment by that wave, `min_j l0_j / c_j` [s] (the step at Courant 1)
+    pub crossing_time_s: f64,
 }
 
 /// Check `[section]` and build it; `None` if anything is invalid (each problem recorded in `c`).
@@ -147,7 +149,59 @@ pub(crate) fn check(
             }
         };
         total += n;
-        let stringing = match (sp.unstretched_length_m, sp.horizontal_tension_n.or(sec.horizontal_tension_n)) {
+        let rts = s.conductor.rated_tensile_strength_n;
+        let section_h = match (sec.horizontal_tension_n, sec.tension_fraction_of_rts) {
+            (Some(h), Some(fr)) => {
+                ok = false;
+                c.fail(
+                    "section.tension_fraction_of_rts",
+                    number(fr),
+                    "give it or section.horizontal_tension_n, not both",
+                );
+                Some(h)
+            }
+            (Some(h), None) => Some(h),
+            (None, Some(fr)) => {
+                ok &= c.within("section.tension_fraction_of_rts", fr, f64::MIN_POSITIVE, 0.6, "must be in (0, 0.6]");
+                match rts {
+                    Some(r) => {
+                        ok &= c.within(
+                            "conductor.rated_tensile_strength_n",
+                            r,
+                            f64::MIN_POSITIVE,
+                            1.0e7,
+                            "must be in (0, 1e7] N (ACSR Drake: about 140 kN)",
+                        );
+                        Some(fr * r)
+                    }
+                    None => {
+                        ok = false;
+                        c.fail(
+                            "conductor.rated_tensile_strength_n",
+                            "(missing)",
+                            "required with section.tension_fraction_of_rts",
+                        );
+                        None
+                    }
+                }
+            }
+            (None, None) => None,
+        };
+        let rho = match sp.linear_density_kg_per_m {
+            Some(r) => {
+                ok &= c.within(&f("linear_density_kg_per_m"), r, 1.0e-3, 1.0e3, "must be in [1e-3, 1e3] kg/m");
+                Some(r)
+            }
+            None => None,
+        };
+        let span_ea = match sp.axial_stiffness_n {
+            Some(e) => {
+                ok &= c.within(&f("axial_stiffness_n"), e, 1.0, 1.0e10, "must be in [1, 1e10] N");
+                Some(e)
+            }
+            None => None,
+        };
+        let stringing = match (sp.unstretched_length_m, sp.horizontal_tension_n.or(section_h)) {
             (Some(l), Some(_)) if sp.horizontal_tension_n.is_some() => {
                 ok = false;
                 c.fail(
@@ -196,8 +250,10 @@ pub(crate) fn check(
                 None
             }
         };
-        if let (Some(stringing), Some((conductor, rho))) = (stringing, conductor) {
-            spans.push(Span { conductor, linear_density_kg_per_m: rho, segments: n, stringing });
+        if let (Some(stringing), Some((conductor, bare))) = (stringing, conductor) {
+            let conductor =
+                Conductor { axial_stiffness_n: span_ea.unwrap_or(conductor.axial_stiffness_n), ..conductor };
+            spans.push(Span { conductor, linear_density_kg_per_m: rho.unwrap_or(bare), segments: n, stringing });
         }
     }
     if total > MAX_SEGMENTS {
@@ -233,7 +289,6 @@ pub(crate) fn check(
     let a = wire.position(0);
     let b = wire.position(wire.segments());
     let chord_m = (0..3).map(|i| (b[i] - a[i]).powi(2)).sum::<f64>().sqrt();
-    let ds_min_m = wire.rest_length.iter().copied().fold(f64::INFINITY, f64::min);
     let mut clamp_step_s = f64::INFINITY;
     for ins in &wire.insulators {
         let i = ins.node;
@@ -242,5 +297,48 @@ pub(crate) fn check(
         clamp_step_s = clamp_step_s.min(dt);
     }
     let lowest_m = wire.x[2].iter().copied().fold(f64::INFINITY, f64::min);
-    Some(SectionGrid { wire, layout, chord_m, ds_min_m, clamp_step_s, lowest_m })
+    let (mut wave_speed_max_m_per_s, mut crossing_time_s) = (0.0_f64, f64::INFINITY);
+    for j in 0..wire.segments() {
+        let rho = wire.segment_mass[j] / wire.reference_length[j];
+        let c = (wire.axial_stiffness_n[j] / rho).sqrt();
+        wave_speed_max_m_per_s = wave_speed_max_m_per_s.max(c);
+        crossing_time_s = crossing_time_s.min(wire.rest_length[j] / c);
+    }
+    Some(SectionGrid { wire, layout, chord_m, clamp_step_s, lowest_m, wave_speed_max_m_per_s, crossing_time_s })
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::scenario::{self, Scenario};
+
+    const SECTION: &str = "[conductor]\naxial_stiffness_n = 2.9e7\nlinear_density_kg_per_m = 1.628\n\
+        rated_tensile_strength_n = 140000.0\n[section]\ntension_fraction_of_rts = 0.2\nsegments_per_span = 10\n\
+        supports = [\n{ kind = \"dead_end\", point_m = [0.0, 0.0, 30.0] },\n\
+        { kind = \"suspension\", pivot_m = [0.0, 400.0, 33.5], insulator_length_m = 3.5, insulator_mass_kg = 100.0, \
+        insulator_stiffness_n = 5.0e7 },\n{ kind = \"dead_end\", point_m = [0.0, 700.0, 30.0] },\n]\n\
+        [[section.spans]]\n[[section.spans]]\nsegments = 20\nlinear_density_kg_per_m = 0.5\naxial_stiffness_n = 1.0e7\n\
+        [duration]\nend_time_s = 1.0\n";
+
+    #[test]
+    fn spans_take_their_own_conductor_and_the_fastest_wave_sets_the_step() {
+        let sc: Scenario = toml::from_str(SECTION).unwrap();
+        let plan = scenario::plan(&sc, "section").unwrap();
+        let w = plan.solver.wire();
+        assert_eq!(w.segments(), 30);
+        assert_eq!((w.axial_stiffness_n[0], w.axial_stiffness_n[29]), (2.9e7, 1.0e7));
+        assert!((w.segment_mass[29] / w.reference_length[29] - 0.5).abs() < 1e-15);
+        // Span 0: c = sqrt(2.9e7 / 1.628) = 4220.6 m/s on 40 m segments (9.5 ms); span 1: c = 4472.1 m/s
+        // on 15 m segments (3.4 ms): the second governs, dt = C l0 / c with the default C = 0.9.
+        let l0 = w.rest_length[29];
+        let expect = 0.9 * l0 / (1.0e7f64 / 0.5).sqrt();
+        assert!(
+            (plan.solver.params().dt_s - expect).abs() < 1e-15 * expect,
+            "{} vs {expect}",
+            plan.solver.params().dt_s
+        );
+        // Both spans strung at 20 % of 140 kN.
+        let sc2: Scenario = toml::from_str(&SECTION.replace("tension_fraction_of_rts = 0.2", "")).unwrap();
+        let e = scenario::plan(&sc2, "section").unwrap_err().to_string();
+        assert!(e.contains("section.spans[0].horizontal_tension_n` = (missing)"), "{e}");
+    }
 }

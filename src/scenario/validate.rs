@@ -454,8 +454,11 @@ pub(crate) fn check(s: &Scenario) -> (Vec<Problem>, Derived) {
         && len.is_finite()
         && len > 0.0
     {
-        let cw = courant::wave_speed(ea, cd.linear_density_kg_per_m);
-        let ds = section_grid.as_ref().map_or(len / n_total as f64, |sg| sg.ds_min_m);
+        // A section's spans may differ: its fastest wave and shortest crossing time govern.
+        let cw = section_grid
+            .as_ref()
+            .map_or(courant::wave_speed(ea, cd.linear_density_kg_per_m), |sg| sg.wave_speed_max_m_per_s);
+        let ds = section_grid.as_ref().map_or(len / n_total as f64, |sg| sg.crossing_time_s * cw);
         derived.wave_speed_m_per_s = Some(cw);
         if courant_ok && eta_ok {
             let z = courant::friction_number(ea, nm.eta_n_s, cw, ds);
@@ -551,11 +554,13 @@ pub(crate) fn check(s: &Scenario) -> (Vec<Problem>, Derived) {
         Some(sg) => (0..sg.layout.first_node.len() - 1)
             .map(|k| {
                 let seg = sg.layout.segments(k);
-                SpanGrid { first: seg.start, n: seg.len(), ds: Some(sg.wire.rest_length[seg.start]) }
+                let rho = sg.wire.segment_mass[seg.start] / sg.wire.reference_length[seg.start];
+                SpanGrid { first: seg.start, n: seg.len(), ds: Some(sg.wire.rest_length[seg.start]), rho }
             })
             .collect(),
         None if n_ok && rho_ok => {
-            vec![SpanGrid { first: 0, n: n_total, ds: derived.length_m.map(|l| l / n_total as f64) }]
+            let rho = cd.linear_density_kg_per_m;
+            vec![SpanGrid { first: 0, n: n_total, ds: derived.length_m.map(|l| l / n_total as f64), rho }]
         }
         None => Vec::new(),
     };
@@ -639,6 +644,8 @@ struct SpanGrid {
     first: usize,
     n: usize,
     ds: Option<f64>,
+    /// the span's bare linear density [kg/m]
+    rho: f64,
 }
 
 /// The span an event addresses (`span`, default 0) and its grid, `None` (with a problem recorded) for
@@ -924,7 +931,7 @@ fn check_ground_and_events(
     // span: an ice event lies in one span; a progressive one counts as applied at its start).
     for (sg, ice) in spans.iter().zip(&ice) {
         let Some(ds) = sg.ds else { continue };
-        let rho = cd.linear_density_kg_per_m;
+        let rho = sg.rho;
         for (k, seg, least) in ice_shortfalls(sg.n, ds, rho, ice) {
             let d = match s.events[k] {
                 EventSpec::Ice { linear_density_kg_per_m, .. } => linear_density_kg_per_m,
