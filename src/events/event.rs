@@ -67,6 +67,17 @@ pub enum Action {
         /// the string
         insulator: usize,
     },
+    /// The conductor slips out of the clamp of string `insulator`: the string holds it no more and its
+    /// mass leaves the clamp node.
+    ClampSlip {
+        /// the string
+        insulator: usize,
+    },
+    /// Node `node` (a dead-end) is released: it becomes free.
+    Release {
+        /// the node
+        node: usize,
+    },
     /// Switch contact with the scenario's ground plane on or off.
     Ground {
         /// true: contact on

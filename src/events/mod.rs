@@ -98,6 +98,22 @@ impl EventState {
                 }
                 None => format!("failure of insulator string {insulator} ignored: no such string"),
             },
+            Action::ClampSlip { insulator } => {
+                let w = solver.wire_mut();
+                match w.insulators.get(insulator).copied() {
+                    Some(ins) if ins.intact => {
+                        w.insulators[insulator].intact = false;
+                        w.point_mass_kg[ins.node] -= ins.mass_kg;
+                        w.update_node_masses();
+                        format!("conductor slipped out of the clamp at node {}", ins.node)
+                    }
+                    _ => format!("clamp slip of string {insulator} ignored: no such string holds the conductor"),
+                }
+            }
+            Action::Release { node } => {
+                solver.wire_mut().set_constraint(node, crate::wire::Constraint::Free);
+                format!("conductor released at node {node}")
+            }
             Action::Wind { scale, gate } => {
                 self.gust = None;
                 solver.loads_mut().wind_scale = scale;

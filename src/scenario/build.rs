@@ -208,11 +208,16 @@ fn events_of(e: &EventSpec, n: usize, spans: &[(usize, usize)], wire: &Wire, sup
         EventSpec::Ice { linear_density_kg_per_m, range, .. } => {
             Action::Ice { segments: shift(segment_range(range, n_span)), delta_kg_per_m: linear_density_kg_per_m }
         }
-        EventSpec::InsulatorFailure { support, .. } => {
+        EventSpec::InsulatorFailure { support, .. } | EventSpec::ClampSlip { support, .. } => {
             let node = support_node.get(support).copied().unwrap_or(usize::MAX);
             let insulator = wire.insulators.iter().position(|i| i.node == node).unwrap_or(usize::MAX);
-            Action::InsulatorFailure { insulator }
+            if matches!(e, EventSpec::ClampSlip { .. }) {
+                Action::ClampSlip { insulator }
+            } else {
+                Action::InsulatorFailure { insulator }
+            }
         }
+        EventSpec::Release { support, .. } => Action::Release { node: support_node.get(support).copied().unwrap_or(0) },
         EventSpec::Wind { scale, gate: g, .. } => Action::Wind { scale, gate: gate(g) },
         EventSpec::Gust { period_s, amplitude, gate: g, .. } => Action::Gust { period_s, amplitude, gate: gate(g) },
         EventSpec::Temperature { temperature_k, range, ramp_s, .. } => {

@@ -105,11 +105,27 @@ pub enum EventSpec {
         #[serde(default)]
         front_speed_m_per_s: Option<f64>,
     },
-    /// A suspension insulator string fails: from then on it carries nothing (its mass stays at the clamp).
+    /// A suspension insulator string fails: from then on it carries nothing (its mass stays at the clamp:
+    /// the string falls with the conductor).
     InsulatorFailure {
         /// event time [s]
         time_s: f64,
         /// the support (0-based, in `section.supports`), which must be a suspension
+        support: usize,
+    },
+    /// The conductor slips out of a suspension clamp: the string stays on the tower (its mass leaves the
+    /// conductor) and holds the conductor no more.
+    ClampSlip {
+        /// event time [s]
+        time_s: f64,
+        /// the support (0-based, in `section.supports`), which must be a suspension
+        support: usize,
+    },
+    /// The conductor is released from a dead-end: its end becomes free.
+    Release {
+        /// event time [s]
+        time_s: f64,
+        /// the support (0-based, in `section.supports`), which must be a dead-end
         support: usize,
     },
     /// Set the wind to a constant multiple of the scenario's wind load (0 = off, 1 = on); ends a gust.
@@ -202,6 +218,8 @@ impl EventSpec {
             | EventSpec::HeatConduction { time_s, .. }
             | EventSpec::HeatConductionOff { time_s }
             | EventSpec::InsulatorFailure { time_s, .. }
+            | EventSpec::ClampSlip { time_s, .. }
+            | EventSpec::Release { time_s, .. }
             | EventSpec::Ground { time_s, .. } => time_s,
         }
     }
@@ -233,6 +251,8 @@ impl EventSpec {
             EventSpec::HeatConduction { .. } => "heat_conduction",
             EventSpec::HeatConductionOff { .. } => "heat_conduction_off",
             EventSpec::InsulatorFailure { .. } => "insulator_failure",
+            EventSpec::ClampSlip { .. } => "clamp_slip",
+            EventSpec::Release { .. } => "release",
             EventSpec::Ground { .. } => "ground",
         }
     }

@@ -790,6 +790,7 @@ fn check_ground_and_events(
     let mut ice: Vec<Vec<IceEvent>> = vec![Vec::new(); spans.len()];
     let mut broken: Vec<(usize, usize)> = Vec::new(); // (segment, event index)
     let mut failed: Vec<(usize, usize)> = Vec::new(); // (support, event index)
+    let mut released: Vec<(usize, usize)> = Vec::new(); // (support, event index)
     for k in order {
         let e = &s.events[k];
         let f = |name: &str| format!("events[{k}].{name}");
@@ -852,14 +853,28 @@ fn check_ground_and_events(
                     ice[sp].push((k, seg, d));
                 }
             }
-            EventSpec::InsulatorFailure { support, .. } => {
+            EventSpec::InsulatorFailure { support, .. } | EventSpec::ClampSlip { support, .. } => {
                 let suspension = s.section.as_ref().and_then(|sec| sec.supports.get(support));
                 if !matches!(suspension, Some(SupportSpec::Suspension { .. })) {
                     c.fail(&f("support"), support, "must be the index of a suspension support of [section]");
                 } else if let Some(&(_, first)) = failed.iter().find(|x| x.0 == support) {
-                    c.fail(&f("support"), support, &format!("its string already failed at events[{first}]"));
+                    c.fail(
+                        &f("support"),
+                        support,
+                        &format!("its string already lets the conductor go at events[{first}]"),
+                    );
                 } else {
                     failed.push((support, k));
+                }
+            }
+            EventSpec::Release { support, .. } => {
+                let dead_end = s.section.as_ref().and_then(|sec| sec.supports.get(support));
+                if !matches!(dead_end, Some(SupportSpec::DeadEnd { .. })) {
+                    c.fail(&f("support"), support, "must be the index of a dead-end support of [section]");
+                } else if let Some(&(_, first)) = released.iter().find(|x| x.0 == support) {
+                    c.fail(&f("support"), support, &format!("already released at events[{first}]"));
+                } else {
+                    released.push((support, k));
                 }
             }
             EventSpec::Wind { scale, .. } => {

@@ -227,6 +227,9 @@ pub struct Explicit {
     /// force of each suspension insulator string on its clamp node `(node, F)` [N], in the order of
     /// `Wire::insulators`, from the last segment pass
     point_force: Vec<(usize, [f64; 3])>,
+    /// the supports' nodes at construction (fixed nodes and strings' clamps, in node order): the list
+    /// [`Explicit::support_forces`] reports, fixed for the run (a released dead-end reports zero)
+    supports: Vec<usize>,
     /// run the passes compiled for AVX2 (detected at construction; see [`Explicit::step`])
     avx2: bool,
 }
@@ -236,6 +239,7 @@ impl Explicit {
     pub fn new(wire: Wire, loads: Loads, params: StepParams) -> Self {
         let pad = wire.segments() + 2;
         let z = || [vec![0.0; pad], vec![0.0; pad], vec![0.0; pad]];
+        let supports = wire.supports().into_iter().map(|(i, _)| i).collect();
         Explicit {
             wire,
             loads,
@@ -251,6 +255,7 @@ impl Explicit {
             fs: z(),
             es: z(),
             point_force: Vec::new(),
+            supports,
             avx2: avx2_available(),
         }
     }
@@ -401,22 +406,29 @@ impl Explicit {
         self.max_tension_n
     }
 
-    /// The force the wire applies to each fixed node (support) [N], `(node, [f1, f2, f3])`, at the current
-    /// level: the tension of the adjacent segments, their distributed loads' shares and the node's lumped
-    /// weight, i.e. minus the reaction the support provides. At a static equilibrium their sum is the total
-    /// external load on the line (weight, wind, uniform load). Requires [`Explicit::evaluate_forces`] at
-    /// this level (panics otherwise: internal misuse). Writes into `out` (cleared first).
+    /// The force the wire applies to each support [N], `(node, [f1, f2, f3])`, at the current level, for
+    /// the supports of the wire at construction in node order: at a fixed node the tension of the
+    /// adjacent segments, their distributed loads' shares and the node's lumped weight (minus the reaction
+    /// the support provides); at a suspension string's clamp the string's pull on its crossarm; zero at a
+    /// node released since (the list never changes during a run, so output columns stay aligned). At a
+    /// static equilibrium their sum is the total external load on the line (weight, wind, uniform load).
+    /// Requires [`Explicit::evaluate_forces`] at this level (panics otherwise: internal misuse). Writes
+    /// into `out` (cleared first).
     pub fn support_forces(&self, out: &mut Vec<(usize, [f64; 3])>) {
         assert!(self.fresh, "support_forces needs evaluate_forces at this time level");
         out.clear();
-        for &i in self.wire.fixed_nodes() {
-            out.push((i, [0, 1, 2].map(|k| self.node_force(k, i))));
+        for &i in &self.supports {
+            let f = if self.wire.free[i] <= 0.0 {
+                [0, 1, 2].map(|k| self.node_force(k, i))
+            } else if let Some(&(_, p)) = self.point_force.iter().find(|(n, _)| *n == i) {
+                // A suspension support: the string's pull on its crossarm, minus its force on the clamp.
+                [-p[0], -p[1], -p[2]]
+            } else {
+                // Released: no longer held.
+                [0.0; 3]
+            };
+            out.push((i, f));
         }
-        // Suspension supports: the force the string applies to its crossarm, minus its force on the clamp.
-        for &(i, f) in &self.point_force {
-            out.push((i, [-f[0], -f[1], -f[2]]));
-        }
-        out.sort_by_key(|&(i, _)| i);
     }
 
     /// Length of the last step `dt_{n-1/2}` [s].

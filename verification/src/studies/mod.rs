@@ -4,6 +4,7 @@ pub mod energy_budget;
 pub mod exact_references;
 pub mod implicit_reference;
 pub mod manufactured;
+pub mod section_statics;
 pub mod sensitivity;
 pub mod static_convergence;
 
@@ -39,6 +40,7 @@ pub const STUDIES: &[Study] = &[
         about: "Newton statics and Newmark dynamics on faer vs the explicit scheme",
         run: implicit_reference::run,
     },
+    Study { name: "section_statics", about: "section on strings vs exact statics; limits", run: section_statics::run },
     Study {
         name: "energy",
         about: "discrete energy budget of the weight release, term by term",
