@@ -4,7 +4,9 @@ pub mod energy_budget;
 pub mod exact_references;
 pub mod implicit_reference;
 pub mod manufactured;
+pub mod section_energy;
 pub mod section_statics;
+pub mod section_transients;
 pub mod sensitivity;
 pub mod static_convergence;
 
@@ -50,6 +52,16 @@ pub const STUDIES: &[Study] = &[
         name: "sensitivity",
         about: "sweeps over mu, smoothing, Courant number; stability limits",
         run: sensitivity::run,
+    },
+    Study {
+        name: "section_energy",
+        about: "energy budget of a section with strings, crossarms, ground and a break, term by term",
+        run: section_energy::run,
+    },
+    Study {
+        name: "section_transients",
+        about: "grid and time-step convergence of broken-conductor peaks and ice-shedding jumps",
+        run: section_transients::run,
     },
 ];
 
