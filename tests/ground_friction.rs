@@ -13,8 +13,8 @@ use ohl::wire::{Conductor, Constraint, Wire};
 
 const G: f64 = 9.81;
 
-fn slide(mu: f64, restitution: f64, v0: f64, dt: f64) -> f64 {
-    let n = 4;
+/// A free wire of `n` unit segments lying on the ground `x3 = 0` along `x2`, sliding at `v0` [m/s].
+fn lying_wire(n: usize, v0: f64, dt: f64, ground: Ground) -> Explicit {
     let x = [vec![0.0; n + 1], (0..=n).map(|i| i as f64).collect(), vec![0.0; n + 1]];
     let conductor = Conductor { axial_stiffness_n: 1.0e5, internal_friction_n_s: 0.0, law: LawKind::TensionOnly };
     let mut w = Wire::new(conductor, x, vec![1.0; n], 1.0);
@@ -30,7 +30,12 @@ fn slide(mu: f64, restitution: f64, v0: f64, dt: f64) -> f64 {
     };
     let params = StepParams { dt_s: dt, smoothing: 0.0, mass_damping_per_s: 0.0, max_speed_m_per_s: 1e3 };
     let mut s = Explicit::new(w, loads, params);
-    s.set_ground(Some(Ground { height_m: 0.0, restitution, friction: mu }));
+    s.set_ground(Some(ground));
+    s
+}
+
+fn slide(mu: f64, restitution: f64, v0: f64, dt: f64) -> f64 {
+    let mut s = lying_wire(4, v0, dt, Ground { height_m: 0.0, restitution, friction: mu });
     let x0 = s.wire().x[1][0];
     for _ in 0..((2.0 * v0 / (mu * G)) / dt) as usize {
         s.step(dt).unwrap();
@@ -53,26 +58,7 @@ fn a_sliding_wire_stops_after_the_coulomb_distance() {
 #[test]
 fn without_friction_it_slides_on() {
     // The frictionless ground of the paper (4.4): the velocity along the ground is kept.
-    let n = 2;
-    let x = [vec![0.0; n + 1], (0..=n).map(|i| i as f64).collect(), vec![0.0; n + 1]];
-    let conductor = Conductor { axial_stiffness_n: 1.0e5, internal_friction_n_s: 0.0, law: LawKind::TensionOnly };
-    let mut w = Wire::new(conductor, x, vec![1.0; n], 1.0);
-    w.set_constraint(0, Constraint::Free);
-    w.set_constraint(n, Constraint::Free);
-    w.v[1].fill(2.0);
-    let loads = Loads {
-        gravity_m_per_s2: G,
-        uniform_load_n_per_m: [0.0; 3],
-        wind: None,
-        wind_scale: 1.0,
-        wind_gate: WindGate::Always,
-    };
-    let mut s = Explicit::new(
-        w,
-        loads,
-        StepParams { dt_s: 1e-3, smoothing: 0.0, mass_damping_per_s: 0.0, max_speed_m_per_s: 1e3 },
-    );
-    s.set_ground(Some(Ground { height_m: 0.0, restitution: 0.6, friction: 0.0 }));
+    let mut s = lying_wire(2, 2.0, 1e-3, Ground { height_m: 0.0, restitution: 0.6, friction: 0.0 });
     for _ in 0..1000 {
         s.step(1e-3).unwrap();
     }
