@@ -91,7 +91,7 @@ fn residual_loads(final_state: &Explicit) -> Result<Vec<[f64; 3]>, String> {
 fn rehang_broken_pieces(s: &mut Explicit) {
     let w = s.wire();
     let n = w.segments();
-    let held = |i: usize| w.free[i] <= 0.0 || w.insulators.iter().any(|ins| ins.node == i && ins.intact);
+    let held = |i: usize| w.is_held(i);
     let mut moves: Vec<(usize, [f64; 3])> = Vec::new();
     let tilt = 10f64.to_radians();
     for j in (0..n).filter(|&j| w.intact[j] != 1.0) {

@@ -184,7 +184,7 @@ pub fn default_tolerance_n(s: &Explicit) -> f64 {
 /// A free node of a piece (nodes joined by intact segments) with no fixed node and no insulator string.
 fn detached_node(s: &Explicit) -> Option<usize> {
     let w = s.wire();
-    let held = |i: usize| w.free[i] <= 0.0 || w.insulators.iter().any(|ins| ins.node == i && ins.intact);
+    let held = |i: usize| w.is_held(i);
     let mut start = 0;
     for j in 0..=w.segments() {
         // A piece ends at a broken segment or at the last node.

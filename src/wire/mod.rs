@@ -168,6 +168,11 @@ impl Wire {
         out
     }
 
+    /// Whether node `i` is held in place: fixed, or hanging from an intact suspension string.
+    pub fn is_held(&self, i: usize) -> bool {
+        self.free[i] <= 0.0 || self.insulators.iter().any(|s| s.node == i && s.intact)
+    }
+
     /// How node `i` is held.
     pub fn constraint(&self, i: usize) -> Constraint {
         self.constraint[i]
