@@ -13,7 +13,8 @@
 //! - [`scenario`]: scenario files, their validation and the one conversion into a run plan;
 //! - [`events`]: the event timeline of a run;
 //! - [`run`]: the run loop and its observers; [`output`]: the observers that write or record a run;
-//! - [`exact`]: exact static solutions the scheme is verified against.
+//! - [`exact`]: exact static solutions the scheme is verified against;
+//! - [`thermal`]: conductor temperature from current and weather (IEEE 738, CIGRE TB 601).
 //!
 //! The library holds the model only: the command line `ohl`, the paper cases, the plots, the benchmark
 //! and the progress bar are the applications of the `ohl-app` crate (`app/`).
@@ -26,4 +27,5 @@ pub mod run;
 pub mod scenario;
 pub mod scheme;
 pub mod statics;
+pub mod thermal;
 pub mod wire;
