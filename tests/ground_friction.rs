@@ -35,7 +35,7 @@ fn lying_wire(n: usize, v0: f64, dt: f64, ground: Ground) -> Explicit {
 }
 
 fn slide(mu: f64, restitution: f64, v0: f64, dt: f64) -> f64 {
-    let mut s = lying_wire(4, v0, dt, Ground { height_m: 0.0, restitution, friction: mu });
+    let mut s = lying_wire(4, v0, dt, Ground::level(0.0, restitution, mu));
     let x0 = s.wire().x[1][0];
     for _ in 0..((2.0 * v0 / (mu * G)) / dt) as usize {
         s.step(dt).unwrap();
@@ -58,7 +58,7 @@ fn a_sliding_wire_stops_after_the_coulomb_distance() {
 #[test]
 fn without_friction_it_slides_on() {
     // The frictionless ground of the paper (4.4): the velocity along the ground is kept.
-    let mut s = lying_wire(2, 2.0, 1e-3, Ground { height_m: 0.0, restitution: 0.6, friction: 0.0 });
+    let mut s = lying_wire(2, 2.0, 1e-3, Ground::level(0.0, 0.6, 0.0));
     for _ in 0..1000 {
         s.step(1e-3).unwrap();
     }

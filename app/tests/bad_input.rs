@@ -47,6 +47,18 @@ const CASES: &[(&str, &[&str])] = &[
     ("section_span_count", &["field `section.spans` = 3 tables", "2 for 3 supports"]),
     ("section_supports_out_of_order", &["field `section.supports[1]`", "advance along x2"]),
     ("section_without_stringing", &["field `section.spans[0].horizontal_tension_n` = (missing)"]),
+    ("section_sag_and_length", &["field `section.spans[0].sag_m` = (given)", "not unstretched_length_m and sag_m"]),
+    ("section_sag_too_large", &["field `section.spans[0].sag_m` = 250", "chord / 2"]),
+    (
+        "section_stringing_temperature_not_at_rest",
+        &["field `section.stringing_temperature_k` = 288.15", "initial.shape = \"equilibrium\""],
+    ),
+    (
+        "ground_profile_not_increasing",
+        &["field `ground.profile_m` = [[0.0, 0.0], [500.0, 5.0], [400.0, 6.0]]", "strictly increasing"],
+    ),
+    ("ground_profile_above_line", &["field `ground.profile_m`", "initial node", "below the ground there"]),
+    ("ground_height_and_profile", &["field `ground.profile_m`", "not both"]),
     ("mass_damping_too_large", &["field `numerics.mass_damping_per_s` = 1000000", "zeta dt < 1"]),
     (
         "ground_above_support",

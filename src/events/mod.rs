@@ -49,7 +49,7 @@ impl EventState {
         EventState {
             events: plan.events.clone(),
             next: 0,
-            ground: plan.ground,
+            ground: plan.ground.clone(),
             gust: None,
             ramps: Vec::new(),
             conduction: None,
@@ -158,7 +158,7 @@ impl EventState {
                 "heat conduction off".into()
             }
             Action::Ground { on } => {
-                solver.set_ground(if on { self.ground } else { None });
+                solver.set_ground(if on { self.ground.clone() } else { None });
                 format!("ground contact {}", if on { "on" } else { "off" })
             }
         }

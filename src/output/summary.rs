@@ -3,7 +3,7 @@
 
 use serde::Serialize;
 
-pub use super::peaks::{Peak, PeakForce, Phase, SupportPeaks};
+pub use super::peaks::{LeastLength, Peak, PeakForce, Phase, SpanPeaks, SupportPeaks};
 
 /// Details of an instability, as written to the summary.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -27,6 +27,22 @@ pub struct SupportSummary {
     pub final_force_n: [f64; 3],
     /// its peaks from `peaks_from_s` on, every time level
     pub peaks: SupportPeaks,
+}
+
+/// One span of a section.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct SpanSummary {
+    /// span index (0 first)
+    pub span: usize,
+    /// its first and last node
+    pub nodes: [usize; 2],
+    /// its largest segment tension at the end [N]
+    pub final_max_tension_n: f64,
+    /// its least vertical clearance above the ground at the end [m] (with a ground)
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub final_least_clearance_m: Option<f64>,
+    /// its peaks from `peaks_from_s` on, every time level
+    pub peaks: SpanPeaks,
 }
 
 /// One probe (a Lagrangian point; the first is mid-span).
@@ -115,6 +131,8 @@ pub struct Summary {
     pub supports: Vec<SupportSummary>,
     /// the probes (mid-span first)
     pub probes: Vec<ProbeSummary>,
+    /// the spans of a section (empty for one span)
+    pub spans: Vec<SpanSummary>,
     /// the phases between events, each with its own peaks (every time level)
     pub phases: Vec<Phase>,
     /// the events applied

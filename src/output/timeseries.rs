@@ -11,8 +11,8 @@
 //! `k` `support{k}_swing_along_deg`, `support{k}_swing_across_deg` [deg] (the string's swing from plumb,
 //! along the line and across it) and `support{k}_arm_dx1_m`, `support{k}_arm_dx2_m` [m] (the crossarm
 //! pivot's displacement; zero for a rigid crossarm); then for each span `k` of a section
-//! `span{k}_max_tension_n` [N] (its largest segment tension) and, with a ground plane,
-//! `span{k}_clearance_m` [m] (its lowest node's height above the ground).
+//! `span{k}_max_tension_n` [N] (its largest segment tension) and, with a ground,
+//! `span{k}_clearance_m` [m] (its least vertical clearance `min (x3 - h(x2))` over its nodes).
 
 use std::path::Path;
 
@@ -22,6 +22,7 @@ use super::clock::{LANDING, SampleClock};
 use super::probe::ProbePoint;
 use super::rows::RowFile;
 use crate::run::{Control, Ending, Level, Observer, OutputError};
+use crate::scheme::Ground;
 
 /// One row of the time series (its fixed columns).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
@@ -108,8 +109,8 @@ pub struct LineColumns {
     pub strings: Vec<usize>,
     /// a section's spans as (first node, last node); empty for one span
     pub spans: Vec<(usize, usize)>,
-    /// ground height [m], for the spans' clearance
-    pub ground_m: Option<f64>,
+    /// the ground, for the spans' clearance
+    pub ground: Option<Ground>,
 }
 
 /// Writes `timeseries.csv` (rows reach the file a page at a time, always whole: [`super::rows`]).
@@ -121,7 +122,7 @@ pub struct Timeseries {
     forces: Vec<(usize, [f64; 3])>,
     strings: bool,
     spans: Vec<(usize, usize)>,
-    ground_m: Option<f64>,
+    ground: Option<Ground>,
 }
 
 impl Timeseries {
@@ -134,7 +135,7 @@ impl Timeseries {
         probes: Vec<ProbePoint>,
         line: LineColumns,
     ) -> Result<Self, OutputError> {
-        let LineColumns { supports, strings: suspensions, spans, ground_m } = line;
+        let LineColumns { supports, strings: suspensions, spans, ground } = line;
         let mut header: Vec<String> = Sample::COLUMNS.map(String::from).into();
         for p in &probes {
             header.extend((1..=3).map(|k| format!("{}_dx{k}_m", p.name)));
@@ -149,7 +150,7 @@ impl Timeseries {
         }
         for k in 0..spans.len() {
             header.push(format!("span{k}_max_tension_n"));
-            if ground_m.is_some() {
+            if ground.is_some() {
                 header.push(format!("span{k}_clearance_m"));
             }
         }
@@ -163,7 +164,7 @@ impl Timeseries {
             forces: Vec::new(),
             strings,
             spans,
-            ground_m,
+            ground,
         })
     }
 }
@@ -202,9 +203,9 @@ impl Observer for Timeseries {
         for &(first, last) in &self.spans {
             let s = level.solver;
             let w = s.wire();
-            f.number((first..last).map(|j| s.segment_tension(j)).fold(0.0, f64::max));
-            if let Some(h) = self.ground_m {
-                f.number(w.x[2][first..=last].iter().copied().fold(f64::INFINITY, f64::min) - h);
+            f.number(s.max_tension_in(first..last));
+            if let Some(g) = &self.ground {
+                f.number(g.least_clearance_m(&w.x, first..=last));
             }
         }
         f.end_row();

@@ -19,7 +19,9 @@ use std::time::Instant;
 use crate::events::EventState;
 use crate::output::clock::LANDING;
 use crate::output::rows::write_atomically;
-use crate::output::summary::{EquilibriumReport, EventRecord, InstabilityReport, ProbeSummary, SupportSummary};
+use crate::output::summary::{
+    EquilibriumReport, EventRecord, InstabilityReport, ProbeSummary, SpanSummary, SupportSummary,
+};
 use crate::output::timeseries::LineColumns;
 use crate::output::{Peaks, ProbePoint, Recorder, Sample, Snapshots, Summary, Timeseries};
 use crate::scenario::Plan;
@@ -143,7 +145,7 @@ pub fn run_observed<'o>(
     let all_probes: Vec<ProbePoint> = std::iter::once(mid.clone()).chain(named.iter().cloned()).collect();
     let supports: Vec<(usize, [f64; 3])> = wire.supports();
     let from_s = plan.peaks_from_s.unwrap_or_else(|| plan.events.first().map_or(0.0, |e| e.time_s));
-    let mut peaks = Peaks::new(from_s, all_probes.clone(), supports.len());
+    let mut peaks = Peaks::new(from_s, all_probes.clone(), supports.len(), plan.spans.clone(), plan.ground.clone());
     let mut settle = match plan.stop {
         Stop::Settled { fraction, window_s, .. } => Some(Settle::new(fraction, window_s)),
         Stop::EndTime(_) => None,
@@ -161,7 +163,7 @@ pub fn run_observed<'o>(
                 supports: supports.len(),
                 strings,
                 spans: plan.spans.clone(),
-                ground_m: plan.ground.map(|g| g.height_m),
+                ground: plan.ground.clone(),
             };
             let ts = Timeseries::create(&path, plan.sample_interval_s, mid, named, line)?;
             (Some(ts), Some(Snapshots::create(&d.join("snapshots.csv"), plan.snapshot_times_s.clone())?))
@@ -235,6 +237,22 @@ pub fn run_observed<'o>(
                 at_fraction: p.at_fraction,
                 final_displacement_m: p.displacement(solver.wire()),
                 peak_displacement_m: *peak,
+            })
+            .collect(),
+        spans: plan
+            .spans
+            .iter()
+            .zip(&run_peaks.spans)
+            .enumerate()
+            .map(|(k, (&(first, last), p))| SpanSummary {
+                span: k,
+                nodes: [first, last],
+                final_max_tension_n: solver.max_tension_in(first..last),
+                final_least_clearance_m: plan
+                    .ground
+                    .as_ref()
+                    .map(|g| g.least_clearance_m(&solver.wire().x, first..=last)),
+                peaks: p.clone(),
             })
             .collect(),
         phases: peaks.phases.clone(),

@@ -3,7 +3,7 @@
 //! initial shape with equally spaced nodes (or the static equilibrium), the loads, the events in their
 //! domain form ([`crate::events::Event`]) and the outputs asked for.
 
-use super::events::{EventSpec, GateSpec, HeatBoundarySpec, break_segment, node_range, segment_range};
+use super::events::{EventSpec, GateSpec, GroundSpec, HeatBoundarySpec, break_segment, node_range, segment_range};
 use super::schema::{GeometrySpec, Scenario, ShapeSpec, TensionLawSpec, WindLawSpec};
 use super::validate::Problem;
 use crate::events::{Action, Event};
@@ -168,10 +168,6 @@ fn initial_nodes(s: &Scenario, g: &GeometrySpec) -> ([Vec<f64>; 3], f64) {
             (x, chord)
         }
     }
-}
-
-fn ground(g: &super::events::GroundSpec) -> Ground {
-    Ground { height_m: g.height_m, restitution: g.restitution, friction: g.friction }
 }
 
 fn gate(g: GateSpec) -> WindGate {
@@ -358,7 +354,7 @@ pub fn build(s: &Scenario) -> Result<Plan, Vec<Problem>> {
         }
         _ => None,
     };
-    solver.set_ground(s.ground.as_ref().filter(|g| g.active).map(ground));
+    solver.set_ground(s.ground.as_ref().filter(|g| g.active).map(GroundSpec::ground));
     Ok(Plan {
         name: s.name.clone().unwrap_or_else(|| "scenario".into()),
         solver,
@@ -372,7 +368,7 @@ pub fn build(s: &Scenario) -> Result<Plan, Vec<Problem>> {
         snapshot_times_s: snaps,
         tau_speed_m_per_s: s.output.tau_speed_m_per_s,
         events,
-        ground: s.ground.as_ref().map(ground),
+        ground: s.ground.as_ref().map(GroundSpec::ground),
         probes,
         peaks_from_s: s.output.peaks_from_s,
         initial_equilibrium,
@@ -390,11 +386,14 @@ fn equilibrium(solver: &mut Explicit, s: &Scenario) -> Result<StaticReport, Vec<
     let report = statics::solve(solver, &StaticOptions::default())
         .map_err(|e| fail(format!("the static equilibrium of the loads at t = 0 was not found: {e}")))?;
     if let Some(g) = s.ground.as_ref().filter(|g| g.active) {
-        let low = solver.wire().x[2].iter().copied().fold(f64::INFINITY, f64::min);
-        if low < g.height_m {
+        let w = solver.wire();
+        let (g, n) = (g.ground(), w.segments());
+        if let Some(i) = (0..=n).find(|&i| g.clearance_m(w.position(i)) < 0.0) {
             return Err(fail(format!(
-                "the equilibrium reaches x3 = {low:.6} m, below the ground plane ground.height_m = {} m",
-                g.height_m
+                "the equilibrium reaches x3 = {:.6} m at node {i} (x2 = {:.3} m), below the ground there ({} m)",
+                w.x[2][i],
+                w.x[1][i],
+                g.height_at(w.x[1][i])
             )));
         }
     }

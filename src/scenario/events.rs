@@ -19,12 +19,20 @@
 
 use serde::Deserialize;
 
-/// A ground plane `x3 = height_m` (section 4.4).
+/// The ground (section 4.4): a level plane `x3 = height_m`, or a terrain profile `profile_m` along the
+/// line's horizontal coordinate `x2` (give one of the two).
 #[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct GroundSpec {
-    /// height of the ground plane `x3` [m]; must lie below both supports and below the initial parabola
-    pub height_m: f64,
+    /// height of a level ground plane `x3` [m]; must lie below every support and below the initial shape
+    #[serde(default)]
+    pub height_m: Option<f64>,
+    /// terrain profile: points `[x2, x3]` [m] along the line's horizontal coordinate, `x2` strictly
+    /// increasing, at least two, slopes at most 2 (63 degrees); the ground is linear between them and
+    /// level beyond the first and last; every support and the initial shape must lie above it. A height
+    /// per span is a profile with a point under each support.
+    #[serde(default)]
+    pub profile_m: Vec<[f64; 2]>,
     /// coefficient of restitution on the normal velocity [-], in [0, 1]; the paper's 36 % of the
     /// vertical impact energy returned on rebound is 0.6 (0.6^2 = 0.36, section 4.4)
     pub restitution: f64,
@@ -35,6 +43,19 @@ pub struct GroundSpec {
     /// (frictionless, the paper's section 4.4); about 0.5 for a conductor on grass or soil
     #[serde(default)]
     pub friction: f64,
+}
+
+impl GroundSpec {
+    /// The library's ground (a profile, or the level plane; the plane at 0 m where neither is given,
+    /// which validation refuses).
+    pub fn ground(&self) -> crate::scheme::Ground {
+        crate::scheme::Ground {
+            height_m: self.height_m.unwrap_or(0.0),
+            restitution: self.restitution,
+            friction: self.friction,
+            profile_m: self.profile_m.clone(),
+        }
+    }
 }
 
 fn yes() -> bool {

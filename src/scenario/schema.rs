@@ -131,13 +131,19 @@ pub struct GeometrySpec {
 #[serde(deny_unknown_fields)]
 pub struct SectionSpec {
     /// horizontal tension `H0` [N] at which every span is strung, with the strings hanging plumb, at the
-    /// conductor's reference temperature; in (0, 1e7] (a per-span value or unstretched length overrides it)
+    /// stringing temperature; in (0, 1e7] (a per-span tension, sag or unstretched length overrides it)
     #[serde(default)]
     pub horizontal_tension_n: Option<f64>,
     /// the same tension as a fraction of `conductor.rated_tensile_strength_n` [-], in (0, 0.6] (lines are
     /// strung at 0.1 to 0.25 of RTS); give this or `horizontal_tension_n`, not both
     #[serde(default)]
     pub tension_fraction_of_rts: Option<f64>,
+    /// temperature `T0` [K] at which the stringing (tension, sag or unstretched length) is stated, in
+    /// [223.15, 373.15]; default `conductor.reference_temperature_k`, the line's initial temperature. Where
+    /// they differ, every span's stress-free length is rescaled by `1 / (1 + alpha_t (T0 - T_ref))` and the
+    /// run must start from `initial.shape = "equilibrium"` (the strung shape is not at rest at `T_ref`)
+    #[serde(default)]
+    pub stringing_temperature_k: Option<f64>,
     /// segments per span `N_k` [-] unless a span states its own, in [2, 1e6]
     #[serde(default)]
     pub segments_per_span: Option<usize>,
@@ -204,6 +210,10 @@ pub struct SpanSpec {
     /// unstretched length `S_k` [m] instead of a stringing tension, in [chord / 2, 2 chord]
     #[serde(default)]
     pub unstretched_length_m: Option<f64>,
+    /// sag `f_k` [m] instead of a stringing tension: the vertical distance from the chord between the
+    /// plumb clamps down to the conductor at the span's horizontal middle, in (0, chord / 2]
+    #[serde(default)]
+    pub sag_m: Option<f64>,
     /// this span's conductor linear density `rho0` [kg/m], in [1e-3, 1e3]; default `[conductor]`'s (a
     /// section joining conductors of different kinds)
     #[serde(default)]

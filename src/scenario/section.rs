@@ -1,7 +1,7 @@
 //! The `[section]` of a scenario: checked field by field like the rest of the file, then built into the
 //! line of [`crate::wire::section`] (spans strung by tension with the strings plumb). What the rest of
 //! validation needs from it (segment counts and lengths per span, the time-step limit of the clamps, the
-//! lowest initial point) is derived here once.
+//! is derived here once.
 //!
 //! Time step. The conductor's step is `C min_k(l0_k) / c` over the spans' segment lengths. Each clamp's
 //! stable step ([`crate::wire::insulator::clamp_stable_step_s`]) is also multiplied by `C`, and the run
@@ -27,8 +27,6 @@ pub(crate) struct SectionGrid {
     pub chord_m: f64,
     /// smallest stable step of the clamps [s] (infinite without suspension supports)
     pub clamp_step_s: f64,
-    /// lowest initial node height [m]
-    pub lowest_m: f64,
     /// largest longitudinal wave speed `sqrt(EA / rho0)` over the spans [m/s]
     pub wave_speed_max_m_per_s: f64,
     /// smallest crossing time of a segment by that wave, `min_j l0_j / c_j` [s] (the step at Courant 1)
@@ -201,17 +199,29 @@ pub(crate) fn check(
             }
             None => None,
         };
-        let stringing = match (sp.unstretched_length_m, sp.horizontal_tension_n.or(section_h)) {
-            (Some(l), Some(_)) if sp.horizontal_tension_n.is_some() => {
+        // One stringing per span: its own length, sag or tension, else the section's tension.
+        let own: Vec<&str> = [
+            sp.unstretched_length_m.map(|_| "unstretched_length_m"),
+            sp.sag_m.map(|_| "sag_m"),
+            sp.horizontal_tension_n.map(|_| "horizontal_tension_n"),
+        ]
+        .into_iter()
+        .flatten()
+        .collect();
+        let stringing = match (sp.unstretched_length_m, sp.sag_m, sp.horizontal_tension_n.or(section_h)) {
+            _ if own.len() > 1 => {
                 ok = false;
                 c.fail(
-                    &f("unstretched_length_m"),
-                    number(l),
-                    "give the span's unstretched length or its tension, not both",
+                    &f(own[1]),
+                    "(given)",
+                    &format!(
+                        "give one of the span's unstretched_length_m, sag_m and horizontal_tension_n, not {}",
+                        own.join(" and ")
+                    ),
                 );
                 None
             }
-            (Some(l), _) => {
+            (Some(l), _, _) => {
                 let in_range = c.within(
                     &f("unstretched_length_m"),
                     l,
@@ -222,7 +232,21 @@ pub(crate) fn check(
                 ok &= in_range;
                 Some(Stringing::UnstretchedLength(l))
             }
-            (None, Some(h)) => {
+            (None, Some(sag), _) => {
+                ok &= c.within(
+                    &f("sag_m"),
+                    sag,
+                    f64::MIN_POSITIVE,
+                    0.5 * d,
+                    &format!("must be in (0, chord / 2] = (0, {}] m (spans sag 1 to 10 % of their length)", 0.5 * d),
+                );
+                if s.loads.gravity_m_per_s2 <= 0.0 {
+                    ok = false;
+                    c.fail(&f("sag_m"), number(sag), "stringing by sag needs loads.gravity_m_per_s2 > 0");
+                }
+                Some(Stringing::Sag(sag))
+            }
+            (None, None, Some(h)) => {
                 ok &= c.within(
                     &f("horizontal_tension_n"),
                     h,
@@ -240,12 +264,12 @@ pub(crate) fn check(
                 }
                 Some(Stringing::HorizontalTension(h))
             }
-            (None, None) => {
+            (None, None, None) => {
                 ok = false;
                 c.fail(
                     &f("horizontal_tension_n"),
                     "(missing)",
-                    "give section.horizontal_tension_n [N], or the span's horizontal_tension_n or unstretched_length_m",
+                    "give section.horizontal_tension_n [N], or the span's horizontal_tension_n, sag_m or unstretched_length_m",
                 );
                 None
             }
@@ -278,14 +302,48 @@ pub(crate) fn check(
     if !ok || conductor.is_none() || spans.len() != n_spans {
         return None;
     }
+    // The stringing temperature: where it is not the initial one, the strung shape is not at rest.
+    let t_ref = s.conductor.reference_temperature_k;
+    let stringing_factor = match sec.stringing_temperature_k {
+        Some(t0) => {
+            if !c.within("section.stringing_temperature_k", t0, 223.15, 373.15, "must be in [223.15, 373.15] K") {
+                return None;
+            }
+            let factor = 1.0 + s.conductor.thermal_expansion_per_k * (t0 - t_ref);
+            if factor != 1.0 && s.initial.shape != ShapeSpec::Equilibrium {
+                c.fail(
+                    "section.stringing_temperature_k",
+                    number(t0),
+                    &format!(
+                        "differs from the initial temperature conductor.reference_temperature_k = {} K (with \
+                         conductor.thermal_expansion_per_k = {} 1/K): the strung shape is not at rest there; use \
+                         initial.shape = \"equilibrium\"",
+                        number(t_ref),
+                        number(s.conductor.thermal_expansion_per_k)
+                    ),
+                );
+                return None;
+            }
+            factor
+        }
+        None => 1.0,
+    };
     let built = section::build(&Section { supports, spans, gravity_m_per_s2: s.loads.gravity_m_per_s2 });
-    let (wire, layout) = match built {
+    let (mut wire, layout) = match built {
         Ok(b) => b,
         Err(e) => {
             c.fail("section", "(as given)", &format!("cannot be strung: {e}"));
             return None;
         }
     };
+    if stringing_factor != 1.0 {
+        // Strung at T0: the stress-free lengths at the initial temperature T_ref are l0 / (1 + alpha (T0 - T_ref));
+        // the conductor's mass stays.
+        for j in 0..wire.segments() {
+            wire.reference_length[j] = wire.rest_length[j] / stringing_factor;
+            wire.rest_length[j] = wire.reference_length[j];
+        }
+    }
     let a = wire.position(0);
     let b = wire.position(wire.segments());
     let chord_m = (0..3).map(|i| (b[i] - a[i]).powi(2)).sum::<f64>().sqrt();
@@ -296,7 +354,6 @@ pub(crate) fn check(
         let dt = clamp_stable_step_s(wire.mass[i], ins.stiffness_n / ins.length_m, side(i - 1), side(i));
         clamp_step_s = clamp_step_s.min(dt);
     }
-    let lowest_m = wire.x[2].iter().copied().fold(f64::INFINITY, f64::min);
     let (mut wave_speed_max_m_per_s, mut crossing_time_s) = (0.0_f64, f64::INFINITY);
     for j in 0..wire.segments() {
         let rho = wire.segment_mass[j] / wire.reference_length[j];
@@ -304,7 +361,7 @@ pub(crate) fn check(
         wave_speed_max_m_per_s = wave_speed_max_m_per_s.max(c);
         crossing_time_s = crossing_time_s.min(wire.rest_length[j] / c);
     }
-    Some(SectionGrid { wire, layout, chord_m, clamp_step_s, lowest_m, wave_speed_max_m_per_s, crossing_time_s })
+    Some(SectionGrid { wire, layout, chord_m, clamp_step_s, wave_speed_max_m_per_s, crossing_time_s })
 }
 
 #[cfg(test)]

@@ -5,7 +5,7 @@ use std::fmt;
 
 use std::ops::Range;
 
-use super::events::{EventSpec, HeatBoundarySpec, break_segment, node_range, segment_range};
+use super::events::{EventSpec, GroundSpec, HeatBoundarySpec, break_segment, node_range, segment_range};
 use super::schema::{Scenario, ShapeSpec, SupportSpec, TensionLawSpec, WindLawSpec};
 use super::section::SectionGrid;
 use crate::scheme::courant;
@@ -305,18 +305,6 @@ pub(crate) fn check(s: &Scenario) -> (Vec<Problem>, Derived) {
                                         number(horizontal)
                                     ),
                                 );
-                            } else if let (ShapeSpec::Parabola, Some(gr)) = (ini.shape, &s.ground) {
-                                let (u, low) = parabola_lowest(a, b, f);
-                                if gr.height_m.is_finite() && low < gr.height_m {
-                                    c.fail(
-                                        "ground.height_m",
-                                        number(gr.height_m),
-                                        &format!(
-                                            "the initial parabola (initial.sag_m = {f} m) reaches x3 = {low} m at {u:.4} \
-                                             of the chord, below the ground: the ground must lie below the initial shape"
-                                        ),
-                                    );
-                                }
                             }
                         }
                     }
@@ -564,8 +552,8 @@ pub(crate) fn check(s: &Scenario) -> (Vec<Problem>, Derived) {
         }
         None => Vec::new(),
     };
-    let lowest = section_grid.as_ref().map(|sg| sg.lowest_m);
-    check_ground_and_events(&mut c, s, end, &spans, n_total, lowest, derived.dt_s);
+    let initial = section_grid.as_ref().map(|sg| &sg.wire.x);
+    check_ground_and_events(&mut c, s, end, &spans, n_total, initial, derived.dt_s);
     derived.section = section_grid;
     (c.0, derived)
 }
@@ -735,6 +723,103 @@ pub(crate) fn ice_shortfalls(n: usize, ds: f64, rho: f64, events: &[IceEvent]) -
     out
 }
 
+/// `[ground]`: a level plane or a terrain profile (one of the two), restitution and friction, and the
+/// ground below every support and the initial shape (the section's initial nodes `initial`, or the
+/// single span's supports and its initial parabola).
+fn check_ground(c: &mut Check, s: &Scenario, gr: &GroundSpec, initial: Option<&[Vec<f64>; 3]>) {
+    c.within("ground.restitution", gr.restitution, 0.0, 1.0, "must be in [0, 1] (0.6 returns 36 % of the energy)");
+    c.within("ground.friction", gr.friction, 0.0, 2.0, "must be in [0, 2] (conductor on soil or grass: about 0.5)");
+    let p = &gr.profile_m;
+    let (field, value) = match (gr.height_m, p.is_empty()) {
+        (None, true) => {
+            let why = "give ground.height_m (a level plane) or ground.profile_m (a terrain profile)";
+            return c.fail("ground.height_m", "(missing)", why);
+        }
+        (Some(_), false) => {
+            return c.fail(
+                "ground.profile_m",
+                format!("{p:?}"),
+                "give either ground.height_m or ground.profile_m, not both",
+            );
+        }
+        (Some(h), true) => {
+            if !h.is_finite() {
+                return c.fail_number("ground.height_m", h, "must be a finite height below every support");
+            }
+            ("ground.height_m", number(h))
+        }
+        (None, false) => {
+            let finite = p.iter().flatten().all(|x| x.is_finite());
+            let increasing = p.windows(2).all(|w| w[1][0] > w[0][0]);
+            let slope = p.windows(2).map(|w| ((w[1][1] - w[0][1]) / (w[1][0] - w[0][0])).abs()).fold(0.0, f64::max);
+            if p.len() < 2 || !finite || !increasing || slope > 2.0 {
+                let why = format!(
+                    "must be at least two finite points [x2, x3] [m] with x2 strictly increasing and slopes at most 2 \
+                     (63 degrees){}",
+                    if increasing && finite && p.len() >= 2 {
+                        format!("; the steepest piece has slope {slope:.3}")
+                    } else {
+                        String::new()
+                    }
+                );
+                return c.fail("ground.profile_m", format!("{p:?}"), &why);
+            }
+            ("ground.profile_m", format!("{p:?}"))
+        }
+    };
+    let g = gr.ground();
+    let level = p.is_empty();
+    // The points that must be above the ground, with what they are.
+    let mut points: Vec<([f64; 3], String)> = Vec::new();
+    if let Some(x) = initial {
+        points
+            .extend((0..x[0].len()).map(|i| ([x[0][i], x[1][i], x[2][i]], format!("the section's initial node {i}"))));
+    } else if let Some(geo) = &s.geometry {
+        let (a, b) = (geo.left_support_m, geo.right_support_m);
+        points.push((a, "the left support".into()));
+        points.push((b, "the right support".into()));
+        if let Some(f) = s.initial.sag_m
+            && s.initial.shape == ShapeSpec::Parabola
+            && f.is_finite()
+            && f > 0.0
+        {
+            // the parabola A + u (B - A) - 4 f u (1 - u) e3: its lowest point, and 200 points for a profile
+            let (u, low) = parabola_lowest(a, b, f);
+            let at = |u: f64| {
+                [a[0] + u * (b[0] - a[0]), a[1] + u * (b[1] - a[1]), a[2] + u * (b[2] - a[2]) - 4.0 * f * u * (1.0 - u)]
+            };
+            let mut us: Vec<f64> = if level { vec![u] } else { (0..=200).map(|k| k as f64 / 200.0).collect() };
+            us.retain(|&v| v > 0.0 && v < 1.0);
+            for v in us {
+                let x = if level { [f64::NAN, f64::NAN, low] } else { at(v) };
+                points.push((x, format!("the initial parabola (initial.sag_m = {f} m) at {v:.4} of the chord")));
+            }
+        }
+    }
+    let below = points
+        .iter()
+        .map(|(x, what)| (if level { x[2] - g.height_m } else { g.clearance_m(*x) }, x, what))
+        .filter(|(clr, _, _)| clr.is_nan() || *clr <= 0.0)
+        .min_by(|a, b| a.0.total_cmp(&b.0));
+    if let Some((clr, x, what)) = below {
+        let why = if level {
+            format!(
+                "must be a finite height below both supports and the initial shape (every initial node of a section): \
+                 {what} reaches x3 = {} m, below the ground",
+                number(x[2])
+            )
+        } else {
+            format!(
+                "the ground must lie below every support and the initial shape: {what} at x2 = {} m, x3 = {} m is {} m below the ground there",
+                number(x[1]),
+                number(x[2]),
+                number(-clr)
+            )
+        };
+        c.fail(field, value, &why);
+    }
+}
+
 /// `[ground]` and `[[events]]`.
 fn check_ground_and_events(
     c: &mut Check,
@@ -742,27 +827,12 @@ fn check_ground_and_events(
     end: Option<f64>,
     spans: &[SpanGrid],
     n_total: usize,
-    lowest: Option<f64>,
+    initial: Option<&[Vec<f64>; 3]>,
     dt: Option<f64>,
 ) {
     let grid = (!spans.is_empty()).then_some(Grid { n: n_total });
     if let Some(gr) = &s.ground {
-        let low = match (&s.geometry, lowest) {
-            (Some(g), _) => Some(g.left_support_m[2].min(g.right_support_m[2])),
-            (None, low) => low,
-        };
-        if let Some(low) = low
-            && !(gr.height_m.is_finite() && gr.height_m < low)
-        {
-            let what = if s.geometry.is_some() { "the lower support" } else { "the section's lowest initial point" };
-            c.fail(
-                "ground.height_m",
-                gr.height_m,
-                &format!("must be a finite height below both supports ({what} is at x3 = {low} m)"),
-            );
-        }
-        c.within("ground.restitution", gr.restitution, 0.0, 1.0, "must be in [0, 1] (0.6 returns 36 % of the energy)");
-        c.within("ground.friction", gr.friction, 0.0, 2.0, "must be in [0, 2] (conductor on soil or grass: about 0.5)");
+        check_ground(c, s, gr, initial);
     }
     let hi = end.unwrap_or(f64::INFINITY);
     let cd = &s.conductor;

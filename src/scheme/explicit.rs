@@ -24,6 +24,7 @@
 //! Cost per node and step: one square root, one division, about 60 flops; no allocation, no dynamic
 //! dispatch (the tension law and the wind law are type parameters chosen once per step outside the loop).
 
+use super::contact::{self, Ground};
 use super::smoothing;
 use crate::wire::Wire;
 use crate::wire::aero::{Aerodynamic, Downwind, NoWind, SegmentLoad, UniformNormal};
@@ -61,20 +62,6 @@ pub enum WindGate {
     Always,
     /// only on segments moving downwind (the "dancing wires" gust of section 4.5)
     Downwind,
-}
-
-/// A ground plane `x3 = height`: a node that reaches it is put back on it and, if moving down, rebounds
-/// with its normal velocity multiplied by `-restitution`; from then on no distributed load acts on it
-/// (section 4.4: restitution 0.6 returns 0.6^2 = 36 % of the vertical impact energy).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Ground {
-    /// ground height `x3` [m]
-    pub height_m: f64,
-    /// coefficient of restitution on the normal velocity [-], in [0, 1]
-    pub restitution: f64,
-    /// Coulomb friction coefficient `mu_g` [-]: the contact's tangential impulse is at most `mu_g` times
-    /// its normal impulse (0: frictionless)
-    pub friction: f64,
 }
 
 /// Numerical parameters of the step.
@@ -303,8 +290,9 @@ impl Explicit {
         self.nodal_force = extra;
         // Locate a failure before ground contact, which may change the offending velocity.
         let failure = if ok { None } else { Some(self.locate_instability()) };
-        if let Some(g) = self.ground {
-            self.ground_contact(g);
+        if let Some(g) = &self.ground {
+            let w = &mut self.wire;
+            contact::apply(g, &mut w.x, &mut w.v, &mut w.exposed);
         }
         self.dt_prev = dt;
         self.time_s += dt;
@@ -366,9 +354,9 @@ impl Explicit {
         self.steps
     }
 
-    /// The ground plane in contact, if any.
-    pub fn ground(&self) -> Option<Ground> {
-        self.ground
+    /// The ground in contact, if any.
+    pub fn ground(&self) -> Option<&Ground> {
+        self.ground.as_ref()
     }
 
     /// Switch ground contact (a plane, or none).
@@ -404,6 +392,25 @@ impl Explicit {
     pub fn max_tension_n(&self) -> f64 {
         assert!(self.fresh, "max_tension_n needs evaluate_forces at this time level");
         self.max_tension_n
+    }
+
+    /// The largest tension of the segments `segments` at this time level [N] (0 for an empty range): from
+    /// the segment pass's forces `|T t|` under the tension-only law (one square root per call), from
+    /// [`Explicit::segment_tension`] under the linear law (whose tension may be negative). Requires
+    /// [`Explicit::evaluate_forces`] at this level (panics otherwise: internal misuse).
+    pub fn max_tension_in(&self, segments: std::ops::Range<usize>) -> f64 {
+        assert!(self.fresh, "max_tension_in needs evaluate_forces at this time level");
+        if self.wire.law == LawKind::Linear {
+            return segments.map(|j| self.segment_tension(j)).fold(0.0, f64::max);
+        }
+        let [f1, f2, f3] = &self.fs;
+        let (a, b) = (segments.start + 1, segments.end + 1);
+        let (f1, f2, f3) = (&f1[a..b], &f2[a..b], &f3[a..b]);
+        let mut m2 = 0.0_f64;
+        for j in 0..f1.len() {
+            m2 = m2.max(f1[j] * f1[j] + f2[j] * f2[j] + f3[j] * f3[j]);
+        }
+        m2.sqrt()
     }
 
     /// The force the wire applies to each support [N], `(node, [f1, f2, f3])`, at the current level, for
@@ -674,51 +681,43 @@ impl Explicit {
         smoothing::differences(v2, fs2, intact);
         smoothing::differences(v3, fs3, intact);
         let (d1, d2, d3) = (&fs1[..n1 + 1], &fs2[..n1 + 1], &fs3[..n1 + 1]);
-        for i in 0..n1 {
-            let bf = b * free[i];
-            let v = [
-                smoothing::smoothed(v1[i], bf, d1, i),
-                smoothing::smoothed(v2[i], bf, d2, i),
-                smoothing::smoothed(v3[i], bf, d3, i),
-            ];
-            v1[i] = v[0];
-            v2[i] = v[1];
-            v3[i] = v[2];
-            x1[i] += dt * v[0];
-            x2[i] += dt * v[1];
-            x3[i] += dt * v[2];
-            ok &= v[0] * v[0] + v[1] * v[1] + v[2] * v[2] <= bound2;
-        }
-        ok
-    }
-
-    /// Ground contact after the drift: project onto the plane, reflect the downward velocity with the
-    /// restitution coefficient, and mark the node as no longer exposed to distributed loads. Coulomb
-    /// friction: the contact's normal impulse per unit mass is `(1 + e) |v_n|`; the horizontal velocity
-    /// loses at most `mu_g` times that, and no more than it has (friction stops a node, never reverses
-    /// it). Summed over the contacts, the friction impulse is at most `mu_g` times the normal impulse,
-    /// which is Coulomb's law for impulses.
-    #[inline(never)]
-    fn ground_contact(&mut self, g: Ground) {
-        let w = &mut self.wire;
-        for i in 0..w.nodes() {
-            if w.x[2][i] < g.height_m {
-                w.x[2][i] = g.height_m;
-                if w.v[2][i] < 0.0 {
-                    let normal = (1.0 + g.restitution) * -w.v[2][i];
-                    w.v[2][i] *= -g.restitution;
-                    if g.friction > 0.0 {
-                        let vt = w.v[0][i].hypot(w.v[1][i]);
-                        if vt > 0.0 {
-                            let keep = (1.0 - g.friction * normal / vt).max(0.0);
-                            w.v[0][i] *= keep;
-                            w.v[1][i] *= keep;
-                        }
-                    }
-                }
-                w.exposed[i] = 0.0;
+        if w.uniform_smoothing {
+            // Every weight is 1: the paper's (3.3) exactly.
+            for i in 0..n1 {
+                let bf = b * free[i];
+                let v = [
+                    smoothing::smoothed(v1[i], bf, d1, i),
+                    smoothing::smoothed(v2[i], bf, d2, i),
+                    smoothing::smoothed(v3[i], bf, d3, i),
+                ];
+                v1[i] = v[0];
+                v2[i] = v[1];
+                v3[i] = v[2];
+                x1[i] += dt * v[0];
+                x2[i] += dt * v[1];
+                x3[i] += dt * v[2];
+                ok &= v[0] * v[0] + v[1] * v[1] + v[2] * v[2] <= bound2;
+            }
+        } else {
+            let [wl, wr] = &w.smoothing_weight;
+            let (wl, wr) = (&wl[..n1], &wr[..n1]);
+            for i in 0..n1 {
+                let (bf, l, r) = (b * free[i], wl[i], wr[i]);
+                let v = [
+                    smoothing::smoothed_weighted(v1[i], bf, d1, l, r, i),
+                    smoothing::smoothed_weighted(v2[i], bf, d2, l, r, i),
+                    smoothing::smoothed_weighted(v3[i], bf, d3, l, r, i),
+                ];
+                v1[i] = v[0];
+                v2[i] = v[1];
+                v3[i] = v[2];
+                x1[i] += dt * v[0];
+                x2[i] += dt * v[1];
+                x3[i] += dt * v[2];
+                ok &= v[0] * v[0] + v[1] * v[1] + v[2] * v[2] <= bound2;
             }
         }
+        ok
     }
 
     /// Find the first offending node after the node pass reported a failure: `(node, reason)`. The pass
@@ -906,7 +905,7 @@ mod tests {
         if s.params.smoothing > 0.0 {
             let b = s.params.smoothing * (dt / s.params.dt_s);
             for k in 0..3 {
-                smoothing::smooth(&mut w.v[k], &mut s.fs[k], &w.intact, &w.free, b);
+                smoothing::smooth(&mut w.v[k], &mut s.fs[k], &w.intact, &w.free, &w.smoothing_weight, b);
             }
         }
         let mut ok = true;
@@ -917,8 +916,9 @@ mod tests {
             ok &= w.v[0][i] * w.v[0][i] + w.v[1][i] * w.v[1][i] + w.v[2][i] * w.v[2][i]
                 <= s.params.max_speed_m_per_s * s.params.max_speed_m_per_s;
         }
-        if let Some(g) = s.ground {
-            s.ground_contact(g);
+        if let Some(g) = &s.ground {
+            let w = &mut s.wire;
+            contact::apply(g, &mut w.x, &mut w.v, &mut w.exposed);
         }
         s.dt_prev = dt;
         ok
@@ -943,9 +943,17 @@ mod tests {
         s.loads.uniform_load_n_per_m = [0.5, 0.0, -1.0];
         s.loads.wind_gate = WindGate::Downwind;
         s.nodal_force = Some([vec![0.1; 42], vec![-0.2; 42], vec![0.3; 42]]);
-        s.ground = Some(Ground { height_m: -0.05, restitution: 0.6, friction: 0.0 });
+        s.ground = Some(Ground::level(-0.05, 0.6, 0.0));
         s.wire.break_segment(20);
         cases.push(("all options".into(), s));
+        // Unequal node masses take the mass-weighted smoothing path.
+        let mut s = Config::Wind3d.solver(41);
+        s.params.smoothing = 0.03;
+        s.wire.point_mass_kg[10] = 50.0 * s.wire.mass[10];
+        s.wire.update_node_masses();
+        s.wire.break_segment(30);
+        assert!(!s.wire.uniform_smoothing);
+        cases.push(("weighted smoothing".into(), s));
         cases
     }
 

@@ -2,10 +2,10 @@
 //! and the Courant time step (3.7).
 
 pub mod configs;
+pub mod contact;
 pub mod courant;
 pub mod explicit;
 pub mod smoothing;
 
-pub use explicit::{
-    Diagnostics, Explicit, Ground, Instability, InstabilityReason, Loads, StepParams, WindGate, WindLoad,
-};
+pub use contact::Ground;
+pub use explicit::{Diagnostics, Explicit, Instability, InstabilityReason, Loads, StepParams, WindGate, WindLoad};

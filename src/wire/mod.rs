@@ -90,6 +90,13 @@ pub struct Wire {
     pub point_mass_kg: Vec<f64>,
     /// suspension insulator strings, each holding a node of the line ([`insulator`])
     pub insulators: Vec<Insulator>,
+    /// weights of the mass-weighted smoothing (3.3) at each node: `[m_{i-1/2} / m_i, m_{i+1/2} / m_i]`,
+    /// the masses of the segments left and right of node `i` over the node's lumped mass [-] (0 where
+    /// there is no segment); kept by [`Wire::update_node_masses`] ([`crate::scheme::smoothing`])
+    pub smoothing_weight: [Vec<f64>; 2],
+    /// whether every free node has both weights equal to 1 (a uniform wire, no point masses), where the
+    /// weighted smoothing is exactly the paper's (3.3) and the kernel takes the unweighted path
+    pub uniform_smoothing: bool,
 }
 
 impl Wire {
@@ -127,6 +134,8 @@ impl Wire {
             thermal_expansion_per_k: 0.0,
             point_mass_kg: vec![0.0; n_nodes],
             insulators: Vec::new(),
+            smoothing_weight: [vec![0.0; n_nodes], vec![0.0; n_nodes]],
+            uniform_smoothing: true,
         };
         wire.update_node_masses();
         wire
@@ -143,7 +152,7 @@ impl Wire {
     }
 
     /// Recompute the lumped node masses from the segment masses (after ice is added or dropped) and the
-    /// point masses.
+    /// point masses, and the smoothing weights that follow from them.
     pub fn update_node_masses(&mut self) {
         let n = self.segments();
         for i in 0..=n {
@@ -151,7 +160,19 @@ impl Wire {
             let right = if i < n { self.segment_mass[i] } else { 0.0 };
             self.mass[i] = 0.5 * (left + right) + self.point_mass_kg[i];
             self.inv_mass[i] = 1.0 / self.mass[i];
+            self.smoothing_weight[0][i] = left / self.mass[i];
+            self.smoothing_weight[1][i] = right / self.mass[i];
         }
+        self.update_uniform_smoothing();
+    }
+
+    /// Whether the weighted smoothing reduces to the paper's on every free node (both weights exactly 1;
+    /// a free end node, with half a segment's mass, has weight 2 and is not uniform).
+    fn update_uniform_smoothing(&mut self) {
+        let n = self.segments();
+        let [left, right] = &self.smoothing_weight;
+        self.uniform_smoothing =
+            (0..=n).all(|i| self.free[i] <= 0.0 || ((i == 0 || left[i] == 1.0) && (i == n || right[i] == 1.0)));
     }
 
     /// Indices of the fixed nodes (the supports), in node order.
@@ -183,6 +204,7 @@ impl Wire {
         self.constraint[i] = c;
         self.free[i] = if c == Constraint::Free { 1.0 } else { 0.0 };
         self.fixed = (0..self.nodes()).filter(|&j| self.constraint[j] == Constraint::Fixed).collect();
+        self.update_uniform_smoothing();
     }
 
     /// Position of node `i` [m].

@@ -62,6 +62,9 @@ pub enum Stringing {
     HorizontalTension(f64),
     /// unstretched length `S` [m]
     UnstretchedLength(f64),
+    /// sag `f` [m]: the vertical distance from the chord down to the conductor at the span's horizontal
+    /// middle, with every insulator plumb
+    Sag(f64),
 }
 
 /// One span of a section.
@@ -169,6 +172,9 @@ fn catenaries(section: &Section) -> Result<(Vec<ElasticCatenary>, Vec<f64>), Sec
                 Stringing::HorizontalTension(h) => {
                     length_for_tension(a, b, h, w, ea).map_err(|reason| SectionError::Span { span: k, reason })?
                 }
+                Stringing::Sag(f) => {
+                    length_for_sag(a, b, f, w, ea).map_err(|reason| SectionError::Span { span: k, reason })?
+                }
             };
             let cat = ElasticCatenary::solve(a, b, l0, [0.0, 0.0, -w], ea)
                 .map_err(|e| SectionError::Span { span: k, reason: e.to_string() })?;
@@ -214,6 +220,59 @@ pub fn length_for_tension(a: [f64; 3], b: [f64; 3], h_n: f64, w_n_per_m: f64, ea
             break;
         }
         if h_of(mid)? > h_n {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    Ok(0.5 * (lo + hi))
+}
+
+/// Sag [m] of a catenary: the vertical distance from the chord `a`-`b` down to the curve at the
+/// horizontal middle of the span (the arc-length parameter found by bisection: the horizontal distance
+/// from `a` grows along the curve).
+pub fn midspan_sag_m(cat: &ElasticCatenary, a: [f64; 3], b: [f64; 3]) -> f64 {
+    let (h1, h2) = (b[0] - a[0], b[1] - a[1]);
+    let span2 = h1 * h1 + h2 * h2;
+    let fraction = |p: [f64; 3]| ((p[0] - a[0]) * h1 + (p[1] - a[1]) * h2) / span2;
+    let (mut lo, mut hi) = (0.0, cat.unstretched_length_m());
+    for _ in 0..200 {
+        let mid = 0.5 * (lo + hi);
+        if mid <= lo || mid >= hi {
+            break;
+        }
+        if fraction(cat.position(mid)) < 0.5 {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    let p = cat.position(0.5 * (lo + hi));
+    0.5 * (a[2] + b[2]) - p[2]
+}
+
+/// Unstretched length [m] of an elastic catenary between `a` and `b` [m] whose [`midspan_sag_m`] is
+/// `sag_m` [m] under its weight `w_n_per_m` [N/m per unstretched length], for axial stiffness `ea_n` [N]:
+/// the sag grows monotonically with the length, so bisection converges.
+pub fn length_for_sag(a: [f64; 3], b: [f64; 3], sag_m: f64, w_n_per_m: f64, ea_n: f64) -> Result<f64, String> {
+    let chord = ((b[0] - a[0]).powi(2) + (b[1] - a[1]).powi(2) + (b[2] - a[2]).powi(2)).sqrt();
+    let sag_of = |l0: f64| {
+        ElasticCatenary::solve(a, b, l0, [0.0, 0.0, -w_n_per_m], ea_n)
+            .map(|c| midspan_sag_m(&c, a, b))
+            .map_err(|e| e.to_string())
+    };
+    let (mut lo, mut hi) = (0.5 * chord, 2.0 * chord);
+    if sag_of(lo)? > sag_m || sag_of(hi)? < sag_m {
+        return Err(format!(
+            "no unstretched length between {lo} m and {hi} m gives the sag {sag_m} m (chord {chord} m)"
+        ));
+    }
+    for _ in 0..200 {
+        let mid = 0.5 * (lo + hi);
+        if mid <= lo || mid >= hi {
+            break;
+        }
+        if sag_of(mid)? < sag_m {
             lo = mid;
         } else {
             hi = mid;

@@ -142,13 +142,20 @@ fn chart(p: &PanelSpec, spec: &PaperSpec, plan: &Plan, o: &Outcome, c: &Columns,
             if let (Some(g), 2) = (&plan.ground, b) {
                 let xs: Vec<f64> = o.shapes.iter().flat_map(|s| s.x[a].iter().map(|v| v / l)).collect();
                 let (lo, hi) = xs.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(p, q), &v| (p.min(v), q.max(v)));
-                if lo.is_finite() {
+                if lo.is_finite() && g.profile_m.is_empty() {
                     chart.series.push(Series::new(
                         format!("ground, x3 = {} m", g.height_m),
                         vec![(lo, g.height_m / l), (hi, g.height_m / l)],
                         Style::Dashed,
                         7,
                     ));
+                } else if lo.is_finite() && a == 1 {
+                    // the terrain profile under the line, with its corners
+                    let mut x2: Vec<f64> = vec![lo * l, hi * l];
+                    x2.extend(g.profile_m.iter().map(|p| p[0]).filter(|&x| x > lo * l && x < hi * l));
+                    x2.sort_by(f64::total_cmp);
+                    let pts = x2.iter().map(|&x| (x / l, g.height_at(x) / l)).collect();
+                    chart.series.push(Series::new("ground profile", pts, Style::Dashed, 7));
                 }
             }
         }
