@@ -14,6 +14,10 @@
 //! [`Explicit::net_force`], so the static solution is the rest state of the very equations the explicit
 //! scheme integrates; its error against the continuous wire is the grid's `O(ds^2)`.
 //!
+//! A suspension string adds its force to its clamp node ([`crate::wire::insulator`]); an elastic
+//! crossarm adds its pivot's two horizontal coordinates as unknowns, with the pivot's balance of springs
+//! and string pull as their equations ([`pivots`]).
+//!
 //! # Method
 //!
 //! Newton's method on `F(x) = 0`: `J dx = -F` with the exact Jacobian `J = dF/dx` ([`jacobian`]:
@@ -69,6 +73,7 @@
 pub mod dual;
 pub mod jacobian;
 mod newton;
+pub mod pivots;
 pub mod sparse_lu;
 
 pub use newton::{StaticError, StaticOptions, StaticReport, default_tolerance_n, nodal_loads, rounding_floor_n, solve};

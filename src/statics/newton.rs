@@ -2,6 +2,7 @@
 //! [`crate::statics`] for the equations and the globalisation).
 
 use super::jacobian::{max_axial_stiffness_n_per_m, pattern, unknown_index, values};
+use super::pivots::Pivots;
 use super::sparse_lu::{SparseLu, SparseLuError};
 use crate::scheme::{Explicit, WindGate, WindLoad};
 use crate::wire::aero::SegmentLoad;
@@ -87,12 +88,6 @@ pub enum StaticError {
     /// The wire has no free node.
     #[error("the wire has no free node")]
     NoFreeNode,
-    /// An elastic crossarm: its pivot is not an unknown of the static solver.
-    #[error("insulator {insulator} has an elastic crossarm: not supported by the static solver")]
-    ElasticCrossarm {
-        /// the insulator (index in `Wire::insulators`)
-        insulator: usize,
-    },
     /// The sparse pattern was rejected (internal error).
     #[error("sparse factorisation: {0}")]
     Factorisation(String),
@@ -211,17 +206,20 @@ fn check_supported(s: &Explicit) -> Result<(), StaticError> {
     if !s.wire().free.iter().any(|&f| f > 0.0) {
         return Err(StaticError::NoFreeNode);
     }
-    if let Some(k) = s.wire().insulators.iter().position(|i| i.crossarm.is_some()) {
-        return Err(StaticError::ElasticCrossarm { insulator: k });
-    }
     Ok(())
 }
 
-/// Residual of the free nodes: `-F` into `rhs` (the Newton right-hand side), and the largest `|F_i|`
-/// and the Euclidean norm `|F|` [N].
-fn residual(s: &mut Explicit, idx: &[Option<usize>], f: &mut [Vec<f64>; 3], rhs: &mut [f64]) -> (f64, f64) {
+/// Residual of the free nodes and of the elastic crossarms' pivots: `-F` into `rhs` (the Newton
+/// right-hand side), and the largest `|F_i|` and the Euclidean norm `|F|` [N].
+fn residual(
+    s: &mut Explicit,
+    idx: &[Option<usize>],
+    pivots: &Pivots,
+    f: &mut [Vec<f64>; 3],
+    rhs: &mut [f64],
+) -> (f64, f64) {
     s.net_force(f);
-    let (mut max, mut sq) = (0.0_f64, 0.0);
+    let (mut max, mut sq) = pivots.residual(s, rhs);
     for (i, o) in idx.iter().enumerate() {
         if let Some(r) = o {
             for k in 0..3 {
@@ -236,21 +234,37 @@ fn residual(s: &mut Explicit, idx: &[Option<usize>], f: &mut [Vec<f64>; 3], rhs:
     (if sq.is_finite() { max } else { f64::NAN }, sq.sqrt())
 }
 
+/// Move the free nodes and the pivots to `x0 + lambda dx` [m].
+fn place(s: &mut Explicit, idx: &[Option<usize>], pivots: &Pivots, x0: &[f64], dx: &[f64], lambda: f64) {
+    for (i, o) in idx.iter().enumerate() {
+        if let Some(q) = o {
+            for k in 0..3 {
+                s.wire_mut().x[k][i] = x0[q + k] + lambda * dx[q + k];
+            }
+        }
+    }
+    pivots.scatter(s, x0, dx, lambda);
+}
+
 /// Move the free nodes of `s` to the static equilibrium of its loads, `F_i(x) = 0` (module doc of
 /// [`crate::statics`]), starting from its current positions; the velocities are set to zero. The
 /// fixed nodes, the loads and the rest lengths are those of `s`. Linear solves run on one thread.
 ///
 /// Supported: tension-only and linear laws, gravity, uniform load, wind (both laws, gate
-/// [`WindGate::Always`]), prescribed nodal forces. Errors (never panics) on a broken segment, the downwind
+/// [`WindGate::Always`]), prescribed nodal forces, suspension strings, and elastic crossarms (their pivots
+/// are unknowns too, [`crate::statics::pivots`]; their velocities are set to zero as well). Errors (never panics) on a broken segment, the downwind
 /// gate, ground contact, a wire without free nodes, non-finite residuals, or no convergence.
 pub fn solve(s: &mut Explicit, opts: &StaticOptions) -> Result<StaticReport, StaticError> {
     check_supported(s)?;
     for v in &mut s.wire_mut().v {
         v.fill(0.0);
     }
-    let (idx, n) = unknown_index(s);
+    let (idx, n_nodes) = unknown_index(s);
+    let (pivots, n) = Pivots::of(s, n_nodes);
+    pivots.stop(s);
     let n1 = s.wire().nodes();
-    let pat = pattern(s);
+    let mut pat = pattern(s);
+    pivots.pattern(s, &idx, &mut pat);
     let mut lu = SparseLu::new(n, &pat, faer::Par::Seq).map_err(|e| StaticError::Factorisation(e.to_string()))?;
     let mut vals = Vec::with_capacity(pat.len());
     let mut f = [vec![0.0; n1], vec![0.0; n1], vec![0.0; n1]];
@@ -265,7 +279,7 @@ pub fn solve(s: &mut Explicit, opts: &StaticOptions) -> Result<StaticReport, Sta
     let tension_scale = f_sum;
     let load_scale = if f_max > 0.0 { f_max } else { 1.0 };
 
-    let (mut r, mut r2) = residual(s, &idx, &mut f, &mut rhs);
+    let (mut r, mut r2) = residual(s, &idx, &pivots, &mut f, &mut rhs);
     let mut report = StaticReport {
         iterations: 0,
         residual_n: r,
@@ -288,6 +302,7 @@ pub fn solve(s: &mut Explicit, opts: &StaticOptions) -> Result<StaticReport, Sta
         // Newton steps where every segment is taut.
         let floor = boost * tension_scale * (r / load_scale).min(1.0);
         values(s, 0.0, 0.0, Some(floor), &mut vals);
+        pivots.values(s, &idx, Some(floor), &mut vals);
         dx.copy_from_slice(&rhs);
         match lu.solve(&vals, &mut dx) {
             Ok(()) => {}
@@ -312,6 +327,7 @@ pub fn solve(s: &mut Explicit, opts: &StaticOptions) -> Result<StaticReport, Sta
                 }
             }
         }
+        pivots.gather(s, &mut x0);
         // Line search (module doc): along the step, the work of the residual `g(lambda) = F(x + lambda
         // dx) . dx` is the energy's slope for conservative loads. While `g(0) > 0`, accept the first trial
         // that has not overshot the minimum along the line by much, `g >= -g(0) / 2`, and otherwise jump
@@ -320,14 +336,8 @@ pub fn solve(s: &mut Explicit, opts: &StaticOptions) -> Result<StaticReport, Sta
         let mut lambda = 1.0;
         let mut accepted = false;
         for _ in 0..=MAX_TRIALS {
-            for (i, o) in idx.iter().enumerate() {
-                if let Some(q) = o {
-                    for k in 0..3 {
-                        s.wire_mut().x[k][i] = x0[q + k] + lambda * dx[q + k];
-                    }
-                }
-            }
-            let (rt, r2t) = residual(s, &idx, &mut f, &mut rhs);
+            place(s, &idx, &pivots, &x0, &dx, lambda);
+            let (rt, r2t) = residual(s, &idx, &pivots, &mut f, &mut rhs);
             report.residual_evaluations += 1;
             let g = -dot(&rhs, &dx);
             if !r2t.is_finite() {
@@ -351,14 +361,8 @@ pub fn solve(s: &mut Explicit, opts: &StaticOptions) -> Result<StaticReport, Sta
             boost = (boost / 10.0).max(1.0);
         } else {
             // No trial lowered the residual: back to the last iterate, regularise more.
-            for (i, o) in idx.iter().enumerate() {
-                if let Some(q) = o {
-                    for k in 0..3 {
-                        s.wire_mut().x[k][i] = x0[q + k];
-                    }
-                }
-            }
-            (r, r2) = residual(s, &idx, &mut f, &mut rhs);
+            place(s, &idx, &pivots, &x0, &dx, 0.0);
+            (r, r2) = residual(s, &idx, &pivots, &mut f, &mut rhs);
             report.residual_evaluations += 1;
             boost *= 10.0;
             lambda = 0.0;

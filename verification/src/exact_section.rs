@@ -55,6 +55,12 @@
 //! `k = INFINITY` (where `T` becomes a reaction). The smooth law lets `T` go negative (a compressed string); a
 //! converged `T <= 0` means the string is slack in equilibrium, which [`solve`] reports as an error.
 //!
+//! An elastic crossarm (a tower's longitudinal flexibility) is a horizontal spring `k_a` \[N/m\] on the pivot:
+//! the string pulls the pivot toward the clamp with `T (sin theta, -cos theta)`, the crossarm is rigid
+//! vertically, so the pivot rests at `Q = Q_0 + (T sin theta / k_a, 0)`. This adds no unknown: the clamp is
+//! `P = Q_0 + (T sin theta / k_a, 0) + l (1 + T/k) (sin theta, -cos theta)`, and `k_a = INFINITY` is the rigid
+//! crossarm. The clamp's force balance is unchanged (the string's direction is still `theta`).
+//!
 //! # Equations
 //!
 //! Unknowns: `(H_k, V_k)` for each intact span, `(theta_i, T_i)` for each suspension string. Equations:
@@ -100,6 +106,9 @@ pub enum Support {
         /// axial stiffness `EA` of the string \[N\]: its length under tension `T` is `length_m (1 + T/stiffness_n)`;
         /// `f64::INFINITY` = inextensible
         stiffness_n: f64,
+        /// longitudinal spring of an elastic crossarm \[N/m\]: the pivot moves along `x` until the spring
+        /// balances the string's horizontal pull; `f64::INFINITY` = rigid crossarm
+        crossarm_n_per_m: f64,
     },
 }
 
@@ -157,6 +166,8 @@ pub struct SupportState {
     pub swing_rad: f64,
     /// force `[F_x, F_z]` \[N\] the conductor and the insulator apply to the crossarm pivot / dead-end point
     pub force_on_support_n: [f64; 2],
+    /// crossarm pivot `[x, z]` \[m\], displaced by an elastic crossarm (the dead-end point for a dead-end)
+    pub pivot: [f64; 2],
 }
 
 /// Equilibrium of a [`Section`].
@@ -613,12 +624,15 @@ impl Layout {
 /// Clamp of support `i` for the unknowns `x`, with its derivatives with respect to `theta` and `T`.
 fn clamp(section: &Section, layout: &Layout, x: &[f64], i: usize) -> ([f64; 2], [f64; 2], [f64; 2]) {
     match (section.supports[i], layout.support_var[i]) {
-        (Support::Suspension { pivot, length_m, stiffness_n, .. }, Some(j)) => {
+        (Support::Suspension { pivot, length_m, stiffness_n, crossarm_n_per_m, .. }, Some(j)) => {
             let (theta, t) = (x[j], x[j + 1]);
             let (sin, cos) = theta.sin_cos();
             let le = length_m * (1.0 + t / stiffness_n);
             let dl = length_m / stiffness_n;
-            ([pivot[0] + le * sin, pivot[1] - le * cos], [le * cos, le * sin], [dl * sin, -dl * cos])
+            // The pivot, displaced by the string's horizontal pull over the crossarm spring.
+            let c = 1.0 / crossarm_n_per_m;
+            let px = pivot[0] + c * t * sin;
+            ([px + le * sin, pivot[1] - le * cos], [(le + c * t) * cos, le * sin], [(dl + c) * sin, -dl * cos])
         }
         (Support::DeadEnd { point }, _) => (point, [0.0; 2], [0.0; 2]),
         (Support::Suspension { .. }, None) => unreachable!("every suspension has unknowns"),
@@ -648,8 +662,9 @@ fn validate(section: &Section) -> Result<(), String> {
     for (i, s) in section.supports.iter().enumerate() {
         match *s {
             Support::DeadEnd { point } => check_point(&format!("dead-end point of support {i}"), point)?,
-            Support::Suspension { pivot, length_m, mass_kg, stiffness_n } => {
+            Support::Suspension { pivot, length_m, mass_kg, stiffness_n, crossarm_n_per_m } => {
                 check_point(&format!("pivot of support {i}"), pivot)?;
+                check_positive(&format!("crossarm spring of support {i}"), crossarm_n_per_m, true)?;
                 check_positive(&format!("string length of support {i}"), length_m, false)?;
                 check_positive(&format!("string stiffness of support {i}"), stiffness_n, true)?;
                 if !(mass_kg >= 0.0 && mass_kg.is_finite()) {
@@ -897,7 +912,7 @@ pub fn solve(section: &Section) -> Result<SectionSolution, String> {
     let mut supports = Vec::with_capacity(n_sup);
     for i in 0..n_sup {
         let state = match (section.supports[i], layout.support_var[i]) {
-            (Support::Suspension { .. }, Some(j)) => {
+            (Support::Suspension { pivot, crossarm_n_per_m, .. }, Some(j)) => {
                 let (theta, t) = (x[j], x[j + 1]);
                 if t.is_nan() || t <= 0.0 {
                     return Err(format!(
@@ -917,6 +932,7 @@ pub fn solve(section: &Section) -> Result<SectionSolution, String> {
                     insulator_tension_n: t,
                     swing_rad: sin.atan2(cos),
                     force_on_support_n: [t * sin, -t * cos],
+                    pivot: [pivot[0] + t * sin / crossarm_n_per_m, pivot[1]],
                 }
             }
             _ => {
@@ -929,7 +945,13 @@ pub fn solve(section: &Section) -> Result<SectionSolution, String> {
                     f[0] += spans[i].h_n;
                     f[1] -= spans[i].v_left_n;
                 }
-                SupportState { clamp: clamps[i], insulator_tension_n: 0.0, swing_rad: 0.0, force_on_support_n: f }
+                SupportState {
+                    clamp: clamps[i],
+                    insulator_tension_n: 0.0,
+                    swing_rad: 0.0,
+                    force_on_support_n: f,
+                    pivot: clamps[i],
+                }
             }
         };
         supports.push(state);
@@ -1123,7 +1145,13 @@ mod tests {
     }
 
     fn suspension(x: f64, z: f64, length: f64, mass: f64, stiffness: f64) -> Support {
-        Support::Suspension { pivot: [x, z], length_m: length, mass_kg: mass, stiffness_n: stiffness }
+        Support::Suspension {
+            pivot: [x, z],
+            length_m: length,
+            mass_kg: mass,
+            stiffness_n: stiffness,
+            crossarm_n_per_m: f64::INFINITY,
+        }
     }
 
     /// Three level Drake spans of 400 m: dead-ends at the plumb clamp height of the suspensions, strung at H0.
@@ -1355,6 +1383,47 @@ mod tests {
             assert!(rel < 1e-8);
         }
         assert!(sol.spans[1].h_n > 1.01 * sol.spans[0].h_n, "H differs between spans with rigid supports");
+    }
+
+    /// Elastic crossarms: the displaced pivot carries the string's horizontal pull on its spring, and a
+    /// section with rigid pivots placed at the displaced positions has the same equilibrium.
+    #[test]
+    fn elastic_crossarms_move_the_pivots() {
+        let k_arm = 2.0e4;
+        let mut section = three_level_spans(INS_LEN, INS_MASS, INS_EA);
+        section.spans[1].w_n_per_m *= 2.0;
+        let rigid = solve(&section).unwrap();
+        for s in &mut section.supports {
+            if let Support::Suspension { crossarm_n_per_m, .. } = s {
+                *crossarm_n_per_m = k_arm;
+            }
+        }
+        let sol = solve(&section).unwrap();
+        print_solution("elastic crossarms (2e4 N/m), middle span iced", &section, &sol);
+        let mut moved = section.clone();
+        for i in [1, 2] {
+            let st = sol.supports[i];
+            let Support::Suspension { pivot, .. } = section.supports[i] else { panic!("not a suspension") };
+            let d = st.pivot[0] - pivot[0];
+            // spring balance: k d = T sin(theta) (the reference's force tolerance 1e-9 N)
+            assert!((k_arm * d - st.force_on_support_n[0]).abs() < 1e-9, "support {i}");
+            // the pivots move toward the iced span, which lets the strings swing less than on rigid arms
+            assert!(d * rigid.supports[i].swing_rad > 0.0 && st.swing_rad.abs() < rigid.supports[i].swing_rad.abs());
+            println!(
+                "  support {i}: pivot moved {d:.6} m, swing {:.6} rad (rigid {:.6})",
+                st.swing_rad, rigid.supports[i].swing_rad
+            );
+            if let Support::Suspension { pivot, crossarm_n_per_m, .. } = &mut moved.supports[i] {
+                *pivot = st.pivot;
+                *crossarm_n_per_m = f64::INFINITY;
+            }
+        }
+        let same = solve(&moved).unwrap();
+        for i in 0..4 {
+            let (a, b) = (sol.supports[i].clamp, same.supports[i].clamp);
+            // both solved to 1e-11 m closures and 1e-9 N forces
+            assert!((a[0] - b[0]).abs() < 1e-9 && (a[1] - b[1]).abs() < 1e-9, "clamp {i}: {a:?} vs {b:?}");
+        }
     }
 
     /// Test 4: broken middle span.

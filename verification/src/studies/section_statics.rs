@@ -47,6 +47,9 @@
 //!   reference. The discrete hanging piece is exact relative to its clamp (its tension is the weight
 //!   below, sampled at segment midpoints, and the stretch integrand is linear), so its end inherits the
 //!   clamp's error.
+//! * (d) case (b) on elastic crossarms (springs 5e4 N/m along and across the line): the library's Newton
+//!   solves for the pivots too (`ohl::statics::pivots`); the reference's pivot rests at `Q0 + (T sin
+//!   theta / k_a, 0)`. The pivot positions are a further quantity, of order 2 like the clamps.
 //!
 //! Newton runs with the library's default options. With strings of a millimetre or less (limit (i)) it
 //! stops on its iteration limit: the library's rounding floor omits the strings' stiffness (a finding,
@@ -73,8 +76,8 @@
 //!   the residual plus 1e-6 N (the reference's own tolerances are 1e-11 m and 1e-9 N).
 //! * Stringing: the library's span lengths against `exact_section::string_section`, 1e-9 m (both are
 //!   solved to rounding).
-//! * Newton against the settled explicit run (case b, `N` = 10): `1e-8` of the clamps' largest displacement
-//!   from the strung state; the run stops when the kinetic energy is below `1e-20` of its peak, which
+//! * Newton against the settled explicit run (cases b and d, every grid): `1e-8` of the clamps' (and the
+//!   pivots') largest displacement from the strung state; the run stops when the kinetic energy is below `1e-20` of its peak, which
 //!   leaves amplitudes of about `1e-10` of the motion.
 //! * Limit (i): strings of length `l_i` and mass 1e-6 kg against dead-ends at the pivots: the clamps lie
 //!   `l_i (1 + T/EA_i)` from the pivots, and a span's shape responds to a shift `u` of its ends by at most
@@ -102,7 +105,7 @@ use crate::report::{Budget, StudyReport, Table, sci};
 use ohl::scheme::{Explicit, Loads, StepParams, WindGate};
 use ohl::statics::{StaticError, StaticOptions, solve as solve_static};
 use ohl::wire::insulator::clamp_stable_step_s;
-use ohl::wire::section::{self, Layout, Section, Span, Stringing, Support};
+use ohl::wire::section::{self, CrossarmSpec, Layout, Section, Span, Stringing, Support};
 use ohl::wire::tension::LawKind;
 use ohl::wire::{Conductor, Wire};
 use ohl_app::plot::{Chart, Series, Style, render};
@@ -152,13 +155,15 @@ pub enum Case {
     Inclined,
     /// (c) case (a) with the middle span broken at its middle
     Broken,
+    /// (d) case (b) on elastic crossarms
+    Flexible,
     /// limit (ii): four level spans of unequal length, no ice
     LevelUnequal,
 }
 
 impl Case {
     /// the cases of item 1
-    pub const ITEM1: [Case; 3] = [Case::Level, Case::Inclined, Case::Broken];
+    pub const ITEM1: [Case; 4] = [Case::Level, Case::Inclined, Case::Broken, Case::Flexible];
 
     /// short name
     pub fn name(self) -> &'static str {
@@ -166,6 +171,7 @@ impl Case {
             Case::Level => "(a) level",
             Case::Inclined => "(b) inclined + ice",
             Case::Broken => "(c) broken",
+            Case::Flexible => "(d) (b) on elastic crossarms",
             Case::LevelUnequal => "level unequal spans",
         }
     }
@@ -181,7 +187,9 @@ impl Case {
                 let zc = PIVOT_Z - STRING.length_m * (1.0 + t / STRING.stiffness_n);
                 vec![[0.0, zc], [400.0, PIVOT_Z], [800.0, PIVOT_Z], [1200.0, zc]]
             }
-            Case::Inclined => vec![[0.0, 20.0], [350.0, 45.0], [770.0, 30.0], [1150.0, 75.0], [1450.0, 50.0]],
+            Case::Inclined | Case::Flexible => {
+                vec![[0.0, 20.0], [350.0, 45.0], [770.0, 30.0], [1150.0, 75.0], [1450.0, 50.0]]
+            }
             Case::LevelUnequal => {
                 let zc = PIVOT_Z - STRING.length_m;
                 vec![[0.0, zc], [350.0, PIVOT_Z], [770.0, PIVOT_Z], [1150.0, PIVOT_Z], [1450.0, zc]]
@@ -191,7 +199,12 @@ impl Case {
 
     /// the iced span
     fn iced(self) -> Option<usize> {
-        (self == Case::Inclined).then_some(2)
+        matches!(self, Case::Inclined | Case::Flexible).then_some(2)
+    }
+
+    /// the crossarms of the suspension supports: elastic in case (d), else rigid
+    fn crossarm(self) -> Option<CrossarmSpec> {
+        (self == Case::Flexible).then_some(ARM)
     }
 
     /// the broken span
@@ -212,6 +225,13 @@ impl Case {
         }
     }
 }
+
+/// Elastic crossarms of case (d): springs of 5e4 N/m along and across the line (the longitudinal
+/// stiffness of a suspension tower's crossarm tip is of order 1e5 to 1e6 N/m; a softer one makes the
+/// pivots move by centimetres here), 200 kg, and critical damping `2 sqrt(k M)` for the settled run (the
+/// damping vanishes at rest and does not change the equilibrium).
+const ARM: CrossarmSpec =
+    CrossarmSpec { longitudinal_n_per_m: 5.0e4, transverse_n_per_m: 5.0e4, mass_kg: 200.0, damping_n_s_per_m: 6325.0 };
 
 /// Mass damping for the intact sections \[1/s\]: twice the lowest in-plane frequency, about `pi/l
 /// sqrt(H/rho)` = 1 rad/s for 400 m of Drake at 28 kN (near-critical for the slowest mode).
@@ -238,7 +258,7 @@ fn ohl_section(case: Case, n: usize, strings: Option<Strings>) -> Section {
                 length_m: s.length_m,
                 mass_kg: s.mass_kg,
                 stiffness_n: s.stiffness_n,
-                crossarm: None,
+                crossarm: case.crossarm(),
             },
             _ => Support::DeadEnd { point_m: [0.0, x, z] },
         })
@@ -265,6 +285,7 @@ fn exact_supports(case: Case, strings: Option<Strings>) -> Vec<ex::Support> {
                 length_m: s.length_m,
                 mass_kg: s.mass_kg,
                 stiffness_n: s.stiffness_n,
+                crossarm_n_per_m: case.crossarm().map_or(f64::INFINITY, |a| a.longitudinal_n_per_m),
             },
             _ => ex::Support::DeadEnd { point: p },
         })
@@ -506,6 +527,8 @@ pub struct Errors {
     pub sag_m: f64,
     /// lower ends of the broken span's pieces \[m\] (NaN where no span is broken)
     pub piece_end_m: f64,
+    /// crossarm pivots \[m\] (zero on rigid crossarms: both sides leave them where they are)
+    pub pivot_m: f64,
 }
 
 /// Horizontal tension of segment `j` of the library's state \[N\]: `T t . e2`.
@@ -574,6 +597,7 @@ fn compare(s: &Explicit, layout: &Layout, sec: &ex::Section, sol: &ex::SectionSo
         e.force_n = e.force_n.max(gap(f, st.force_on_support_n));
         e.tension_n = e.tension_n.max((ins.tension(c) - st.insulator_tension_n).abs());
         e.swing_rad = e.swing_rad.max((ins.swing_rad(c, layout.along[i])[0] - st.swing_rad).abs());
+        e.pivot_m = e.pivot_m.max(gap(ins.pivot_m, st.pivot));
     }
     e
 }
@@ -636,11 +660,12 @@ struct Quantity {
     panel: Option<usize>,
 }
 
-const QUANTITIES: [Quantity; 7] = [
+const QUANTITIES: [Quantity; 8] = [
     Quantity { name: "mid-span point", unit: "m", get: |e| e.mid_m, checked: true, panel: Some(0) },
     Quantity { name: "clamp position", unit: "m", get: |e| e.clamp_m, checked: true, panel: Some(1) },
     Quantity { name: "insulator force", unit: "N", get: |e| e.force_n, checked: true, panel: Some(2) },
     Quantity { name: "piece end", unit: "m", get: |e| e.piece_end_m, checked: true, panel: None },
+    Quantity { name: "pivot position", unit: "m", get: |e| e.pivot_m, checked: true, panel: None },
     Quantity { name: "max nodal", unit: "m", get: |e| e.nodal_m, checked: false, panel: None },
     Quantity { name: "span H", unit: "N", get: |e| e.h_n, checked: false, panel: None },
     Quantity { name: "string swing", unit: "rad", get: |e| e.swing_rad, checked: false, panel: None },
@@ -652,12 +677,15 @@ fn has_order(case: Case, quantity: &str) -> bool {
     match quantity {
         "clamp position" | "insulator force" | "string swing" => case != Case::Level,
         "piece end" => case == Case::Broken,
+        "pivot position" => case == Case::Flexible,
         _ => true,
     }
 }
 
-/// Newton against the settled explicit run on one grid of case (b).
+/// Newton against the settled explicit run on one grid of case (b) or (d).
 struct Compared {
+    /// the case
+    case: Case,
     /// segments per span
     n: usize,
     /// largest clamp gap \[m\]
@@ -666,6 +694,10 @@ struct Compared {
     moved_m: f64,
     /// largest nodal gap \[m\]
     nodal_gap_m: f64,
+    /// largest pivot gap \[m\] (zero on rigid crossarms)
+    pivot_gap_m: f64,
+    /// largest pivot displacement from rest \[m\]
+    pivot_moved_m: f64,
     /// Newton's cost
     newton: Cost,
     /// the settled run's cost
@@ -687,7 +719,8 @@ pub fn run(budget: Budget, dir: &Path) -> Result<StudyReport, String> {
                   damping) on N = 10 ... 80 segments per span (CI: 10 ... 40) and compared with the independent exact section \
                   (`exact_section`: closed-form elastic catenaries, elastic strings, own Newton), given the \
                   library's own unstretched span lengths. Cases: (a) three level 400 m spans, (b) four inclined \
-                  spans with ice (w x 1.5) on span 2, (c) case (a) with its middle span broken at mid-span. \
+                  spans with ice (w x 1.5) on span 2, (c) case (a) with its middle span broken at mid-span, (d) case (b) on \
+                  elastic crossarms (5e4 N/m; the pivots are unknowns of Newton). \
                   Limits: vanishing strings against dead-ends, plumb strings of a level section strung at one \
                   H0, and the ruling-span approximation after icing all spans."
             .into(),
@@ -839,12 +872,14 @@ pub fn run(budget: Budget, dir: &Path) -> Result<StudyReport, String> {
         ));
     }
 
-    // ---- Newton vs settled explicit, case (b), every grid ----
+    // ---- Newton vs settled explicit, cases (b) and (d), every grid ----
     let mut ntable = Table::new(
         "section_statics_newton_vs_explicit",
-        "Case (b): Newton vs the explicit scheme run to rest from the strung state (Courant 0.9, mass damping 2 /s, \
-         until the kinetic energy is below 1e-20 of its peak or stagnates at rounding)",
+        "Cases (b) and (d): Newton vs the explicit scheme run to rest from the strung state (Courant 0.9, mass \
+         damping 2 /s, crossarms of (d) critically damped, until the kinetic energy is below 1e-20 of its peak or \
+         stagnates at rounding); (d) also compares the pivots",
         &[
+            "case",
             "N per span",
             "clamp gap [m]",
             "largest clamp displacement [m]",
@@ -853,12 +888,15 @@ pub fn run(budget: Budget, dir: &Path) -> Result<StudyReport, String> {
             "Newton",
             "explicit",
             "final / peak kinetic energy",
+            "pivot gap [m] / largest pivot displacement [m]",
         ],
     );
-    let compared: Vec<Compared> = ns
+    let cmp_jobs: Vec<(Case, usize)> =
+        [Case::Inclined, Case::Flexible].iter().flat_map(|&c| ns.iter().map(move |&n| (c, n))).collect();
+    let compared: Vec<Compared> = cmp_jobs
         .par_iter()
-        .map(|&n| {
-            let (mut nw, layout) = library_strung(Case::Inclined, n, Some(STRING), INTACT_DAMPING)?;
+        .map(|&(case, n)| {
+            let (mut nw, layout) = library_strung(case, n, Some(STRING), INTACT_DAMPING)?;
             let strung: Vec<[f64; 3]> = layout.support_node.iter().map(|&i| nw.wire().position(i)).collect();
             let mut dr = nw.clone();
             let newton = newton(&mut nw)?;
@@ -870,11 +908,28 @@ pub fn run(budget: Budget, dir: &Path) -> Result<StudyReport, String> {
             }
             let nodal_gap_m =
                 (0..dr.wire().nodes()).map(|i| dist(nw.wire().position(i), dr.wire().position(i))).fold(0.0, f64::max);
-            Ok::<_, String>(Compared { n, gap_m, moved_m, nodal_gap_m, newton, explicit, dt_s: dr.params().dt_s })
+            let (mut pivot_gap_m, mut pivot_moved_m): (f64, f64) = (0.0, 0.0);
+            for (a, b) in nw.wire().insulators.iter().zip(&dr.wire().insulators) {
+                pivot_gap_m = pivot_gap_m.max(dist(a.pivot_m, b.pivot_m));
+                pivot_moved_m = pivot_moved_m.max(dist(a.pivot_displacement_m(), [0.0; 3]));
+            }
+            Ok::<_, String>(Compared {
+                case,
+                n,
+                gap_m,
+                moved_m,
+                nodal_gap_m,
+                pivot_gap_m,
+                pivot_moved_m,
+                newton,
+                explicit,
+                dt_s: dr.params().dt_s,
+            })
         })
         .collect::<Result<_, _>>()?;
     for c in &compared {
         ntable.row(vec![
+            c.case.name().into(),
             c.n.to_string(),
             sci(c.gap_m),
             format!("{:.6}", c.moved_m),
@@ -895,18 +950,35 @@ pub fn run(budget: Budget, dir: &Path) -> Result<StudyReport, String> {
                 sci(c.explicit.residual_n)
             ),
             sci(c.explicit.kinetic_j.1 / c.explicit.kinetic_j.0),
+            if c.case.crossarm().is_some() {
+                format!("{} / {:.6}", sci(c.pivot_gap_m), c.pivot_moved_m)
+            } else {
+                "-".into()
+            },
         ]);
     }
+    let flexible: Vec<&Compared> = compared.iter().filter(|c| c.case == Case::Flexible).collect();
+    let pivot_worst = flexible.iter().map(|c| c.pivot_gap_m / c.pivot_moved_m).fold(0.0, f64::max);
+    let pivot_moved = flexible.iter().map(|c| c.pivot_moved_m).fold(0.0, f64::max);
+    let arm_iterations: Vec<String> = flexible.iter().map(|c| c.newton.iterations.to_string()).collect();
+    rep.check(
+        "(d) Newton vs settled explicit: crossarm pivots",
+        "< 1e-8 of the largest pivot displacement, every grid",
+        format!("worst {} of {pivot_moved:.5} m; Newton iterations {}", sci(pivot_worst), arm_iterations.join(", ")),
+        pivot_worst < 1e-8,
+    );
     let worst =
         compared.iter().max_by(|a, b| (a.gap_m / a.moved_m).total_cmp(&(b.gap_m / b.moved_m))).ok_or("no grid")?;
-    let (n_cmp, gap_c, moved, rel) = (worst.n, worst.gap_m, worst.moved_m, worst.gap_m / worst.moved_m);
+    let (case_cmp, n_cmp, gap_c, moved, rel) =
+        (worst.case, worst.n, worst.gap_m, worst.moved_m, worst.gap_m / worst.moved_m);
     let coarse = &compared[0];
     rep.check(
-        "(b) Newton vs settled explicit: clamps",
+        "(b), (d) Newton vs settled explicit: clamps",
         "< 1e-8 of the largest clamp displacement, every grid",
         format!(
-            "worst {} at N = {n_cmp} ({} m of {moved:.4} m); N = {}: {} steps, {:.3} s wall vs Newton {:.4} s",
+            "worst {} at {} N = {n_cmp} ({} m of {moved:.4} m); (b) N = {}: {} steps, {:.3} s wall vs Newton {:.4} s",
             sci(rel),
+            case_cmp.name(),
             sci(gap_c),
             coarse.n,
             coarse.explicit.steps,
