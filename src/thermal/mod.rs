@@ -15,11 +15,16 @@
 //! [`joule`], [`radiation`], [`ieee738`] and [`cigre601`] (their convection, solar heating and air
 //! properties), and the [`HeatBalance`] trait that the steady-state and transient solvers use.
 
+pub mod catalog;
 pub mod cigre601;
 pub mod conductor;
+pub mod deicing;
 pub mod ieee738;
 pub mod joule;
+pub mod ode;
 pub mod radiation;
+pub mod steady;
+pub mod transient;
 pub mod weather;
 
 pub use conductor::ThermalConductor;
@@ -56,4 +61,22 @@ pub trait HeatBalance {
 
     /// The conductor's heat capacity per unit length `m c = sum_k m_k c_k` [J/(m K)] (for transients).
     fn heat_capacity_j_per_m_k(&self) -> f64;
+}
+
+/// Which standard's heat balance.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Standard {
+    /// IEEE Std 738-2012 ([`ieee738::Ieee738`])
+    #[default]
+    Ieee738,
+    /// CIGRE TB 601 (2014) ([`cigre601::Cigre601`], level span)
+    Cigre601,
+}
+
+/// The heat balance of `standard` for `conductor` in `weather`.
+pub fn heat_balance(standard: Standard, conductor: ThermalConductor, weather: Weather) -> Box<dyn HeatBalance + Send + Sync> {
+    match standard {
+        Standard::Ieee738 => Box::new(ieee738::Ieee738 { conductor, weather }),
+        Standard::Cigre601 => Box::new(cigre601::Cigre601::new(conductor, weather)),
+    }
 }

@@ -1,0 +1,1 @@
+//! Conductor data of common ACSR and AAAC conductors (to be written).

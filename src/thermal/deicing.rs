@@ -1,0 +1,1 @@
+//! De-icing of a conductor by Joule heating (to be written).

@@ -1,0 +1,1 @@
+//! Steady state (to be written).

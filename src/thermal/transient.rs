@@ -1,0 +1,1 @@
+//! Transient (to be written).
