@@ -36,6 +36,11 @@ pub struct ThermalConductor {
     pub core_mass_kg_per_m: f64,
     /// specific heat of the core at 20 C `c_s` [J/(kg K)] (steel: 481)
     pub core_specific_heat_j_per_kg_k: f64,
+    /// temperature coefficient of the outer layers' specific heat `beta_a` [1/K]: `c_a(T) = c_a (1 + beta_a (T -
+    /// 20 C))` (CIGRE TB 601 section 4.3: 3.8e-4 for aluminium; 0 keeps `c_a` constant, as IEEE 738 does)
+    pub outer_specific_heat_coefficient_per_k: f64,
+    /// temperature coefficient of the core's specific heat `beta_s` [1/K] (CIGRE TB 601: 1.0e-4 for steel)
+    pub core_specific_heat_coefficient_per_k: f64,
 }
 
 impl ThermalConductor {
@@ -43,5 +48,15 @@ impl ThermalConductor {
     pub fn heat_capacity_j_per_m_k(&self) -> f64 {
         self.outer_mass_kg_per_m * self.outer_specific_heat_j_per_kg_k
             + self.core_mass_kg_per_m * self.core_specific_heat_j_per_kg_k
+    }
+
+    /// Heat capacity per unit length at the conductor temperature `temperature_k` [K] with the specific heats'
+    /// temperature coefficients, `m_a c_a (1 + beta_a (T - 20 C)) + m_s c_s (1 + beta_s (T - 20 C))` [J/(m K)]
+    /// (CIGRE TB 601 section 4.3); equal to [`ThermalConductor::heat_capacity_j_per_m_k`] at 20 C or with
+    /// both coefficients zero.
+    pub fn heat_capacity_at_j_per_m_k(&self, temperature_k: f64) -> f64 {
+        let rise = temperature_k - 293.15;
+        self.outer_mass_kg_per_m * self.outer_specific_heat_j_per_kg_k * (1.0 + self.outer_specific_heat_coefficient_per_k * rise)
+            + self.core_mass_kg_per_m * self.core_specific_heat_j_per_kg_k * (1.0 + self.core_specific_heat_coefficient_per_k * rise)
     }
 }

@@ -59,8 +59,12 @@ pub trait HeatBalance {
     /// `current_a` [A].
     fn terms(&self, temperature_k: f64, current_a: f64) -> HeatTerms;
 
-    /// The conductor's heat capacity per unit length `m c = sum_k m_k c_k` [J/(m K)] (for transients).
-    fn heat_capacity_j_per_m_k(&self) -> f64;
+    /// The conductor's heat capacity per unit length `m c = sum_k m_k c_k(T)` [J/(m K)] at the conductor
+    /// temperature `temperature_k` [K] (for transients; [`ThermalConductor::heat_capacity_at_j_per_m_k`]).
+    fn heat_capacity_j_per_m_k(&self, temperature_k: f64) -> f64;
+
+    /// The ambient air temperature `T_a` [K] (the conductor's temperature without current or sun).
+    fn air_temperature_k(&self) -> f64;
 }
 
 /// Which standard's heat balance.

@@ -75,8 +75,12 @@ impl HeatBalance for Cigre601 {
         }
     }
 
-    fn heat_capacity_j_per_m_k(&self) -> f64 {
-        self.conductor.heat_capacity_j_per_m_k()
+    fn heat_capacity_j_per_m_k(&self, temperature_k: f64) -> f64 {
+        self.conductor.heat_capacity_at_j_per_m_k(temperature_k)
+    }
+
+    fn air_temperature_k(&self) -> f64 {
+        self.weather.air_temperature_k
     }
 }
 
@@ -107,6 +111,8 @@ pub(crate) mod tests {
             outer_specific_heat_j_per_kg_k: 897.0,
             core_mass_kg_per_m: 0.5119,
             core_specific_heat_j_per_kg_k: 481.0,
+            outer_specific_heat_coefficient_per_k: 3.8e-4,
+            core_specific_heat_coefficient_per_k: 1.0e-4,
         }
     }
 
@@ -308,7 +314,7 @@ pub(crate) mod tests {
             model.weather.air_temperature_k,
         );
         assert_eq!(q.radiation_w_per_m, r);
-        assert_eq!(model.heat_capacity_j_per_m_k(), 1.116 * 897.0 + 0.5119 * 481.0);
+        assert_eq!(model.heat_capacity_j_per_m_k(293.15), 1.116 * 897.0 + 0.5119 * 481.0);
         // No current, no Joule heating; no sun, no solar heating; at the air temperature no cooling.
         assert_eq!(model.terms(t, 0.0).joule_w_per_m, 0.0);
         let mut night = model.clone();

@@ -84,8 +84,12 @@ impl HeatBalance for Ieee738 {
         }
     }
 
-    fn heat_capacity_j_per_m_k(&self) -> f64 {
-        self.conductor.heat_capacity_j_per_m_k()
+    fn heat_capacity_j_per_m_k(&self, temperature_k: f64) -> f64 {
+        self.conductor.heat_capacity_at_j_per_m_k(temperature_k)
+    }
+
+    fn air_temperature_k(&self) -> f64 {
+        self.weather.air_temperature_k
     }
 }
 
@@ -121,6 +125,8 @@ pub(crate) mod annex_b {
             outer_specific_heat_j_per_kg_k: 897.0,
             core_mass_kg_per_m: 0.5119,
             core_specific_heat_j_per_kg_k: 481.0,
+            outer_specific_heat_coefficient_per_k: 0.0,
+            core_specific_heat_coefficient_per_k: 0.0,
         }
     }
 
@@ -241,7 +247,7 @@ mod tests {
     fn heat_capacity_is_the_conductors() {
         let m = model();
         // 1.116 * 897 + 0.5119 * 481 = 1001.05 + 246.22 = 1247.27 J/(m K).
-        assert_eq!(m.heat_capacity_j_per_m_k(), m.conductor.heat_capacity_j_per_m_k());
-        assert!((m.heat_capacity_j_per_m_k() - (1.116 * 897.0 + 0.5119 * 481.0)).abs() < 1e-9);
+        assert_eq!(m.heat_capacity_j_per_m_k(400.0), m.conductor.heat_capacity_j_per_m_k());
+        assert!((m.heat_capacity_j_per_m_k(300.0) - (1.116 * 897.0 + 0.5119 * 481.0)).abs() < 1e-9);
     }
 }
