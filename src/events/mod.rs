@@ -16,10 +16,13 @@
 //! - `heat_conduction` / `heat_conduction_off`: the heat equation (5.2) along the wire with a held span
 //!   range ([`conduction`]);
 //! - `ground`: contact with the `[ground]` plane on or off (section 4.4).
+//!
+//! A `[thermal]` table plays its temperature history onto the wire before every step ([`heating`]).
 
 pub mod conduction;
 pub mod event;
 pub mod gust;
+pub mod heating;
 pub mod ramp;
 
 use crate::scenario::Plan;
@@ -28,6 +31,7 @@ use crate::scheme::{Explicit, Ground};
 pub use conduction::Conduction;
 pub use event::{Action, Event};
 pub use gust::Gust;
+pub use heating::Heating;
 pub use ramp::Ramp;
 
 /// The timeline and the processes running.
@@ -39,6 +43,7 @@ pub struct EventState {
     gust: Option<Gust>,
     ramps: Vec<Ramp>,
     conduction: Option<Conduction>,
+    heating: Option<Heating>,
     /// events applied so far: (time [s], description)
     pub log: Vec<(f64, String)>,
 }
@@ -53,6 +58,7 @@ impl EventState {
             gust: None,
             ramps: Vec::new(),
             conduction: None,
+            heating: plan.thermal.as_ref().map(|h| Heating::new(h.samples.clone())),
             log: Vec::new(),
         }
     }
@@ -164,8 +170,12 @@ impl EventState {
         }
     }
 
-    /// Before a step from time `t` [s]: the gust multiplier and the temperature ramps at `t`.
+    /// Before a step from time `t` [s]: the gust multiplier, the temperature ramps and the `[thermal]`
+    /// temperature at `t`.
     pub fn before_step(&mut self, solver: &mut Explicit, t: f64) {
+        if let Some(h) = &mut self.heating {
+            h.apply(solver.wire_mut(), t);
+        }
         if let Some(g) = &self.gust {
             solver.loads_mut().wind_scale = g.scale(t);
         }

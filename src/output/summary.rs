@@ -140,4 +140,34 @@ pub struct Summary {
     /// present when the run was stopped as unstable
     #[serde(skip_serializing_if = "Option::is_none")]
     pub instability: Option<InstabilityReport>,
+    /// the conductor temperature of a `[thermal]` table
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub thermal: Option<ThermalSummary>,
+}
+
+/// The conductor temperature of a `[thermal]` run (from its temperature history, computed at every RK4
+/// step of the heat balance).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct ThermalSummary {
+    /// the catalogue conductor
+    pub conductor: String,
+    /// "ieee738" or "cigre601"
+    pub standard: String,
+    /// temperature at t = 0 [K]
+    pub initial_temperature_k: f64,
+    /// temperature at the end of the run [K]
+    pub final_temperature_k: f64,
+    /// highest temperature up to the end of the run [K]
+    pub peak_temperature_k: f64,
+    /// when it was reached [s]
+    pub peak_temperature_time_s: f64,
+    /// a de-icing: when melting began [s] (the conductor reached 0 C)
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub melting_from_s: Option<f64>,
+    /// a de-icing: when the shell shed [s]
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub shed_time_s: Option<f64>,
+    /// a de-icing: the shell's mass [kg/m]
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub ice_kg_per_m: Option<f64>,
 }

@@ -12,7 +12,8 @@
 //! along the line and across it) and `support{k}_arm_dx1_m`, `support{k}_arm_dx2_m` [m] (the crossarm
 //! pivot's displacement; zero for a rigid crossarm); then for each span `k` of a section
 //! `span{k}_max_tension_n` [N] (its largest segment tension) and, with a ground,
-//! `span{k}_clearance_m` [m] (its least vertical clearance `min (x3 - h(x2))` over its nodes).
+//! `span{k}_clearance_m` [m] (its least vertical clearance `min (x3 - h(x2))` over its nodes); then, with
+//! a `[thermal]` table, `temperature_k` [K] (the mean segment temperature: the conductor's).
 
 use std::path::Path;
 
@@ -111,6 +112,8 @@ pub struct LineColumns {
     pub spans: Vec<(usize, usize)>,
     /// the ground, for the spans' clearance
     pub ground: Option<Ground>,
+    /// a `temperature_k` column (the scenario has a `[thermal]` table)
+    pub temperature: bool,
 }
 
 /// Writes `timeseries.csv` (rows reach the file a page at a time, always whole: [`super::rows`]).
@@ -123,6 +126,7 @@ pub struct Timeseries {
     strings: bool,
     spans: Vec<(usize, usize)>,
     ground: Option<Ground>,
+    temperature: bool,
 }
 
 impl Timeseries {
@@ -135,7 +139,7 @@ impl Timeseries {
         probes: Vec<ProbePoint>,
         line: LineColumns,
     ) -> Result<Self, OutputError> {
-        let LineColumns { supports, strings: suspensions, spans, ground } = line;
+        let LineColumns { supports, strings: suspensions, spans, ground, temperature } = line;
         let mut header: Vec<String> = Sample::COLUMNS.map(String::from).into();
         for p in &probes {
             header.extend((1..=3).map(|k| format!("{}_dx{k}_m", p.name)));
@@ -154,6 +158,9 @@ impl Timeseries {
                 header.push(format!("span{k}_clearance_m"));
             }
         }
+        if temperature {
+            header.push("temperature_k".into());
+        }
         let file = RowFile::create(path, &header).map_err(OutputError::at(path))?;
         let strings = !suspensions.is_empty();
         Ok(Timeseries {
@@ -165,6 +172,7 @@ impl Timeseries {
             strings,
             spans,
             ground,
+            temperature,
         })
     }
 }
@@ -207,6 +215,10 @@ impl Observer for Timeseries {
             if let Some(g) = &self.ground {
                 f.number(g.least_clearance_m(&w.x, first..=last));
             }
+        }
+        if self.temperature {
+            let t = &level.solver.wire().temperature_k;
+            f.number(t.iter().sum::<f64>() / t.len() as f64);
         }
         f.end_row();
         f.commit().map_err(OutputError::at(f.path()))?;

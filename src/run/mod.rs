@@ -164,6 +164,7 @@ pub fn run_observed<'o>(
                 strings,
                 spans: plan.spans.clone(),
                 ground: plan.ground.clone(),
+                temperature: plan.thermal.is_some(),
             };
             let ts = Timeseries::create(&path, plan.sample_interval_s, mid, named, line)?;
             (Some(ts), Some(Snapshots::create(&d.join("snapshots.csv"), plan.snapshot_times_s.clone())?))
@@ -261,6 +262,7 @@ pub fn run_observed<'o>(
             Ending::Unstable(f) => Some(InstabilityReport { time_s: f.time_s, node: f.node, reason: f.to_string() }),
             _ => None,
         },
+        thermal: plan.thermal.as_ref().map(|h| thermal_summary(h, t)),
     };
     if let Some(d) = &opts.out_dir {
         write_summary(d, &summary)?;
@@ -273,6 +275,31 @@ pub fn run_observed<'o>(
     match ending {
         Ending::Unstable(instability) => Err(RunError::Unstable { instability, outcome: Box::new(outcome) }),
         _ => Ok(outcome),
+    }
+}
+
+/// The temperature summary of a `[thermal]` history up to the end time `t_end` [s].
+fn thermal_summary(h: &crate::scenario::thermal::ThermalHistory, t_end: f64) -> crate::output::summary::ThermalSummary {
+    let mut play = crate::events::Heating::new(h.samples.clone());
+    let (mut peak, mut peak_t) = (f64::NEG_INFINITY, 0.0);
+    for &(t, k) in h.samples.iter().take_while(|p| p.0 <= t_end) {
+        if k > peak {
+            (peak, peak_t) = (k, t);
+        }
+    }
+    crate::output::summary::ThermalSummary {
+        conductor: h.conductor.clone(),
+        standard: match h.standard {
+            crate::thermal::Standard::Ieee738 => "ieee738".into(),
+            crate::thermal::Standard::Cigre601 => "cigre601".into(),
+        },
+        initial_temperature_k: h.samples[0].1,
+        final_temperature_k: play.temperature_at(t_end),
+        peak_temperature_k: peak,
+        peak_temperature_time_s: peak_t,
+        melting_from_s: h.shed.as_ref().map(|s| s.melting_from_s),
+        shed_time_s: h.shed.as_ref().map(|s| s.time_s),
+        ice_kg_per_m: h.shed.as_ref().map(|s| s.ice_kg_per_m),
     }
 }
 

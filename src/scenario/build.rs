@@ -80,6 +80,8 @@ pub struct Plan {
     pub warnings: Vec<super::Warning>,
     /// the spans of a `[section]` as (first node, last node); empty for a `[geometry]` scenario
     pub spans: Vec<(usize, usize)>,
+    /// the conductor's temperature history of a `[thermal]` table, played onto the wire during the run
+    pub thermal: Option<super::thermal::ThermalHistory>,
 }
 
 impl Plan {
@@ -335,6 +337,34 @@ pub fn build(s: &Scenario) -> Result<Plan, Vec<Problem>> {
         }
     }
     probes.extend(s.output.probes.iter().map(|p| (p.name.clone(), ProbeAt::Line(p.at_fraction))));
+    // The `[thermal]` history: its temperature at t = 0 is the initial state (and that of the static
+    // solve); a de-icing shell is ice on its spans from t = 0 and sheds at its computed time.
+    let horizon = match stop {
+        Stop::EndTime(t) => t,
+        Stop::Settled { max_time_s, .. } => max_time_s,
+    };
+    let thermal = match &s.thermal {
+        Some(t) => Some(super::thermal::thermal_history(t, horizon, &spans).map_err(|p| vec![p])?),
+        None => None,
+    };
+    if let Some(h) = &thermal {
+        wire.set_temperature(0..n, h.samples[0].1);
+        if let Some(shed) = &h.shed {
+            for &k in &shed.spans {
+                let (first, n_k) = spans[k];
+                let segments = first..first + n_k;
+                events.push(Event {
+                    time_s: 0.0,
+                    action: Action::Ice { segments: segments.clone(), delta_kg_per_m: shed.ice_kg_per_m },
+                });
+                events.push(Event {
+                    time_s: shed.time_s,
+                    action: Action::Ice { segments, delta_kg_per_m: -shed.ice_kg_per_m },
+                });
+            }
+            events.sort_by(|p, q| p.time_s.total_cmp(&q.time_s));
+        }
+    }
     let mut solver = Explicit::new(wire, loads, params);
     let initial_equilibrium = match s.initial.shape {
         ShapeSpec::Equilibrium => {
@@ -374,6 +404,7 @@ pub fn build(s: &Scenario) -> Result<Plan, Vec<Problem>> {
         initial_equilibrium,
         warnings: super::warnings::warnings(s),
         spans: if d.section.is_some() { spans.iter().map(|&(f, n)| (f, f + n)).collect() } else { Vec::new() },
+        thermal,
     })
 }
 

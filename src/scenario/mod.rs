@@ -10,6 +10,7 @@ pub mod events;
 mod locate;
 pub mod schema;
 pub mod section;
+pub mod thermal;
 pub mod validate;
 pub mod warnings;
 pub mod work;

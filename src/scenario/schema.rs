@@ -45,6 +45,10 @@ pub struct Scenario {
     /// the event timeline (breaks, ice, wind and gusts, temperature, heat conduction, ground contact)
     #[serde(default)]
     pub events: Vec<EventSpec>,
+    /// the conductor's temperature from its current and the weather (IEEE 738 / CIGRE TB 601), and an
+    /// optional de-icing ([`super::thermal`])
+    #[serde(default)]
+    pub thermal: Option<super::thermal::ThermalSpec>,
     /// the `[paper]` table of a case of `paper_cases/`: checks read by the paper tool (`ohl paper`, in the
     /// `ohl-app` crate); ignored by the library, which does not know its schema
     #[serde(default)]

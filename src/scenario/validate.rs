@@ -554,6 +554,29 @@ pub(crate) fn check(s: &Scenario) -> (Vec<Problem>, Derived) {
     };
     let initial = section_grid.as_ref().map(|sg| &sg.wire.x);
     check_ground_and_events(&mut c, s, end, &spans, n_total, initial, derived.dt_s);
+    if let Some(t) = &s.thermal {
+        let temperature_event = s.events.iter().position(|e| {
+            matches!(
+                e,
+                EventSpec::Temperature { .. } | EventSpec::HeatConduction { .. } | EventSpec::HeatConductionOff { .. }
+            )
+        });
+        super::thermal::check(&mut c, t, temperature_event);
+        if let (Some(d), Some(sg)) = (&t.deicing, &section_grid)
+            && let Some(list) = &d.spans
+        {
+            let n_spans = sg.layout.first_node.len() - 1;
+            for (k, &span) in list.iter().enumerate() {
+                if span >= n_spans {
+                    c.fail(
+                        &format!("thermal.deicing.spans[{k}]"),
+                        span,
+                        &format!("must be a span of the section, in [0, {}]", n_spans - 1),
+                    );
+                }
+            }
+        }
+    }
     derived.section = section_grid;
     (c.0, derived)
 }

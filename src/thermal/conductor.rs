@@ -56,7 +56,11 @@ impl ThermalConductor {
     /// both coefficients zero.
     pub fn heat_capacity_at_j_per_m_k(&self, temperature_k: f64) -> f64 {
         let rise = temperature_k - 293.15;
-        self.outer_mass_kg_per_m * self.outer_specific_heat_j_per_kg_k * (1.0 + self.outer_specific_heat_coefficient_per_k * rise)
-            + self.core_mass_kg_per_m * self.core_specific_heat_j_per_kg_k * (1.0 + self.core_specific_heat_coefficient_per_k * rise)
+        self.outer_mass_kg_per_m
+            * self.outer_specific_heat_j_per_kg_k
+            * (1.0 + self.outer_specific_heat_coefficient_per_k * rise)
+            + self.core_mass_kg_per_m
+                * self.core_specific_heat_j_per_kg_k
+                * (1.0 + self.core_specific_heat_coefficient_per_k * rise)
     }
 }

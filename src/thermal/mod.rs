@@ -78,9 +78,50 @@ pub enum Standard {
 }
 
 /// The heat balance of `standard` for `conductor` in `weather`.
-pub fn heat_balance(standard: Standard, conductor: ThermalConductor, weather: Weather) -> Box<dyn HeatBalance + Send + Sync> {
-    match standard {
-        Standard::Ieee738 => Box::new(ieee738::Ieee738 { conductor, weather }),
-        Standard::Cigre601 => Box::new(cigre601::Cigre601::new(conductor, weather)),
+pub fn heat_balance(
+    standard: Standard,
+    conductor: ThermalConductor,
+    weather: Weather,
+) -> Box<dyn HeatBalance + Send + Sync> {
+    Box::new(Model::new(standard, conductor, weather))
+}
+
+/// The heat balance of either standard, as a value (clonable, unlike a boxed trait object).
+#[derive(Clone, Debug, PartialEq)]
+pub enum Model {
+    /// IEEE Std 738-2012
+    Ieee738(ieee738::Ieee738),
+    /// CIGRE TB 601, level span
+    Cigre601(cigre601::Cigre601),
+}
+
+impl Model {
+    /// The heat balance of `standard` for `conductor` in `weather`.
+    pub fn new(standard: Standard, conductor: ThermalConductor, weather: Weather) -> Self {
+        match standard {
+            Standard::Ieee738 => Model::Ieee738(ieee738::Ieee738 { conductor, weather }),
+            Standard::Cigre601 => Model::Cigre601(cigre601::Cigre601::new(conductor, weather)),
+        }
+    }
+
+    fn inner(&self) -> &dyn HeatBalance {
+        match self {
+            Model::Ieee738(m) => m,
+            Model::Cigre601(m) => m,
+        }
+    }
+}
+
+impl HeatBalance for Model {
+    fn terms(&self, temperature_k: f64, current_a: f64) -> HeatTerms {
+        self.inner().terms(temperature_k, current_a)
+    }
+
+    fn heat_capacity_j_per_m_k(&self, temperature_k: f64) -> f64 {
+        self.inner().heat_capacity_j_per_m_k(temperature_k)
+    }
+
+    fn air_temperature_k(&self) -> f64 {
+        self.inner().air_temperature_k()
     }
 }

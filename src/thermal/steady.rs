@@ -190,7 +190,10 @@ mod tests {
         let t_max = 273.15 + 100.0;
         let a = ampacity(&model, t_max).unwrap();
         let s = temperature(&model, a.current_a).unwrap();
-        println!("ampacity {:.3} A; its steady temperature {:.9} K ({} evaluations)", a.current_a, s.temperature_k, s.evaluations);
+        println!(
+            "ampacity {:.3} A; its steady temperature {:.9} K ({} evaluations)",
+            a.current_a, s.temperature_k, s.evaluations
+        );
         // The bracket closes to 1e-9 K; the root of N is then known to that width.
         assert!((s.temperature_k - t_max).abs() < 1e-8);
         assert!(s.terms.net_w_per_m().abs() < 1e-6, "net {} W/m", s.terms.net_w_per_m());

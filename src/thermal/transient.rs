@@ -204,8 +204,13 @@ mod tests {
             albedo: 1.0,
             measured_global_w_per_m2: None,
         };
-        let weather =
-            Weather { air_temperature_k: K + air_c, wind_speed_m_per_s: wind, wind_angle_deg: angle_deg, elevation_m: 0.0, sun: Some(sun) };
+        let weather = Weather {
+            air_temperature_k: K + air_c,
+            wind_speed_m_per_s: wind,
+            wind_angle_deg: angle_deg,
+            elevation_m: 0.0,
+            sun: Some(sun),
+        };
         Cigre601::new(c, weather)
     }
 

@@ -1,0 +1,416 @@
+//! The `[thermal]` table of a scenario: the conductor's temperature from its current and the weather
+//! (IEEE Std 738-2012 or CIGRE TB 601, [`crate::thermal`]) drives every segment's temperature, hence its
+//! stress-free length (5.5) and the sag, during the run and in the initial static solve; optionally an ice
+//! shell melted by the current ([`crate::thermal::deicing`]), which sheds from its spans when it has
+//! melted through.
+//!
+//! The heat balance does not depend on the wire's motion, so the whole temperature history is computed
+//! before the run ([`thermal_history`]): RK4 steps of at most `step_s`, landing on the current schedule's
+//! points; during the run each time level takes the linear interpolant of that history (error about
+//! `h^2 |T''| / 8`, below 1e-4 K for `h` = 1 s and the conductor's time constant of minutes), sets it on
+//! every segment and rescales the stress-free lengths.
+//!
+//! ```toml
+//! [thermal]
+//! standard = "ieee738"                  # or "cigre601"
+//! conductor = "ACSR Drake"              # a name of the conductor catalogue (data/conductors.toml)
+//! current_a = [[0.0, 400.0], [600.0, 400.0], [600.0, 1200.0]]   # (t [s], I [A]) points: a step at 600 s
+//! [thermal.weather]
+//! air_temperature_k = 298.15
+//! wind_speed_m_per_s = 0.61
+//! wind_angle_deg = 90.0                 # between the wind and the line's axis
+//! ```
+
+use serde::Deserialize;
+
+use super::Problem;
+use super::validate::Check;
+use crate::thermal::deicing::{Deicing, DeicingOptions, IceShell, MELTING_POINT_K, ShedCriterion};
+use crate::thermal::transient::{CurrentSchedule, Transient};
+use crate::thermal::weather::{Atmosphere, Sun, Weather};
+use crate::thermal::{Model, Standard, ThermalConductor, catalog, steady};
+
+/// The heat-balance standard.
+#[derive(Clone, Copy, Debug, Default, Deserialize, PartialEq, Eq)]
+#[serde(rename_all = "snake_case")]
+pub enum StandardSpec {
+    /// IEEE Std 738-2012 (default)
+    #[default]
+    Ieee738,
+    /// CIGRE TB 601 (2014)
+    Cigre601,
+}
+
+impl From<StandardSpec> for Standard {
+    fn from(s: StandardSpec) -> Self {
+        match s {
+            StandardSpec::Ieee738 => Standard::Ieee738,
+            StandardSpec::Cigre601 => Standard::Cigre601,
+        }
+    }
+}
+
+/// The sun's position and the sky (omit the table for a night: no solar heating).
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SunSpec {
+    /// latitude `Lat` [deg], in [-90, 90], north positive
+    pub latitude_deg: f64,
+    /// day of the year `N` [-], in [1, 366]
+    pub day_of_year: f64,
+    /// local solar time [h], in [0, 24] (12 = solar noon)
+    pub solar_hour: f64,
+    /// azimuth of the line's axis `Z_l` [deg], in [0, 360], clockwise from north (90: east-west)
+    pub line_azimuth_deg: f64,
+    /// IEEE 738 clear-sky model: `"clear"` (default) or `"industrial"`
+    #[serde(default)]
+    pub atmosphere: AtmosphereSpec,
+    /// CIGRE TB 601 clearness ratio `N_s` [-], in [0, 1.5]; default 1 (clean sky)
+    #[serde(default = "one")]
+    pub clearness_ratio: f64,
+    /// ground albedo `F` [-], in [0, 1]; default 0.1 (rural ground, TB 601 table)
+    #[serde(default = "albedo")]
+    pub albedo: f64,
+    /// measured global horizontal radiation [W/m^2], in [0, 1500] (TB 601 only; replaces the computed one)
+    #[serde(default)]
+    pub measured_global_w_per_m2: Option<f64>,
+}
+
+fn one() -> f64 {
+    1.0
+}
+
+fn albedo() -> f64 {
+    0.1
+}
+
+/// IEEE 738 atmosphere.
+#[derive(Clone, Copy, Debug, Default, Deserialize, PartialEq, Eq)]
+#[serde(rename_all = "snake_case")]
+pub enum AtmosphereSpec {
+    /// clear (default)
+    #[default]
+    Clear,
+    /// industrial
+    Industrial,
+}
+
+/// The weather at the conductor.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct WeatherSpec {
+    /// ambient air temperature `T_a` [K], in [200, 350]
+    pub air_temperature_k: f64,
+    /// wind speed `V_w` [m/s], in [0, 50]
+    pub wind_speed_m_per_s: f64,
+    /// angle between the wind and the line's axis `phi` [deg], in [0, 180]; default 90 (perpendicular)
+    #[serde(default = "perpendicular")]
+    pub wind_angle_deg: f64,
+    /// elevation above sea level `H_e` [m], in [0, 6000]; default 0
+    #[serde(default)]
+    pub elevation_m: f64,
+    /// the sun; omit for a night
+    #[serde(default)]
+    pub sun: Option<SunSpec>,
+}
+
+fn perpendicular() -> f64 {
+    90.0
+}
+
+/// Shedding criterion of a de-icing ice shell.
+#[derive(Clone, Copy, Debug, Default, Deserialize, PartialEq, Eq)]
+#[serde(rename_all = "snake_case")]
+pub enum ShedSpec {
+    /// the conductor melts a slot of its own width through the top of the shell (default)
+    #[default]
+    Slot,
+    /// the whole shell melts (an upper bound on the time)
+    FullMelt,
+}
+
+/// An ice shell on the conductor at `t = 0`, melted by the current (`[thermal.deicing]`).
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct DeicingSpec {
+    /// radial ice thickness `t` [m], in (0, 0.1]
+    pub thickness_m: f64,
+    /// ice density `rho_i` [kg/m^3], in [100, 1000]; default 900 (glaze, IEC 60826)
+    #[serde(default = "glaze_density")]
+    pub density_kg_per_m3: f64,
+    /// the iced spans of a `[section]` (0-based); default all; omit for a single span
+    #[serde(default)]
+    pub spans: Option<Vec<usize>>,
+    /// when the shell sheds: `"slot"` (default) or `"full_melt"`
+    #[serde(default)]
+    pub criterion: ShedSpec,
+}
+
+fn glaze_density() -> f64 {
+    900.0
+}
+
+/// The `[thermal]` table.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ThermalSpec {
+    /// heat-balance standard: `"ieee738"` (default) or `"cigre601"`
+    #[serde(default)]
+    pub standard: StandardSpec,
+    /// the conductor's thermal data by its name in the conductor catalogue (`data/conductors.toml`, e.g.
+    /// "ACSR Drake"); its mechanical data stay those of `[conductor]`
+    pub conductor: String,
+    /// the weather, constant over the run
+    pub weather: WeatherSpec,
+    /// the current as `[t [s], I [A]]` points: piecewise linear, constant before the first and after the
+    /// last, a step where two points share a time; times non-decreasing in [0, 1e8] s, currents in
+    /// [0, 1e5] A
+    pub current_a: Vec<[f64; 2]>,
+    /// the longest RK4 step of the heat balance [s], in [1e-3, 600]; default 1 s
+    #[serde(default = "thermal_step")]
+    pub step_s: f64,
+    /// the conductor's temperature at `t = 0` [K], in [200, 500]; default the steady state of the current
+    /// at `t = 0`
+    #[serde(default)]
+    pub initial_temperature_k: Option<f64>,
+    /// an ice shell melted by the current
+    #[serde(default)]
+    pub deicing: Option<DeicingSpec>,
+}
+
+fn thermal_step() -> f64 {
+    1.0
+}
+
+/// The weather of the spec.
+pub fn weather(w: &WeatherSpec) -> Weather {
+    Weather {
+        air_temperature_k: w.air_temperature_k,
+        wind_speed_m_per_s: w.wind_speed_m_per_s,
+        wind_angle_deg: w.wind_angle_deg,
+        elevation_m: w.elevation_m,
+        sun: w.sun.as_ref().map(|s| Sun {
+            latitude_deg: s.latitude_deg,
+            day_of_year: s.day_of_year,
+            solar_hour: s.solar_hour,
+            line_azimuth_deg: s.line_azimuth_deg,
+            atmosphere: match s.atmosphere {
+                AtmosphereSpec::Clear => Atmosphere::Clear,
+                AtmosphereSpec::Industrial => Atmosphere::Industrial,
+            },
+            clearness_ratio: s.clearness_ratio,
+            albedo: s.albedo,
+            measured_global_w_per_m2: s.measured_global_w_per_m2,
+        }),
+    }
+}
+
+/// Check a weather table under the field prefix `at` (e.g. `thermal.weather`).
+pub fn check_weather(c: &mut Check, at: &str, w: &WeatherSpec) {
+    c.within(
+        &format!("{at}.air_temperature_k"),
+        w.air_temperature_k,
+        200.0,
+        350.0,
+        "must be in [200, 350] K (-73 to 77 C)",
+    );
+    c.within(&format!("{at}.wind_speed_m_per_s"), w.wind_speed_m_per_s, 0.0, 50.0, "must be in [0, 50] m/s");
+    c.within(&format!("{at}.wind_angle_deg"), w.wind_angle_deg, 0.0, 180.0, "must be in [0, 180] deg");
+    c.within(&format!("{at}.elevation_m"), w.elevation_m, 0.0, 6000.0, "must be in [0, 6000] m");
+    if let Some(s) = &w.sun {
+        c.within(&format!("{at}.sun.latitude_deg"), s.latitude_deg, -90.0, 90.0, "must be in [-90, 90] deg");
+        c.within(&format!("{at}.sun.day_of_year"), s.day_of_year, 1.0, 366.0, "must be in [1, 366]");
+        c.within(&format!("{at}.sun.solar_hour"), s.solar_hour, 0.0, 24.0, "must be in [0, 24] h");
+        c.within(&format!("{at}.sun.line_azimuth_deg"), s.line_azimuth_deg, 0.0, 360.0, "must be in [0, 360] deg");
+        c.within(&format!("{at}.sun.clearness_ratio"), s.clearness_ratio, 0.0, 1.5, "must be in [0, 1.5]");
+        c.within(&format!("{at}.sun.albedo"), s.albedo, 0.0, 1.0, "must be in [0, 1]");
+        if let Some(g) = s.measured_global_w_per_m2 {
+            c.within(&format!("{at}.sun.measured_global_w_per_m2"), g, 0.0, 1500.0, "must be in [0, 1500] W/m^2");
+        }
+    }
+}
+
+/// The catalogue conductor named at `field`, or a problem naming the names available.
+pub fn conductor(c: &mut Check, field: &str, name: &str) -> Option<ThermalConductor> {
+    match catalog::find(name) {
+        Ok(k) => Some(k.thermal()),
+        Err(e) => {
+            c.fail(field, format!("{name:?}"), &e.to_string());
+            None
+        }
+    }
+}
+
+/// Check the current points under `field`; the schedule if they are valid.
+pub fn check_current(c: &mut Check, field: &str, points: &[[f64; 2]]) -> Option<CurrentSchedule> {
+    if points.is_empty() {
+        c.fail(field, "[]", "must have at least one [t_s, I_a] point");
+        return None;
+    }
+    let mut ok = true;
+    for (k, p) in points.iter().enumerate() {
+        ok &=
+            c.within(&format!("{field}[{k}][0]"), p[0], 0.0, super::validate::MAX_TIME_S, "time must be in [0, 1e8] s");
+        ok &= c.within(&format!("{field}[{k}][1]"), p[1], 0.0, 1.0e5, "current must be in [0, 1e5] A");
+        if k > 0 && p[0] < points[k - 1][0] {
+            c.fail(&format!("{field}[{k}][0]"), p[0], "times must not decrease (equal times make a step)");
+            ok = false;
+        }
+    }
+    if !ok {
+        return None;
+    }
+    CurrentSchedule::new(points.iter().map(|p| (p[0], p[1])).collect())
+}
+
+/// Check the `[thermal]` table; `has_temperature_events` refuses it together with temperature or heat
+/// conduction events (the thermal model owns the temperature).
+pub(crate) fn check(c: &mut Check, t: &ThermalSpec, temperature_event: Option<usize>) {
+    conductor(c, "thermal.conductor", &t.conductor);
+    check_weather(c, "thermal.weather", &t.weather);
+    check_current(c, "thermal.current_a", &t.current_a);
+    c.within("thermal.step_s", t.step_s, 1.0e-3, 600.0, "must be in [1e-3, 600] s");
+    if let Some(k) = t.initial_temperature_k {
+        c.within("thermal.initial_temperature_k", k, 200.0, 500.0, "must be in [200, 500] K");
+    }
+    if let Some(k) = temperature_event {
+        c.fail(
+            &format!("events[{k}].action"),
+            "a temperature or heat-conduction event",
+            "is not allowed with [thermal]: the heat balance sets the conductor's temperature",
+        );
+    }
+    if let Some(d) = &t.deicing {
+        c.within("thermal.deicing.thickness_m", d.thickness_m, 1.0e-4, 0.1, "must be in [1e-4, 0.1] m");
+        c.within(
+            "thermal.deicing.density_kg_per_m3",
+            d.density_kg_per_m3,
+            100.0,
+            1000.0,
+            "must be in [100, 1000] kg/m^3",
+        );
+        let constant = t.current_a.windows(2).all(|w| w[0][1] == w[1][1]);
+        if !constant {
+            c.fail(
+                "thermal.current_a",
+                "a varying current",
+                "must be constant with [thermal.deicing] (the de-icing model takes one current)",
+            );
+        }
+    }
+}
+
+/// The temperature history of a run: `(t [s], T [K])` at every RK4 step, and what it came from.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ThermalHistory {
+    /// the samples, times increasing from 0 to at least the horizon
+    pub samples: Vec<(f64, f64)>,
+    /// the conductor's name
+    pub conductor: String,
+    /// the standard
+    pub standard: Standard,
+    /// a de-icing: when the shell sheds [s], its mass [kg/m] and the segments it covers (span ranges)
+    pub shed: Option<Shed>,
+}
+
+/// The shedding of a de-icing shell.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Shed {
+    /// when it sheds [s]
+    pub time_s: f64,
+    /// when the conductor reached 0 C and melting began [s]
+    pub melting_from_s: f64,
+    /// the shell's mass per unit length [kg/m]
+    pub ice_kg_per_m: f64,
+    /// the iced spans (0-based)
+    pub spans: Vec<usize>,
+}
+
+/// The temperature history of `t` up to `horizon_s` [s] (module doc), or a problem; `spans` are the line's
+/// spans as (first segment, segments) for a de-icing shell.
+///
+/// With `[thermal.deicing]` the history is the de-icing model's (conductor and ice warming to 0 C, then
+/// melting at 0 C) until the shell sheds, then the bare conductor's transient from 0 C with the same
+/// current. The shell's whole mass stays on the span until it sheds (the melt water is taken to stay in
+/// the shell; the melted slot is a quarter of a 10 mm shell on Drake), so the jump at shedding is that of
+/// the full shell.
+pub(crate) fn thermal_history(
+    t: &ThermalSpec,
+    horizon_s: f64,
+    spans: &[(usize, usize)],
+) -> Result<ThermalHistory, Problem> {
+    let mut c = Check(Vec::new());
+    let name = catalog::find(&t.conductor).map(|k| k.name.clone()).unwrap_or_else(|_| t.conductor.clone());
+    let (Some(conductor), Some(schedule)) = (
+        conductor(&mut c, "thermal.conductor", &t.conductor),
+        check_current(&mut c, "thermal.current_a", &t.current_a),
+    ) else {
+        return Err(c.0.remove(0));
+    };
+    let model = Model::new(t.standard.into(), conductor.clone(), weather(&t.weather));
+    if let Some(d) = &t.deicing {
+        return deicing_history(t, d, conductor, &model, &schedule, horizon_s, spans)
+            .map(|h| ThermalHistory { conductor: name, ..h });
+    }
+    let initial = match t.initial_temperature_k {
+        Some(k) => k,
+        None => steady::temperature(&model, schedule.at(0.0)).map(|s| s.temperature_k).map_err(|e| Problem {
+            field: "thermal.current_a".into(),
+            value: format!("{} A at t = 0", schedule.at(0.0)),
+            allowed: format!("must have a steady state to start from: {e}"),
+        })?,
+    };
+    let tr = Transient { model: &model, current: &schedule, step_s: t.step_s };
+    let samples = tr.run(0.0, initial, horizon_s).into_iter().map(|s| (s.time_s, s.temperature_k)).collect();
+    Ok(ThermalHistory { samples, conductor: name, standard: t.standard.into(), shed: None })
+}
+
+/// The history of a de-icing (see [`thermal_history`]).
+fn deicing_history(
+    t: &ThermalSpec,
+    d: &DeicingSpec,
+    conductor: ThermalConductor,
+    model: &Model,
+    schedule: &CurrentSchedule,
+    horizon_s: f64,
+    spans: &[(usize, usize)],
+) -> Result<ThermalHistory, Problem> {
+    let current = schedule.at(0.0);
+    let mut ice = IceShell::glaze(d.thickness_m);
+    ice.density_kg_per_m3 = d.density_kg_per_m3;
+    let mut de = Deicing::new(conductor, weather(&t.weather), t.standard.into(), ice);
+    de.criterion = match d.criterion {
+        ShedSpec::Slot => ShedCriterion::Slot,
+        ShedSpec::FullMelt => ShedCriterion::FullMelt,
+    };
+    let opts = DeicingOptions {
+        step_s: t.step_s,
+        max_time_s: horizon_s,
+        initial_temperature_k: t.initial_temperature_k,
+        record_every_s: 0.0,
+        ..Default::default()
+    };
+    let r = de.run(current, &opts).map_err(|e| Problem {
+        field: "thermal.deicing".into(),
+        value: format!("{} m of ice at {current} A", d.thickness_m),
+        allowed: format!("must shed within the run ({horizon_s} s): {e}"),
+    })?;
+    let mut samples: Vec<(f64, f64)> = r.series.iter().map(|p| (p.time_s, p.conductor_k)).collect();
+    // After shedding: the bare conductor from the melting point with the same current.
+    let tr = Transient { model, current: schedule, step_s: t.step_s };
+    let last = samples.last().map_or(r.shed_time_s, |p| p.0);
+    let from_k = samples.last().map_or(MELTING_POINT_K, |p| p.1);
+    samples.extend(tr.run(last, from_k, horizon_s.max(last)).into_iter().skip(1).map(|s| (s.time_s, s.temperature_k)));
+    let iced: Vec<usize> = d.spans.clone().unwrap_or_else(|| (0..spans.len()).collect());
+    Ok(ThermalHistory {
+        samples,
+        conductor: t.conductor.clone(),
+        standard: t.standard.into(),
+        shed: Some(Shed {
+            time_s: r.shed_time_s,
+            melting_from_s: r.warm_time_s,
+            ice_kg_per_m: r.ice_mass_kg_per_m,
+            spans: iced,
+        }),
+    })
+}
