@@ -4,7 +4,10 @@
 //!   `DIR/snapshots.csv` and `DIR/summary.json`;
 //! - `ohl paper CASE|all` reproduces a case of the paper into `figures/`;
 //! - `ohl cases CASE|all` runs a line-section case of `cases/` into `figures/cases/`;
-//! - `ohl bench` measures the explicit kernel's throughput.
+//! - `ohl bench` measures the explicit kernel's throughput;
+//! - `ohl thermal CASE.toml` evaluates a conductor's heat balance (steady temperature, ampacity, transient,
+//!   de-icing);
+//! - `ohl rating SCENARIO.toml` rates a span or section by clearance or sag (steady, and after a step).
 //!
 //! Exit codes: 0 success; 1 the run went unstable (or an output file could not be written), and what
 //! was written so far stays readable; 2 the scenario is invalid (the message names the file, the field,
@@ -33,6 +36,12 @@ enum Command {
     Cases(cli::cases::CasesArgs),
     /// Measure the throughput of the explicit kernel (node-steps per second).
     Bench(cli::bench::BenchArgs),
+    /// Heat balance of a conductor (IEEE 738 / CIGRE TB 601): steady temperature, ampacity, transient,
+    /// de-icing; writes thermal.json, transient.csv, deicing.csv.
+    Thermal(cli::thermal::ThermalArgs),
+    /// Thermal rating of a span or section by ground clearance or sag, steady and after a current step;
+    /// writes rating.json.
+    Rating(cli::rating::RatingArgs),
 }
 
 fn main() -> ExitCode {
@@ -41,5 +50,7 @@ fn main() -> ExitCode {
         Command::Paper(a) => cli::paper::main(a),
         Command::Cases(a) => cli::cases::main(a),
         Command::Bench(a) => cli::bench::main(a),
+        Command::Thermal(a) => cli::thermal::main(a),
+        Command::Rating(a) => cli::rating::main(a),
     }
 }

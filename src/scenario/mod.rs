@@ -8,6 +8,7 @@
 pub mod build;
 pub mod events;
 mod locate;
+pub mod rating;
 pub mod schema;
 pub mod section;
 pub mod thermal;

@@ -49,6 +49,9 @@ pub struct Scenario {
     /// optional de-icing ([`super::thermal`])
     #[serde(default)]
     pub thermal: Option<super::thermal::ThermalSpec>,
+    /// a thermal rating by clearance or sag (`ohl rating`; ignored by `ohl run`, but validated)
+    #[serde(default)]
+    pub rating: Option<super::rating::RatingSpec>,
     /// the `[paper]` table of a case of `paper_cases/`: checks read by the paper tool (`ohl paper`, in the
     /// `ohl-app` crate); ignored by the library, which does not know its schema
     #[serde(default)]

@@ -169,8 +169,8 @@ pub struct ThermalSpec {
     /// the longest RK4 step of the heat balance [s], in [1e-3, 600]; default 1 s
     #[serde(default = "thermal_step")]
     pub step_s: f64,
-    /// the conductor's temperature at `t = 0` [K], in [200, 500]; default the steady state of the current
-    /// at `t = 0`
+    /// the conductor's temperature at `t = 0` [K], in [200, 500]; default the steady state of the first
+    /// point's current (the current before the schedule: a step at `t = 0` starts from it)
     #[serde(default)]
     pub initial_temperature_k: Option<f64>,
     /// an ice shell melted by the current
@@ -354,9 +354,9 @@ pub(crate) fn thermal_history(
     }
     let initial = match t.initial_temperature_k {
         Some(k) => k,
-        None => steady::temperature(&model, schedule.at(0.0)).map(|s| s.temperature_k).map_err(|e| Problem {
+        None => steady::temperature(&model, schedule.initial_a()).map(|s| s.temperature_k).map_err(|e| Problem {
             field: "thermal.current_a".into(),
-            value: format!("{} A at t = 0", schedule.at(0.0)),
+            value: format!("{} A before t = 0", schedule.initial_a()),
             allowed: format!("must have a steady state to start from: {e}"),
         })?,
     };
@@ -413,4 +413,134 @@ fn deicing_history(
             spans: iced,
         }),
     })
+}
+
+/// A transient of a thermal case (`[transient]` of a file for `ohl thermal`).
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct TransientSpec {
+    /// the current as `[t [s], I [A]]` points (as `thermal.current_a` of a scenario)
+    pub current_a: Vec<[f64; 2]>,
+    /// end of the transient [s], in (0, 1e7]
+    pub end_time_s: f64,
+    /// the conductor's temperature at `t = 0` [K], in [200, 500]; default the steady state of the first
+    /// point's current (the current before the schedule)
+    #[serde(default)]
+    pub initial_temperature_k: Option<f64>,
+    /// the longest RK4 step [s], in [1e-3, 600]; default 1 s
+    #[serde(default = "thermal_step")]
+    pub step_s: f64,
+    /// a temperature limit [K], in [200, 600]: the time the transient first reaches it is reported
+    #[serde(default)]
+    pub limit_k: Option<f64>,
+}
+
+/// A de-icing question of a thermal case (`[deicing]` of a file for `ohl thermal`).
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct DeicingCaseSpec {
+    /// radial ice thickness `t` [m], in [1e-4, 0.1]
+    pub thickness_m: f64,
+    /// ice density [kg/m^3], in [100, 1000]; default 900 (glaze)
+    #[serde(default = "glaze_density")]
+    pub density_kg_per_m3: f64,
+    /// `"slot"` (default) or `"full_melt"`
+    #[serde(default)]
+    pub criterion: ShedSpec,
+    /// de-icing currents [A], each in (0, 1e5]: the time to shed for each
+    #[serde(default)]
+    pub current_a: Vec<f64>,
+    /// times [s], each in (0, 1e6]: the current that sheds within each
+    #[serde(default)]
+    pub shed_within_s: Vec<f64>,
+    /// the RK4 step [s], in [1e-3, 600]; default 1 s
+    #[serde(default = "thermal_step")]
+    pub step_s: f64,
+}
+
+/// A file for `ohl thermal`: a conductor in a weather, and what is asked of its heat balance.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ThermalCase {
+    /// short name (free text)
+    #[serde(default)]
+    pub name: Option<String>,
+    /// `"ieee738"` (default) or `"cigre601"`
+    #[serde(default)]
+    pub standard: StandardSpec,
+    /// the conductor's name in the catalogue (`data/conductors.toml`)
+    pub conductor: String,
+    /// the weather
+    pub weather: WeatherSpec,
+    /// currents [A], each in [0, 1e5]: the steady temperature for each
+    #[serde(default)]
+    pub current_a: Vec<f64>,
+    /// maximum conductor temperatures [K], each in [250, 600]: the steady ampacity for each
+    #[serde(default)]
+    pub max_temperature_k: Vec<f64>,
+    /// a transient
+    #[serde(default)]
+    pub transient: Option<TransientSpec>,
+    /// de-icing
+    #[serde(default)]
+    pub deicing: Option<DeicingCaseSpec>,
+}
+
+/// Parse and validate a thermal case; `file` names it in messages.
+pub fn parse_case(text: &str, file: &str) -> Result<ThermalCase, super::InputError> {
+    let case: ThermalCase = toml::from_str(text).map_err(|e| super::parse_error_at(text, file, e))?;
+    let mut c = Check(Vec::new());
+    conductor(&mut c, "conductor", &case.conductor);
+    check_weather(&mut c, "weather", &case.weather);
+    for (k, &i) in case.current_a.iter().enumerate() {
+        c.within(&format!("current_a[{k}]"), i, 0.0, 1.0e5, "must be in [0, 1e5] A");
+    }
+    for (k, &t) in case.max_temperature_k.iter().enumerate() {
+        c.within(&format!("max_temperature_k[{k}]"), t, 250.0, 600.0, "must be in [250, 600] K");
+    }
+    if let Some(t) = &case.transient {
+        check_current(&mut c, "transient.current_a", &t.current_a);
+        c.within("transient.end_time_s", t.end_time_s, f64::MIN_POSITIVE, 1.0e7, "must be in (0, 1e7] s");
+        c.within("transient.step_s", t.step_s, 1.0e-3, 600.0, "must be in [1e-3, 600] s");
+        if let Some(k) = t.initial_temperature_k {
+            c.within("transient.initial_temperature_k", k, 200.0, 500.0, "must be in [200, 500] K");
+        }
+        if let Some(k) = t.limit_k {
+            c.within("transient.limit_k", k, 200.0, 600.0, "must be in [200, 600] K");
+        }
+    }
+    if let Some(d) = &case.deicing {
+        c.within("deicing.thickness_m", d.thickness_m, 1.0e-4, 0.1, "must be in [1e-4, 0.1] m");
+        c.within("deicing.density_kg_per_m3", d.density_kg_per_m3, 100.0, 1000.0, "must be in [100, 1000] kg/m^3");
+        c.within("deicing.step_s", d.step_s, 1.0e-3, 600.0, "must be in [1e-3, 600] s");
+        for (k, &i) in d.current_a.iter().enumerate() {
+            c.within(&format!("deicing.current_a[{k}]"), i, f64::MIN_POSITIVE, 1.0e5, "must be in (0, 1e5] A");
+        }
+        for (k, &t) in d.shed_within_s.iter().enumerate() {
+            c.within(&format!("deicing.shed_within_s[{k}]"), t, f64::MIN_POSITIVE, 1.0e6, "must be in (0, 1e6] s");
+        }
+    }
+    if c.0.is_empty() { Ok(case) } else { Err(super::InputError::Invalid { file: file.into(), problems: c.0 }) }
+}
+
+impl ThermalCase {
+    /// The heat balance of the case (after [`parse_case`], whose conductor exists).
+    pub fn model(&self) -> Result<Model, catalog::CatalogError> {
+        let k = catalog::find(&self.conductor)?;
+        Ok(Model::new(self.standard.into(), k.thermal(), weather(&self.weather)))
+    }
+
+    /// The de-icing model of the case's `[deicing]`, if any.
+    pub fn deicing(&self) -> Result<Option<Deicing>, catalog::CatalogError> {
+        let Some(d) = &self.deicing else { return Ok(None) };
+        let k = catalog::find(&self.conductor)?;
+        let mut ice = IceShell::glaze(d.thickness_m);
+        ice.density_kg_per_m3 = d.density_kg_per_m3;
+        let mut de = Deicing::new(k.thermal(), weather(&self.weather), self.standard.into(), ice);
+        de.criterion = match d.criterion {
+            ShedSpec::Slot => ShedCriterion::Slot,
+            ShedSpec::FullMelt => ShedCriterion::FullMelt,
+        };
+        Ok(Some(de))
+    }
 }

@@ -577,6 +577,9 @@ pub(crate) fn check(s: &Scenario) -> (Vec<Problem>, Derived) {
             }
         }
     }
+    if let Some(r) = &s.rating {
+        super::rating::check(&mut c, s, r);
+    }
     derived.section = section_grid;
     (c.0, derived)
 }

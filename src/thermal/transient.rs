@@ -51,6 +51,12 @@ impl CurrentSchedule {
         &self.points
     }
 
+    /// The current before the schedule starts [A]: the first point's (a step at `t = 0` starts from it, so
+    /// a steady state "before" the schedule is that of this current).
+    pub fn initial_a(&self) -> f64 {
+        self.points[0].1
+    }
+
     /// The current [A] on the piece of the schedule that contains the open interval `(a, b)`, at time `t`
     /// in `[a, b]`: the linear piece between the points around the interval's midpoint.
     fn on_piece(&self, mid: f64, t: f64) -> f64 {

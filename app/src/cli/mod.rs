@@ -3,4 +3,6 @@
 pub mod bench;
 pub mod cases;
 pub mod paper;
+pub mod rating;
 pub mod run;
+pub mod thermal;

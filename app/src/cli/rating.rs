@@ -1,0 +1,94 @@
+//! `ohl rating SCENARIO.toml --out DIR`: the thermal rating of a span or section by ground clearance or
+//! sag ([`ohl::scenario::rating`]): the temperature at which the line reaches the limit, the steady
+//! ampacity there (and for the conductor's maximum temperature), and the time to reach the governing
+//! temperature after a current step. Prints them and writes `DIR/rating.json`.
+
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+use ohl::scenario::rating::{RatingError, rate};
+use ohl::scenario::{self};
+use serde_json::json;
+
+/// Arguments of `ohl rating`.
+#[derive(clap::Args)]
+pub struct RatingArgs {
+    /// the scenario (TOML, SI units) with `[thermal]` and `[rating]` tables
+    scenario: PathBuf,
+    /// output directory (created if missing)
+    #[arg(long, default_value = "out")]
+    out: PathBuf,
+}
+
+const C: f64 = 273.15;
+
+/// Run the command; exit 0 on success, 1 if a solve failed, 2 on invalid input.
+pub fn main(args: RatingArgs) -> ExitCode {
+    let file = args.scenario.display().to_string();
+    let s = match scenario::load(&args.scenario) {
+        Ok(s) => s,
+        Err(e) => {
+            eprintln!("error: {e}");
+            return ExitCode::from(2);
+        }
+    };
+    let r = match rate(&s, &file) {
+        Ok(r) => r,
+        Err(RatingError::Input(e)) => {
+            eprintln!("error: {e}");
+            return ExitCode::from(2);
+        }
+        Err(e) => {
+            eprintln!("error: {file}: {e}");
+            return ExitCode::from(1);
+        }
+    };
+    let name = s.name.clone().unwrap_or_else(|| "rating".into());
+    let unit = if r.quantity == "clearance" { "least clearance" } else { "largest sag" };
+    println!("{name}: rating by {} (limit {} m)", r.quantity, r.limit_m);
+    println!("  {unit} at the air temperature: {:.3} m", r.at_air_m);
+    match r.limit_temperature_k {
+        Some(t) => println!("  the limit is reached at a conductor temperature of {:.3} C", t - C),
+        None => println!("  the limit is not reached below the maximum temperature"),
+    }
+    if let Some(a) = r.clearance_ampacity_a {
+        println!("  steady ampacity for the {}: {a:.1} A", r.quantity);
+    }
+    if let Some(a) = r.temperature_ampacity_a {
+        println!("  steady ampacity for the maximum temperature: {a:.1} A");
+    }
+    println!(
+        "  rating: {:.1} A (governing temperature {:.3} C, {unit} there {:.3} m; {} static solves)",
+        r.rating_a,
+        r.governing_temperature_k - C,
+        r.at_rating_m,
+        r.solves
+    );
+    if let Some((from, to, start, when)) = r.step {
+        match when {
+            Some(t) => println!(
+                "  after a step {from} A -> {to} A (from {:.2} C): reaches {:.2} C after {t:.0} s ({:.1} min)",
+                start - C,
+                r.governing_temperature_k - C,
+                t / 60.0
+            ),
+            None => println!("  after a step {from} A -> {to} A: does not reach the limit within 24 h"),
+        }
+    }
+    let doc = json!({
+        "name": name, "quantity": r.quantity, "limit_m": r.limit_m,
+        "limit_temperature_k": r.limit_temperature_k, "at_air_temperature_m": r.at_air_m,
+        "clearance_ampacity_a": r.clearance_ampacity_a, "temperature_ampacity_a": r.temperature_ampacity_a,
+        "rating_a": r.rating_a, "governing_temperature_k": r.governing_temperature_k, "at_rating_m": r.at_rating_m,
+        "step": r.step.map(|(from, to, start, when)| json!({"from_a": from, "to_a": to, "initial_temperature_k": start, "time_to_limit_s": when})),
+        "static_solves": r.solves,
+    });
+    if let Err(e) = std::fs::create_dir_all(&args.out).and_then(|_| {
+        std::fs::write(args.out.join("rating.json"), serde_json::to_string_pretty(&doc).unwrap_or_default())
+    }) {
+        eprintln!("error: {}: {e}", args.out.display());
+        return ExitCode::from(1);
+    }
+    println!("  written to {}", args.out.display());
+    ExitCode::SUCCESS
+}
