@@ -200,7 +200,10 @@ pub fn run_case(path: &Path, out: &Path) -> Result<CaseOutcome, CaseError> {
         let i = (0..z.len()).max_by(|&a, &b| z[a].total_cmp(&z[b])).unwrap_or(0);
         jumps.push((z.get(i).map_or(f64::NAN, |v| v - z0), t.get(i).copied().unwrap_or(f64::NAN)));
     }
-    draw(&name, &dir, &t, &ts, n_sup, n_span)?;
+    // A thermal case (de-icing) runs for many minutes before the event: its load charts start where its
+    // peaks do (`output.peaks_from_s`), and the conductor temperature gets a chart over the whole run.
+    let from = if ts.contains_key("temperature_k") { o.summary.peaks_from_s } else { f64::NEG_INFINITY };
+    draw(&name, &dir, &t, &ts, n_sup, n_span, from)?;
     write_table(&dir.join(format!("{name}_table.csv")), &supports, &jumps)?;
     let s = &o.summary;
     Ok(CaseOutcome {
@@ -226,10 +229,12 @@ fn draw(
     ts: &HashMap<String, Vec<f64>>,
     n_sup: usize,
     n_span: usize,
+    from_s: f64,
 ) -> Result<(), CaseError> {
     let series = |col: String, label: String, k: usize, scale: f64| {
         let y = ts.get(&col).cloned().unwrap_or_default();
-        Series::new(label, t.iter().zip(&y).map(|(&a, &b)| (a, b * scale)).collect(), Style::Line, k)
+        let pts = t.iter().zip(&y).filter(|p| *p.0 >= from_s).map(|(&a, &b)| (a, b * scale)).collect();
+        Series::new(label, pts, Style::Line, k)
     };
     let mut charts = vec![
         Chart {
@@ -267,6 +272,16 @@ fn draw(
         series: (0..n_span).map(|k| series(format!("span{k}_mid_dx3_m"), format!("span {k}"), k, 1.0)).collect(),
         ..Default::default()
     });
+    if let Some(temp) = ts.get("temperature_k") {
+        let pts = t.iter().zip(temp).map(|(&a, &b)| (a / 60.0, b - 273.15)).collect();
+        charts.push(Chart {
+            title: "Conductor temperature (whole run)".into(),
+            x_label: "time t [min]".into(),
+            y_label: "conductor temperature [C]".into(),
+            series: vec![Series::new("conductor", pts, Style::Line, 0)],
+            ..Default::default()
+        });
+    }
     let plot_err = |e: crate::plot::PlotError| CaseError::Io(e.to_string());
     render(&charts, 2, (640, 420), &dir.join(format!("{name}_loads"))).map_err(plot_err)?;
     // Shapes at the snapshot times.

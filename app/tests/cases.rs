@@ -77,3 +77,34 @@ fn shedding_cases_are_symmetric_and_end_in_the_same_state() {
     assert!(c.jumps[2].0 < b.jumps[2].0, "progressive jump {} vs instant {}", c.jumps[2].0, b.jumps[2].0);
     assert!(c.supports[0].peak_n.abs() < b.supports[0].peak_n.abs());
 }
+
+#[test]
+fn deicing_case_sheds_when_the_deicing_model_says_and_balances_after() {
+    let c = case("d_deicing");
+    assert_eq!(c.status, "completed");
+    // The shed time in the run's summary is that of the stand-alone de-icing model of one metre of the
+    // same conductor, ice and weather (`ohl thermal examples/thermal/drake_deicing.toml`): the run plays
+    // that model's history, so they agree to rounding.
+    let summary: String = std::fs::read_to_string(c.dir.join("summary.json")).unwrap();
+    let v: serde_json::Value = serde_json::from_str(&summary).unwrap();
+    let shed = v["thermal"]["shed_time_s"].as_f64().unwrap();
+    let text = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).parent().unwrap().join("examples/thermal/drake_deicing.toml"),
+    )
+    .unwrap();
+    let case_file = ohl::scenario::thermal::parse_case(&text, "drake_deicing").unwrap();
+    let de = case_file.deicing().unwrap().unwrap();
+    let alone = de.run(1200.0, &ohl::thermal::deicing::DeicingOptions::default()).unwrap();
+    println!("shed at {shed:.4} s in the run, {:.4} s alone", alone.shed_time_s);
+    assert!((shed - alone.shed_time_s).abs() < 1e-9 * shed);
+    // After the shed the section is bare and symmetric: the residual loads balance its weight (bare
+    // conductor and strings; the ice events net to zero) and mirror each other.
+    let horizontal: f64 = c.supports.iter().map(|s| s.residual_n).sum();
+    let vertical: f64 = c.supports.iter().map(|s| s.residual_vertical_n).sum();
+    let w = total_weight_n("d_deicing");
+    println!("weight {w:.3} N, residual vertical {vertical:.3} N, along the line {horizontal:.3e} N");
+    assert!((vertical + w).abs() < 1e-6 * w && horizontal.abs() < 1e-6 * w);
+    assert!((c.supports[0].residual_n + c.supports[3].residual_n).abs() < 1e-6 * c.supports[0].residual_n.abs());
+    // The shedding span jumps; its neighbours barely move.
+    assert!(c.jumps[1].0 > 1.0 && c.jumps[0].0 < 0.1 * c.jumps[1].0, "jumps {:?}", c.jumps);
+}
