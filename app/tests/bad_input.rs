@@ -158,6 +158,12 @@ const CASES: &[(&str, &[&str])] = &[
     ("break_at_the_support", &["field `events[0].at_fraction` = 1", "(0, 1)"]),
     ("peaks_after_end", &["field `output.peaks_from_s` = 5", "[0, end time]"]),
     ("not_utf8", &["line 4, column 36", "not valid UTF-8", "byte 0xb0"]),
+    ("thermal_unknown_conductor", &["field `thermal.conductor` = \"ACSR Condor\"", "available: ACSR Drake"]),
+    ("thermal_current_back_in_time", &["field `thermal.current_a[2][0]` = 300", "must not decrease"]),
+    ("thermal_with_temperature_event", &["field `events[0].action`", "must not be combined with [thermal]"]),
+    ("thermal_air_in_celsius", &["field `thermal.weather.air_temperature_k` = 25", "[200, 350] K"]),
+    ("rating_clearance_without_ground", &["field `rating.min_clearance_m` = 8", "needs a [ground]"]),
+    ("deicing_varying_current", &["field `thermal.current_a`", "must be constant with [thermal.deicing]"]),
 ];
 
 /// Heat-conduction cases (`ohl paper CASE --cases tests/bad_inputs`): (file stem, message substrings).

@@ -277,7 +277,7 @@ pub(crate) fn check(c: &mut Check, t: &ThermalSpec, temperature_event: Option<us
         c.fail(
             &format!("events[{k}].action"),
             "a temperature or heat-conduction event",
-            "is not allowed with [thermal]: the heat balance sets the conductor's temperature",
+            "must not be combined with [thermal]: the heat balance sets the conductor's temperature",
         );
     }
     if let Some(d) = &t.deicing {
