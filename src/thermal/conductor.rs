@@ -50,6 +50,17 @@ impl ThermalConductor {
             + self.core_mass_kg_per_m * self.core_specific_heat_j_per_kg_k
     }
 
+    /// The data as `standard` uses them: IEEE 738 takes the specific heats as constants (its eq. (2) with
+    /// `m C_p` fixed), so its copy has both temperature coefficients zero; CIGRE TB 601 keeps them.
+    pub fn for_standard(&self, standard: super::Standard) -> ThermalConductor {
+        let mut c = self.clone();
+        if standard == super::Standard::Ieee738 {
+            c.outer_specific_heat_coefficient_per_k = 0.0;
+            c.core_specific_heat_coefficient_per_k = 0.0;
+        }
+        c
+    }
+
     /// Heat capacity per unit length at the conductor temperature `temperature_k` [K] with the specific heats'
     /// temperature coefficients, `m_a c_a (1 + beta_a (T - 20 C)) + m_s c_s (1 + beta_s (T - 20 C))` [J/(m K)]
     /// (CIGRE TB 601 section 4.3); equal to [`ThermalConductor::heat_capacity_j_per_m_k`] at 20 C or with

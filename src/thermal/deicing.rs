@@ -476,9 +476,10 @@ impl Capacity {
 }
 
 impl Deicing {
-    /// A problem with the default [`ShedCriterion::Slot`].
+    /// A problem with the default [`ShedCriterion::Slot`]; the conductor as `standard` uses it
+    /// ([`ThermalConductor::for_standard`]: IEEE 738 with constant specific heats).
     pub fn new(conductor: ThermalConductor, weather: Weather, standard: Standard, ice: IceShell) -> Self {
-        Deicing { conductor, weather, standard, ice, criterion: ShedCriterion::Slot }
+        Deicing { conductor: conductor.for_standard(standard), weather, standard, ice, criterion: ShedCriterion::Slot }
     }
 
     /// Inner radius of the shell `r_c = D / 2` [m].

@@ -133,6 +133,8 @@ pub fn temperature(model: &dyn HeatBalance, current_a: f64) -> Result<SteadyStat
         return Ok(SteadyState { temperature_k: air, current_a, terms: model.terms(air, current_a), evaluations });
     }
     let mut excess = 10.0;
+    // The lower end moves up to the last probe that still heats.
+    let (mut lo, mut f_lo) = (air, f_lo);
     let (hi, f_hi) = loop {
         let t = air + excess;
         let f = net(t);
@@ -140,15 +142,19 @@ pub fn temperature(model: &dyn HeatBalance, current_a: f64) -> Result<SteadyStat
         if !f.is_finite() {
             return Err(SteadyError::NotFinite { temperature_k: t });
         }
-        if f <= 0.0 {
+        if f == 0.0 {
+            return Ok(SteadyState { temperature_k: t, current_a, terms: model.terms(t, current_a), evaluations });
+        }
+        if f < 0.0 {
             break (t, f);
         }
         if excess >= MAX_EXCESS_K {
             return Err(SteadyError::NoSteadyState { current_a, limit_k: t });
         }
+        (lo, f_lo) = (t, f);
         excess = (2.0 * excess).min(MAX_EXCESS_K);
     };
-    let (t, n) = bracketed_root(net, air, hi, f_lo, f_hi, BRACKET_TOL_K);
+    let (t, n) = bracketed_root(net, lo, hi, f_lo, f_hi, BRACKET_TOL_K);
     evaluations += n;
     Ok(SteadyState { temperature_k: t, current_a, terms: model.terms(t, current_a), evaluations })
 }

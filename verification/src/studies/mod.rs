@@ -9,6 +9,7 @@ pub mod section_statics;
 pub mod section_transients;
 pub mod sensitivity;
 pub mod static_convergence;
+pub mod thermal;
 
 use crate::report::{Budget, StudyReport};
 use std::path::Path;
@@ -62,6 +63,11 @@ pub const STUDIES: &[Study] = &[
         name: "section_transients",
         about: "grid and time-step convergence of broken-conductor peaks and ice-shedding jumps",
         run: section_transients::run,
+    },
+    Study {
+        name: "thermal",
+        about: "IEEE 738 / TB 601 worked examples; steady, transient (RK4 order) and de-icing solvers",
+        run: thermal::run,
     },
 ];
 
