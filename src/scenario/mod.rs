@@ -69,11 +69,55 @@ impl fmt::Display for Invalid<'_> {
     }
 }
 
-/// Parse a scenario from TOML text; `file` names it in messages.
+/// Parse a scenario from TOML text; `file` names it in messages. A `[conductor]` table that names a
+/// conductor of the catalogue (`catalog = "ACSR Drake"`, [`crate::thermal::catalog`]) takes the fields it
+/// does not give from there: `linear_density_kg_per_m`, `diameter_m`, `rated_tensile_strength_n`,
+/// `thermal_expansion_per_k` and `axial_stiffness_n` (unless `youngs_modulus_pa` is given).
 pub fn parse(text: &str, file: &str) -> Result<Scenario, InputError> {
-    let scenario: Scenario = toml::from_str(text).map_err(|e| parse_error_at(text, file, e))?;
+    let scenario: Scenario = match catalog_defaults(text, file)? {
+        Some(resolved) => toml::Value::Table(resolved).try_into().map_err(|e| parse_error(file, e))?,
+        None => toml::from_str(text).map_err(|e| parse_error_at(text, file, e))?,
+    };
     let problems = validate::validate(&scenario);
     if problems.is_empty() { Ok(scenario) } else { Err(InputError::Invalid { file: file.to_string(), problems }) }
+}
+
+/// The document with the `[conductor]` fields of its catalogue conductor filled in, or `None` if it names
+/// none (or does not parse: the caller reports that with line and column).
+fn catalog_defaults(text: &str, file: &str) -> Result<Option<toml::Table>, InputError> {
+    let Ok(mut doc) = text.parse::<toml::Table>() else { return Ok(None) };
+    let Some(toml::Value::Table(c)) = doc.get_mut("conductor") else { return Ok(None) };
+    let Some(name) = c.get("catalog") else { return Ok(None) };
+    let Some(name) = name.as_str() else {
+        return Err(InputError::Invalid {
+            file: file.into(),
+            problems: vec![Problem {
+                field: "conductor.catalog".into(),
+                value: name.to_string(),
+                allowed: "must be a conductor's name (a string)".into(),
+            }],
+        });
+    };
+    let k = crate::thermal::catalog::find(name).map_err(|e| InputError::Invalid {
+        file: file.into(),
+        problems: vec![Problem {
+            field: "conductor.catalog".into(),
+            value: format!("{name:?}"),
+            allowed: e.to_string(),
+        }],
+    })?;
+    let with_ea = !c.contains_key("youngs_modulus_pa");
+    let mut fill = |key: &str, v: f64| {
+        c.entry(key.to_string()).or_insert(toml::Value::Float(v));
+    };
+    fill("linear_density_kg_per_m", k.linear_density_kg_per_m);
+    fill("diameter_m", k.diameter_m);
+    fill("rated_tensile_strength_n", k.rated_tensile_strength_n);
+    fill("thermal_expansion_per_k", k.thermal_expansion_per_k);
+    if with_ea {
+        fill("axial_stiffness_n", k.axial_stiffness_n);
+    }
+    Ok(Some(doc))
 }
 
 /// The error of a TOML file that does not parse (the message has line and column).

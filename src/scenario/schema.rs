@@ -74,6 +74,11 @@ pub enum TensionLawSpec {
 #[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct ConductorSpec {
+    /// a conductor of the catalogue (`data/conductors.toml`, e.g. "ACSR Drake"): the fields below that the
+    /// table does not give are taken from it (linear density, diameter, RTS, thermal expansion, and `EA`
+    /// unless `youngs_modulus_pa` is given); fields given here win
+    #[serde(default)]
+    pub catalog: Option<String>,
     /// axial stiffness `EA` [N], in [1, 1e10] (section 4: "E = 80734 g [N]" = 7.9e5 N is this force;
     /// conductors are 1e6 to 1e9 N)
     #[serde(default)]

@@ -185,39 +185,14 @@ pub fn time_to_reach(tr: &Transient, t0: f64, initial_k: f64, limit_k: f64, max_
 mod tests {
     use super::*;
     use crate::thermal::cigre601::Cigre601;
-    use crate::thermal::cigre601::tests::drake;
     use crate::thermal::ieee738::Ieee738;
     use crate::thermal::ieee738::annex_b;
     use crate::thermal::steady;
-    use crate::thermal::weather::{Atmosphere, Sun, Weather};
 
     const K: f64 = 273.15;
 
-    /// The TB 601 transient example's model at midnight (no sun) in a weather: air [C], wind [m/s], angle of
-    /// the wind to the line's axis [deg].
     fn tb601(air_c: f64, wind: f64, angle_deg: f64) -> Cigre601 {
-        let mut c = drake(0.8, 0.8);
-        c.diameter_m = 28.143e-3;
-        c.resistance_low_ohm_per_m = 0.0727e-3;
-        c.resistance_high_ohm_per_m = 0.0872e-3;
-        let sun = Sun {
-            latitude_deg: 50.0,
-            day_of_year: 161.0,
-            solar_hour: 0.0,
-            line_azimuth_deg: 90.0,
-            atmosphere: Atmosphere::Clear,
-            clearness_ratio: 1.0,
-            albedo: 1.0,
-            measured_global_w_per_m2: None,
-        };
-        let weather = Weather {
-            air_temperature_k: K + air_c,
-            wind_speed_m_per_s: wind,
-            wind_angle_deg: angle_deg,
-            elevation_m: 0.0,
-            sun: Some(sun),
-        };
-        Cigre601::new(c, weather)
+        crate::thermal::cigre601::tests::transient_example(air_c, wind, angle_deg)
     }
 
     #[test]

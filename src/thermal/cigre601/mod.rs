@@ -248,13 +248,11 @@ pub(crate) mod tests {
         assert!((i - 1504.0).abs() <= tol_i, "I = {i}");
     }
 
-    #[test]
-    fn transient_example_initial_steady_state() {
-        // TB 601's transient worked example starts from the steady state of Drake (D = 28.143 mm, d = 4.4 mm,
-        // R_ac(25 C) = 0.0727e-3, R_ac(75 C) = 0.0872e-3 ohm/m, emissivity = absorptivity = 0.8) carrying 802 A at
-        // night (latitude 50 deg N, 10 June, 00:00) in air at 24 C with a wind of 1.9 m/s at 55 deg to the
-        // axis: T = 42.01 C (as quoted by statnett/linerate tests/acceptance_tests/test_cigre_transient_cases.py,
-        // there with the wind at 35 deg to an east-west span's azimuth, an angle of attack of 55 deg).
+    /// The TB 601 transient example's model at midnight, latitude 50 N, 10 June (no sun): Drake with D = 28.143
+    /// mm, R_ac(25 C) = 0.0727e-3 and R_ac(75 C) = 0.0872e-3 ohm/m, emissivity = absorptivity = 0.8, in air at
+    /// `air_c` [C] with a wind of `wind` [m/s] at `angle_deg` [deg] to the axis (as quoted by statnett/linerate
+    /// tests/acceptance_tests/test_cigre_transient_cases.py).
+    pub(crate) fn transient_example(air_c: f64, wind: f64, angle_deg: f64) -> Cigre601 {
         let mut c = drake(0.8, 0.8);
         c.diameter_m = 28.143e-3;
         c.resistance_low_ohm_per_m = 0.0727e-3;
@@ -270,13 +268,23 @@ pub(crate) mod tests {
             measured_global_w_per_m2: None,
         };
         let weather = Weather {
-            air_temperature_k: K + 24.0,
-            wind_speed_m_per_s: 1.9,
-            wind_angle_deg: 55.0,
+            air_temperature_k: K + air_c,
+            wind_speed_m_per_s: wind,
+            wind_angle_deg: angle_deg,
             elevation_m: 0.0,
             sun: Some(sun),
         };
-        let model = Cigre601::new(c, weather);
+        Cigre601::new(c, weather)
+    }
+
+    #[test]
+    fn transient_example_initial_steady_state() {
+        // TB 601's transient worked example starts from the steady state of Drake (D = 28.143 mm, d = 4.4 mm,
+        // R_ac(25 C) = 0.0727e-3, R_ac(75 C) = 0.0872e-3 ohm/m, emissivity = absorptivity = 0.8) carrying 802 A at
+        // night (latitude 50 deg N, 10 June, 00:00) in air at 24 C with a wind of 1.9 m/s at 55 deg to the
+        // axis: T = 42.01 C (as quoted by statnett/linerate tests/acceptance_tests/test_cigre_transient_cases.py,
+        // there with the wind at 35 deg to an east-west span's azimuth, an angle of attack of 55 deg).
+        let model = transient_example(24.0, 1.9, 55.0);
         let air = model.weather.air_temperature_k;
         // The sun is below the horizon at midnight.
         assert_eq!(model.terms(K + 42.0, 802.0).solar_w_per_m, 0.0);
