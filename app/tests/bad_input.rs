@@ -164,6 +164,7 @@ const CASES: &[(&str, &[&str])] = &[
     ("thermal_air_in_celsius", &["field `thermal.weather.air_temperature_k` = 25", "[200, 350] K"]),
     ("rating_clearance_without_ground", &["field `rating.min_clearance_m` = 8", "needs a [ground]"]),
     ("deicing_varying_current", &["field `thermal.current_a`", "must be constant with [thermal.deicing]"]),
+    ("thermal_history_too_long", &["field `thermal.step_s` = 1", "must be at least 10.000 s"]),
 ];
 
 /// Heat-conduction cases (`ohl paper CASE --cases tests/bad_inputs`): (file stem, message substrings).

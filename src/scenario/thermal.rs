@@ -300,6 +300,9 @@ pub(crate) fn check(c: &mut Check, t: &ThermalSpec, temperature_event: Option<us
     }
 }
 
+/// Most samples a temperature history may hold [-] (one per RK4 step; 160 MB).
+pub const MAX_HISTORY_SAMPLES: f64 = 1.0e7;
+
 /// The temperature history of a run: `(t [s], T [K])` at every RK4 step, and what it came from.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ThermalHistory {
@@ -340,6 +343,19 @@ pub(crate) fn thermal_history(
     spans: &[(usize, usize)],
 ) -> Result<ThermalHistory, Problem> {
     let mut c = Check(Vec::new());
+    // The history holds a sample per step: bound it (8 bytes x 2 per sample: 1e7 samples are 160 MB).
+    let samples = horizon_s / t.step_s;
+    if samples > MAX_HISTORY_SAMPLES {
+        return Err(Problem {
+            field: "thermal.step_s".into(),
+            value: format!("{}", t.step_s),
+            allowed: format!(
+                "must be at least {:.3} s for this run's {horizon_s} s (the temperature history holds one sample per \
+                 step, at most {MAX_HISTORY_SAMPLES:e})",
+                horizon_s / MAX_HISTORY_SAMPLES
+            ),
+        });
+    }
     let name = catalog::find(&t.conductor).map(|k| k.name.clone()).unwrap_or_else(|_| t.conductor.clone());
     let (Some(conductor), Some(schedule)) = (
         conductor(&mut c, "thermal.conductor", &t.conductor),
