@@ -14,3 +14,21 @@ pub mod cases;
 pub mod paper;
 pub mod plot;
 pub mod progress;
+
+/// The repository the default paths (`paper_cases/`, `cases/`, `figures/`) are relative to: the current
+/// directory if it holds `paper_cases/`, else the workspace the binary was built from (so that `ohl paper
+/// all` works from any directory of a checkout), else the current directory.
+pub fn repository_root() -> std::path::PathBuf {
+    let here = std::path::PathBuf::from(".");
+    if here.join("paper_cases").is_dir() {
+        return here;
+    }
+    let built = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
+    if built.join("paper_cases").is_dir() { built } else { here }
+}
+
+/// `path` as given, unless it is the command's default `default` (a path relative to the repository),
+/// which is then taken from [`repository_root`].
+pub fn rooted_default(path: std::path::PathBuf, default: &str) -> std::path::PathBuf {
+    if path == std::path::Path::new(default) { repository_root().join(default) } else { path }
+}

@@ -122,7 +122,29 @@ fn catalog_defaults(text: &str, file: &str) -> Result<Option<toml::Table>, Input
 
 /// The error of a TOML file that does not parse (the message has line and column).
 pub fn parse_error(file: &str, e: toml::de::Error) -> InputError {
-    InputError::Parse { file: file.to_string(), message: e.to_string() }
+    InputError::Parse { file: file.to_string(), message: plain_types(&e.to_string()) }
+}
+
+/// A parser message in the user's terms: serde names Rust types ("expected f64", "expected usize"); a
+/// scenario's reader knows numbers, whole numbers, text and tables.
+pub fn plain_types(message: &str) -> String {
+    const PLAIN: [(&str, &str); 10] = [
+        ("expected f64", "expected a number"),
+        ("expected f32", "expected a number"),
+        ("expected usize", "expected a whole number >= 0"),
+        ("expected u64", "expected a whole number >= 0"),
+        ("expected u32", "expected a whole number >= 0"),
+        ("expected i64", "expected a whole number"),
+        ("expected i32", "expected a whole number"),
+        ("expected a boolean", "expected true or false"),
+        ("expected a string", "expected text in quotes"),
+        ("expected struct ", "expected a table "),
+    ];
+    let mut m = message.to_string();
+    for (rust, plain) in PLAIN {
+        m = m.replace(rust, plain);
+    }
+    m
 }
 
 /// The error of a TOML file that does not parse, located in `text`: where the parser points at a table
@@ -130,7 +152,7 @@ pub fn parse_error(file: &str, e: toml::de::Error) -> InputError {
 /// the value's own position), the message points at the offending value's own line instead.
 pub fn parse_error_at(text: &str, file: &str, e: toml::de::Error) -> InputError {
     let message = locate::relocate(text, &e).unwrap_or_else(|| e.to_string());
-    InputError::Parse { file: file.to_string(), message }
+    InputError::Parse { file: file.to_string(), message: plain_types(&message) }
 }
 
 /// Read a text file: an I/O error names the file; a file that is not UTF-8 is refused with the line and

@@ -25,6 +25,17 @@ fn main() -> ExitCode {
     let mut it = args.iter();
     while let Some(a) = it.next() {
         match a.as_str() {
+            "-h" | "--help" | "help" => {
+                println!(
+                    "verify: the verification harness of the ohl wire solver\n\n\
+                     usage:\n  verify list                 list the studies\n  \
+                     verify STUDY [--coarse]     run one study (--coarse: the CI budget)\n  \
+                     verify all [--coarse]       run every study and write REPORT.md\n  \
+                     options: --out DIR          output directory (default <workspace>/figures/verification)\n\n\
+                     exit status: 0 every check passed, 1 a check failed, 2 bad arguments"
+                );
+                return ExitCode::SUCCESS;
+            }
             "--coarse" => budget = Budget::Coarse,
             "--out" => match it.next() {
                 Some(d) => out = PathBuf::from(d),
@@ -58,6 +69,7 @@ fn main() -> ExitCode {
             }
         },
     };
+    let stamp = verification::report::stamp();
     let t0 = std::time::Instant::now();
     let bar = ProgressBar::new(selected.len() as u64);
     bar.set_style(
@@ -88,8 +100,8 @@ fn main() -> ExitCode {
     }
     if what == "all" {
         let path = out.join("REPORT.md");
-        if let Err(e) =
-            std::fs::create_dir_all(&out).and_then(|_| std::fs::write(&path, full_report(&reports, budget, wall)))
+        if let Err(e) = std::fs::create_dir_all(&out)
+            .and_then(|_| std::fs::write(&path, full_report(&reports, budget, wall, &stamp)))
         {
             eprintln!("verify: cannot write {}: {e}", path.display());
             return ExitCode::FAILURE;

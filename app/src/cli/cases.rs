@@ -24,6 +24,11 @@ pub struct CasesArgs {
 
 /// Run the command.
 pub fn main(args: CasesArgs) -> ExitCode {
+    let args = CasesArgs {
+        cases: ohl_app::rooted_default(args.cases, "cases"),
+        out: ohl_app::rooted_default(args.out, "figures/cases"),
+        ..args
+    };
     let paths = if args.case == "all" {
         match ohl_app::paper::case_files(&args.cases) {
             Ok(v) if !v.is_empty() => v,

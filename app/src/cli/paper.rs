@@ -32,6 +32,11 @@ pub struct PaperArgs {
 /// Run the command.
 pub fn main(args: PaperArgs) -> ExitCode {
     let started = Instant::now();
+    let args = PaperArgs {
+        cases: ohl_app::rooted_default(args.cases, "paper_cases"),
+        out: ohl_app::rooted_default(args.out, "figures"),
+        ..args
+    };
     let paths = if args.case == "all" {
         match paper::case_files(&args.cases) {
             Ok(v) if !v.is_empty() => v,
