@@ -19,6 +19,7 @@ pub mod catalog;
 pub mod cigre601;
 pub mod conductor;
 pub mod deicing;
+pub mod examples;
 pub mod ieee738;
 pub mod joule;
 pub mod ode;

@@ -93,70 +93,10 @@ impl HeatBalance for Ieee738 {
     }
 }
 
-/// The IEEE 738-2012 Annex B example, for the tests of this module and of [`crate::thermal::joule`] and
-/// [`crate::thermal::radiation`].
+/// The IEEE 738-2012 Annex B example ([`crate::thermal::examples::annex_b`]), for the tests of this module
+/// and of [`crate::thermal::joule`] and [`crate::thermal::radiation`].
 #[cfg(test)]
-pub(crate) mod annex_b {
-    use crate::thermal::weather::{Atmosphere, Sun};
-    use crate::thermal::{ThermalConductor, Weather};
-
-    /// Offset between the kelvin and degrees Celsius scales [K].
-    pub(crate) const C_TO_K: f64 = 273.15;
-
-    /// ACSR Drake 795 kcmil 26/7 as in Annex B: D = 28.14 mm, R(25 C) = 7.283e-5 ohm/m, R(75 C) = 8.688e-5 ohm/m,
-    /// epsilon = alpha = 0.8 (thermohl test/test_ieee.py, pylinerating tests/test_ieee.py). Core 10.4 mm and outer
-    /// strand 4.4 mm, and the masses and specific heats (1.116 kg/m aluminium at 897 J/(kg K), 0.5119 kg/m steel at
-    /// 481 J/(kg K)), are the Drake data of CIGRE TB 601's examples as used by pylinerating; the steady state does
-    /// not use them.
-    pub(crate) fn drake() -> ThermalConductor {
-        ThermalConductor {
-            name: "ACSR Drake 795 kcmil 26/7".into(),
-            diameter_m: 28.14e-3,
-            core_diameter_m: 10.4e-3,
-            outer_strand_diameter_m: 4.4e-3,
-            resistance_low_ohm_per_m: 7.283e-5,
-            temperature_low_k: 25.0 + C_TO_K,
-            resistance_high_ohm_per_m: 8.688e-5,
-            temperature_high_k: 75.0 + C_TO_K,
-            magnetic_core_factor: 1.0,
-            emissivity: 0.8,
-            absorptivity: 0.8,
-            outer_mass_kg_per_m: 1.116,
-            outer_specific_heat_j_per_kg_k: 897.0,
-            core_mass_kg_per_m: 0.5119,
-            core_specific_heat_j_per_kg_k: 481.0,
-            outer_specific_heat_coefficient_per_k: 0.0,
-            core_specific_heat_coefficient_per_k: 0.0,
-        }
-    }
-
-    /// Annex B's sun: latitude 30 N, 10 June (day 161), 11:00 local solar time, an east-west line (Z_l = 90 deg),
-    /// clear atmosphere. (The CIGRE fields are not used by IEEE 738.)
-    pub(crate) fn sun() -> Sun {
-        Sun {
-            latitude_deg: 30.0,
-            day_of_year: 161.0,
-            solar_hour: 11.0,
-            line_azimuth_deg: 90.0,
-            atmosphere: Atmosphere::Clear,
-            clearness_ratio: 1.0,
-            albedo: 0.1,
-            measured_global_w_per_m2: None,
-        }
-    }
-
-    /// Annex B's weather: T_a = 40 C, V_w = 0.61 m/s perpendicular to the line, sea level (rho_f = 1.029 holds only
-    /// there: see air.rs), the sun of [`sun`].
-    pub(crate) fn weather() -> Weather {
-        Weather {
-            air_temperature_k: 40.0 + C_TO_K,
-            wind_speed_m_per_s: 0.61,
-            wind_angle_deg: 90.0,
-            elevation_m: 0.0,
-            sun: Some(sun()),
-        }
-    }
-}
+pub(crate) use crate::thermal::examples::annex_b;
 
 #[cfg(test)]
 mod tests {

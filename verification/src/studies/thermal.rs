@@ -88,6 +88,7 @@ use crate::report::{Budget, StudyReport, Table, sci};
 use ohl::thermal::cigre601::Cigre601;
 use ohl::thermal::cigre601::convection as tb_conv;
 use ohl::thermal::deicing::{Deicing, DeicingOptions, DeicingResult, IceShell, MELTING_POINT_K, ShedCriterion};
+use ohl::thermal::examples::{annex_b, tb601};
 use ohl::thermal::ieee738::Ieee738;
 use ohl::thermal::ieee738::air::Air;
 use ohl::thermal::ieee738::convection as ieee_conv;
@@ -95,7 +96,6 @@ use ohl::thermal::ieee738::solar as ieee_solar;
 use ohl::thermal::radiation::{STEFAN_BOLTZMANN_W_PER_M2_K4, radiation_w_per_m};
 use ohl::thermal::steady::{self, SteadyError};
 use ohl::thermal::transient::{CurrentSchedule, Sample, Transient, time_to_reach};
-use ohl::thermal::weather::{Atmosphere, Sun};
 use ohl::thermal::{HeatBalance, HeatTerms, Model, Standard, ThermalConductor, Weather, catalog, joule};
 use ohl_app::plot::{Chart, Series, Style, render};
 use std::path::Path;
@@ -107,141 +107,8 @@ const K: f64 = 273.15;
 // The examples' inputs
 // ---------------------------------------------------------------------------------------------------------
 
-/// ACSR Drake 795 kcmil 26/7 as IEEE Std 738-2012 Annex B gives it (D = 28.14 mm, R(25 C) = 7.283e-5 ohm/m,
-/// R(75 C) = 8.688e-5 ohm/m, emissivity = absorptivity = 0.8; thermohl `test/test_ieee.py`, pylinerating
-/// `tests/test_ieee.py`). Core, outer strand, masses and specific heats are the TB 601 examples' Drake (the
-/// steady state does not use them); constant specific heats, as IEEE 738 has them.
-fn annex_b_drake() -> ThermalConductor {
-    ThermalConductor {
-        name: "ACSR Drake 795 kcmil 26/7 (IEEE 738 Annex B)".into(),
-        diameter_m: 28.14e-3,
-        core_diameter_m: 10.4e-3,
-        outer_strand_diameter_m: 4.4e-3,
-        resistance_low_ohm_per_m: 7.283e-5,
-        temperature_low_k: 25.0 + K,
-        resistance_high_ohm_per_m: 8.688e-5,
-        temperature_high_k: 75.0 + K,
-        magnetic_core_factor: 1.0,
-        emissivity: 0.8,
-        absorptivity: 0.8,
-        outer_mass_kg_per_m: 1.116,
-        outer_specific_heat_j_per_kg_k: 897.0,
-        core_mass_kg_per_m: 0.5119,
-        core_specific_heat_j_per_kg_k: 481.0,
-        outer_specific_heat_coefficient_per_k: 0.0,
-        core_specific_heat_coefficient_per_k: 0.0,
-    }
-}
-
-/// IEEE 738 Annex B's sun: latitude 30 N, 10 June (day 161), 11:00 solar time, an east-west line, clear sky.
-fn annex_b_sun() -> Sun {
-    Sun {
-        latitude_deg: 30.0,
-        day_of_year: 161.0,
-        solar_hour: 11.0,
-        line_azimuth_deg: 90.0,
-        atmosphere: Atmosphere::Clear,
-        clearness_ratio: 1.0,
-        albedo: 0.1,
-        measured_global_w_per_m2: None,
-    }
-}
-
-/// IEEE 738 Annex B's weather: 40 C, 0.61 m/s perpendicular to the line, sea level, the sun of
-/// [`annex_b_sun`].
-fn annex_b_weather() -> Weather {
-    Weather {
-        air_temperature_k: 40.0 + K,
-        wind_speed_m_per_s: 0.61,
-        wind_angle_deg: 90.0,
-        elevation_m: 0.0,
-        sun: Some(annex_b_sun()),
-    }
-}
-
-/// Drake as TB 601's examples give it: D = 28.1 mm, core 10.4 mm, outer strands 4.4 mm, R(25 C) = 7.283e-5,
-/// R(75 C) = 8.688e-5 ohm/m (Annex E, Example A, as quoted by linerate `tests/conftest.py`), the masses and
-/// specific heats of the transient example with TB 601's temperature coefficients (linerate
-/// `tests/acceptance_tests/test_cigre_transient_cases.py`).
-fn tb601_drake(emissivity: f64, absorptivity: f64) -> ThermalConductor {
-    ThermalConductor {
-        name: "ACSR Drake 26/7 (CIGRE TB 601 Annex E)".into(),
-        diameter_m: 28.1e-3,
-        core_diameter_m: 10.4e-3,
-        outer_strand_diameter_m: 4.4e-3,
-        resistance_low_ohm_per_m: 7.283e-5,
-        temperature_low_k: K + 25.0,
-        resistance_high_ohm_per_m: 8.688e-5,
-        temperature_high_k: K + 75.0,
-        magnetic_core_factor: 1.0,
-        emissivity,
-        absorptivity,
-        outer_mass_kg_per_m: 1.116,
-        outer_specific_heat_j_per_kg_k: 897.0,
-        core_mass_kg_per_m: 0.5119,
-        core_specific_heat_j_per_kg_k: 481.0,
-        outer_specific_heat_coefficient_per_k: 3.8e-4,
-        core_specific_heat_coefficient_per_k: 1.0e-4,
-    }
-}
-
-/// TB 601 Annex E, Example A (p. 79): emissivity = absorptivity = 0.8, 40 C, 0.61 m/s at 60 deg to the axis,
-/// sea level, 30 N, day 161, 11:00, east-west line, N_s = 1, albedo 0.1; rated at 100 C.
-fn example_a() -> Cigre601 {
-    let sun = Sun { albedo: 0.1, ..annex_b_sun() };
-    let weather = Weather {
-        air_temperature_k: K + 40.0,
-        wind_speed_m_per_s: 0.61,
-        wind_angle_deg: 60.0,
-        elevation_m: 0.0,
-        sun: Some(sun),
-    };
-    Cigre601::new(tb601_drake(0.8, 0.8), weather)
-}
-
-/// TB 601 Annex E, Example B (p. 79): emissivity = absorptivity = 0.9, 20 C, 1.66 m/s at 80 deg, 500 m, span
-/// inclined 10 deg, 50 N, 3 October (day 276) 14:00, north-south line, N_s = 0.5, albedo 0.15; rated at 100 C.
-fn example_b() -> Cigre601 {
-    let sun = Sun {
-        latitude_deg: 50.0,
-        day_of_year: 276.0,
-        solar_hour: 14.0,
-        line_azimuth_deg: 0.0,
-        atmosphere: Atmosphere::Industrial,
-        clearness_ratio: 0.5,
-        albedo: 0.15,
-        measured_global_w_per_m2: None,
-    };
-    let weather = Weather {
-        air_temperature_k: K + 20.0,
-        wind_speed_m_per_s: 1.66,
-        wind_angle_deg: 80.0,
-        elevation_m: 500.0,
-        sun: Some(sun),
-    };
-    let mut m = Cigre601::new(tb601_drake(0.9, 0.9), weather);
-    m.inclination_deg = 10.0;
-    m
-}
-
-/// TB 601's transient example's model at midnight (no sun: latitude 50 N, day 161, 00:00) for air [C], wind
-/// [m/s] and its angle to the axis [deg]: Drake with D = 28.143 mm, R(25 C) = 0.0727e-3, R(75 C) = 0.0872e-3
-/// ohm/m, emissivity = absorptivity = 0.8 (linerate `test_cigre_transient_cases.py`).
-fn tb601_transient(air_c: f64, wind: f64, angle_deg: f64) -> Cigre601 {
-    let mut c = tb601_drake(0.8, 0.8);
-    c.diameter_m = 28.143e-3;
-    c.resistance_low_ohm_per_m = 0.0727e-3;
-    c.resistance_high_ohm_per_m = 0.0872e-3;
-    let sun = Sun { latitude_deg: 50.0, solar_hour: 0.0, albedo: 1.0, ..annex_b_sun() };
-    let weather = Weather {
-        air_temperature_k: K + air_c,
-        wind_speed_m_per_s: wind,
-        wind_angle_deg: angle_deg,
-        elevation_m: 0.0,
-        sun: Some(sun),
-    };
-    Cigre601::new(c, weather)
-}
+// The inputs themselves are the library's record of the published examples (`ohl::thermal::examples`), shared
+// with its unit tests; the printed numbers they are checked against are in the checks below.
 
 /// A TB 601 heat balance whose radiation converts degrees Celsius with `+ 273`, as the brochure evaluates its
 /// eq. (27): the interface's kelvin lowered by 0.15 K in the radiation term only.
@@ -251,12 +118,7 @@ impl HeatBalance for Plus273<'_> {
     fn terms(&self, temperature_k: f64, current_a: f64) -> HeatTerms {
         let m = self.0;
         let mut q = m.terms(temperature_k, current_a);
-        q.radiation_w_per_m = radiation_w_per_m(
-            m.conductor.diameter_m,
-            m.conductor.emissivity,
-            temperature_k - 0.15,
-            m.weather.air_temperature_k - 0.15,
-        );
+        q.radiation_w_per_m = tb601::radiation_plus_273(m, temperature_k);
         q
     }
 
@@ -373,7 +235,7 @@ fn worked_examples(rep: &mut StudyReport) -> Result<(Table, Table, WorkedSummary
 
     // ---- IEEE 738-2012 Annex B: Drake at 100 C ----
     const EX: &str = "IEEE 738 Annex B";
-    let m = Ieee738 { conductor: annex_b_drake(), weather: annex_b_weather() };
+    let m = Ieee738 { conductor: annex_b::drake(), weather: annex_b::weather() };
     let (t_s, t_a) = (K + 100.0, K + 40.0);
     let d = m.conductor.diameter_m;
     let conv = m.convection(t_s);
@@ -481,7 +343,7 @@ fn worked_examples(rep: &mut StudyReport) -> Result<(Table, Table, WorkedSummary
         ),
     );
     // q_s: the annex carried a truncated H_c (74.8 for 74.89) and a rounded Z_c into eq. (9).
-    let p = ieee_solar::SolarPosition::new(&annex_b_sun(), 0.0);
+    let p = ieee_solar::SolarPosition::new(&annex_b::sun(), 0.0);
     let slope = |f: &dyn Fn(f64) -> f64, x: f64| (f(x + 1e-4) - f(x - 1e-4)) / 2e-4;
     let d_hc = slope(&|h| ieee_solar::incidence_angle_deg(h, p.azimuth_deg, 90.0), p.altitude_deg).abs();
     let d_zc = slope(&|z| ieee_solar::incidence_angle_deg(p.altitude_deg, z, 90.0), p.azimuth_deg).abs();
@@ -558,8 +420,8 @@ fn worked_examples(rep: &mut StudyReport) -> Result<(Table, Table, WorkedSummary
     // ---- CIGRE TB 601 Annex E, Examples A and B ----
     let mut tb_amp = [0.0; 2];
     for (k, (label, model, printed, tol_r, net_p)) in [
-        ("TB 601 Example A", example_a(), [77.6, 39.1, 27.2, 976.0], 0.05, 77.6 + 39.1 - 27.2),
-        ("TB 601 Example B", example_b(), [172.1, 54.0, 13.7, 1504.0], 0.5, 172.1 + 54.0 - 13.7),
+        ("TB 601 Example A", tb601::example_a().0, [77.6, 39.1, 27.2, 976.0], 0.05, 77.6 + 39.1 - 27.2),
+        ("TB 601 Example B", tb601::example_b().0, [172.1, 54.0, 13.7, 1504.0], 0.5, 172.1 + 54.0 - 13.7),
     ]
     .into_iter()
     .enumerate()
@@ -631,7 +493,7 @@ fn worked_examples(rep: &mut StudyReport) -> Result<(Table, Table, WorkedSummary
 
     // ---- TB 601 transient example ----
     const TR: &str = "TB 601 transient example";
-    let start_model = tb601_transient(24.0, 1.9, 55.0);
+    let start_model = tb601::transient(24.0, 1.9, 55.0);
     let start = steady::temperature(&start_model, 802.0).map_err(|e| e.to_string())?.temperature_k;
     let start_273 = steady::temperature(&Plus273(&start_model), 802.0).map_err(|e| e.to_string())?.temperature_k;
     reproduce(
@@ -655,7 +517,7 @@ fn worked_examples(rep: &mut StudyReport) -> Result<(Table, Table, WorkedSummary
         [42.175, 42.321, 42.449, 42.562, 42.662, 42.750, 42.828, 42.897, 42.958, 43.011],
         [44.147, 45.199, 46.174, 47.075, 47.910, 48.682, 49.396, 50.057, 50.668, 51.233],
     ];
-    let stages = [(tb601_transient(23.7, 1.7, 62.0), 819.0), (tb601_transient(23.5, 0.8, 37.0), 856.0)];
+    let stages = [(tb601::transient(23.7, 1.7, 62.0), 819.0), (tb601::transient(23.5, 0.8, 37.0), 856.0)];
     let mut track = Table::new(
         "thermal_tb601_transient",
         "TB 601 transient example: printed temperature every minute against ours (RK4, 1 s steps; NOT \
@@ -748,10 +610,10 @@ fn steady_inverse(rep: &mut StudyReport) -> Result<(Table, f64, Vec<String>), St
             "evaluations",
         ],
     );
-    let ieee = Ieee738 { conductor: annex_b_drake(), weather: annex_b_weather() };
+    let ieee = Ieee738 { conductor: annex_b::drake(), weather: annex_b::weather() };
     let mut ieee_night = ieee.clone();
     ieee_night.weather.sun = None;
-    let a = example_a();
+    let a = tb601::example_a().0;
     let mut a_night = a.clone();
     a_night.weather.sun = None;
     let cases = [
@@ -850,7 +712,7 @@ struct TransientSummary {
 }
 
 fn transient(rep: &mut StudyReport, dir: &Path, drake: &ThermalConductor) -> Result<(Table, TransientSummary), String> {
-    let model = Ieee738 { conductor: drake.clone(), weather: annex_b_weather() };
+    let model = Ieee738 { conductor: drake.clone(), weather: annex_b::weather() };
     let (i0, i1) = (400.0, 1200.0);
     let t0 = steady::temperature(&model, i0).map_err(|e| e.to_string())?.temperature_k;
     let t_ss = steady::temperature(&model, i1).map_err(|e| e.to_string())?.temperature_k;
@@ -1437,7 +1299,7 @@ pub fn run(_budget: Budget, dir: &Path) -> Result<StudyReport, String> {
         ..Default::default()
     };
     let drake = catalogue_drake()?;
-    let annex = annex_b_drake();
+    let annex = annex_b::drake();
     let same = drake.diameter_m == annex.diameter_m
         && drake.resistance_low_ohm_per_m == annex.resistance_low_ohm_per_m
         && drake.resistance_high_ohm_per_m == annex.resistance_high_ohm_per_m
