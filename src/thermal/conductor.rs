@@ -51,7 +51,9 @@ impl ThermalConductor {
     }
 
     /// The data as `standard` uses them: IEEE 738 takes the specific heats as constants (its eq. (2) with
-    /// `m C_p` fixed), so its copy has both temperature coefficients zero; CIGRE TB 601 keeps them.
+    /// `m C_p` fixed), so its copy has both temperature coefficients zero; CIGRE TB 601 keeps them. For
+    /// models that read the coefficients themselves (the de-icing's enthalpy); the IEEE 738 heat balance
+    /// itself ignores them.
     pub fn for_standard(&self, standard: super::Standard) -> ThermalConductor {
         let mut c = self.clone();
         if standard == super::Standard::Ieee738 {

@@ -87,8 +87,7 @@ pub fn heat_balance(
     Box::new(Model::new(standard, conductor, weather))
 }
 
-/// The heat balance of either standard, as a value (clonable, unlike a boxed trait object). The conductor is
-/// taken as the standard uses it ([`ThermalConductor::for_standard`]: IEEE 738 with constant specific heats).
+/// The heat balance of either standard, as a value (clonable, unlike a boxed trait object).
 #[derive(Clone, Debug, PartialEq)]
 pub enum Model {
     /// IEEE Std 738-2012
@@ -100,7 +99,6 @@ pub enum Model {
 impl Model {
     /// The heat balance of `standard` for `conductor` in `weather`.
     pub fn new(standard: Standard, conductor: ThermalConductor, weather: Weather) -> Self {
-        let conductor = conductor.for_standard(standard);
         match standard {
             Standard::Ieee738 => Model::Ieee738(ieee738::Ieee738 { conductor, weather }),
             Standard::Cigre601 => Model::Cigre601(cigre601::Cigre601::new(conductor, weather)),

@@ -84,8 +84,10 @@ impl HeatBalance for Ieee738 {
         }
     }
 
-    fn heat_capacity_j_per_m_k(&self, temperature_k: f64) -> f64 {
-        self.conductor.heat_capacity_at_j_per_m_k(temperature_k)
+    /// IEEE 738's `m C_p` (eq. (2)) is a constant: the specific heats at 20 C, whatever temperature
+    /// coefficients the conductor data carry (TB 601 uses those).
+    fn heat_capacity_j_per_m_k(&self, _temperature_k: f64) -> f64 {
+        self.conductor.heat_capacity_j_per_m_k()
     }
 
     fn air_temperature_k(&self) -> f64 {
