@@ -180,23 +180,20 @@ pub fn rate(s: &Scenario, file: &str) -> Result<Rating, RatingError> {
         )));
     }
     let top = r.max_temperature_k.unwrap_or(600.0).max(air);
-    let (m_top, at_top) = margin(top)?;
-    let (limit_temperature_k, at_limit) = if m_top >= 0.0 {
-        (None, at_top)
+    let (m_top, _) = margin(top)?;
+    let limit_temperature_k = if m_top >= 0.0 {
+        None
     } else {
         let (mut lo, mut hi) = (air, top);
-        let mut at = at_air;
         while hi - lo > 1e-3 {
             let mid = 0.5 * (lo + hi);
-            let (m, v) = margin(mid)?;
-            if m >= 0.0 {
+            if margin(mid)?.0 >= 0.0 {
                 lo = mid;
-                at = v;
             } else {
                 hi = mid;
             }
         }
-        (Some(lo), at)
+        Some(lo)
     };
     let ampacity = |temp: f64| steady::ampacity(&model, temp).map(|a| a.current_a).ok();
     let clearance_ampacity_a = limit_temperature_k.and_then(ampacity);
@@ -209,7 +206,6 @@ pub fn rate(s: &Scenario, file: &str) -> Result<Rating, RatingError> {
     };
     let (m_gov, at_rating) = margin(governing)?;
     debug_assert!(m_gov >= -1e-6);
-    let _ = at_limit;
     let step = match r.step_to_a {
         Some(to) => {
             let schedule = CurrentSchedule::new(t.current_a.iter().map(|p| (p[0], p[1])).collect())

@@ -74,14 +74,6 @@ impl CurrentSchedule {
 
     /// The current at `t` [A] (right-continuous at a step).
     pub fn at(&self, t: f64) -> f64 {
-        let p = &self.points;
-        let k = p.partition_point(|q| q.0 <= t);
-        if k == 0 {
-            return p[0].1;
-        }
-        if k == p.len() {
-            return p[k - 1].1;
-        }
         self.on_piece(t, t)
     }
 
