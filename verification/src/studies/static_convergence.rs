@@ -38,8 +38,6 @@ pub struct GridResult {
     pub newton_gap: f64,
     /// simulated settling time [s]
     pub settle_time_s: f64,
-    /// Newton residual history [N]
-    pub newton_history: Vec<f64>,
 }
 
 /// Load magnitude per unit length of a case [N/m].
@@ -62,7 +60,7 @@ pub fn grid(case: Case, n: usize) -> Result<GridResult, String> {
     let mut s = explicit_for(case, n, 0.9, zeta, start);
     let mut nw = s.clone();
     let t = settle(&mut s, tol, 2000.0).map_err(|e| format!("{} N={n}: {e}", case.name()))?;
-    let rep = solve_static(&mut nw, &StaticOptions { tolerance_n: Some(tol), max_iterations: 40 })
+    solve_static(&mut nw, &StaticOptions { tolerance_n: Some(tol), max_iterations: 40 })
         .map_err(|e| format!("{} N={n}: {e}", case.name()))?;
     let ex: Vec<[f64; 3]> = (0..=n).map(|i| exact.position(i as f64 * ds)).collect();
     let num = positions(s.wire());
@@ -77,7 +75,6 @@ pub fn grid(case: Case, n: usize) -> Result<GridResult, String> {
         max_error: max_distance(&num, &ex) / defl_exact,
         newton_gap: max_distance(&num, &positions(nw.wire())) / defl_exact,
         settle_time_s: t,
-        newton_history: rep.residual_history,
     })
 }
 
