@@ -28,7 +28,7 @@ use ohl::scenario;
 use ohl::scheme::Explicit;
 use ohl::statics::{self, StaticOptions};
 
-use crate::plot::{Chart, Series, Style, render};
+use crate::plot::{Chart, Series, Style, render_titled};
 
 /// One support's loads.
 #[derive(Clone, Debug, PartialEq)]
@@ -203,7 +203,16 @@ pub fn run_case(path: &Path, out: &Path) -> Result<CaseOutcome, CaseError> {
     // A thermal case (de-icing) runs for many minutes before the event: its load charts start where its
     // peaks do (`output.peaks_from_s`), and the conductor temperature gets a chart over the whole run.
     let from = if ts.contains_key("temperature_k") { o.summary.peaks_from_s } else { f64::NEG_INFINITY };
-    draw(&name, &dir, &t, &ts, n_sup, n_span, from)?;
+    // The figures' heading names the case and its conductor.
+    let c = &sc.conductor;
+    let heading = format!(
+        "{name}: {} | conductor {} kg/m{}{}",
+        sc.description.as_deref().unwrap_or(""),
+        c.linear_density_kg_per_m,
+        c.diameter_m.map_or(String::new(), |d| format!(", d = {:.1} mm", d * 1e3)),
+        c.axial_stiffness_n.map_or(String::new(), |ea| format!(", EA = {:.0} kN", ea / 1e3)),
+    );
+    draw(&name, &heading, &dir, &t, &ts, n_sup, n_span, from)?;
     write_table(&dir.join(format!("{name}_table.csv")), &supports, &jumps)?;
     let s = &o.summary;
     Ok(CaseOutcome {
@@ -222,8 +231,10 @@ pub fn run_case(path: &Path, out: &Path) -> Result<CaseOutcome, CaseError> {
     })
 }
 
+#[allow(clippy::too_many_arguments)]
 fn draw(
     name: &str,
+    heading: &str,
     dir: &Path,
     t: &[f64],
     ts: &HashMap<String, Vec<f64>>,
@@ -283,7 +294,7 @@ fn draw(
         });
     }
     let plot_err = |e: crate::plot::PlotError| CaseError::Io(e.to_string());
-    render(&charts, 2, (640, 420), &dir.join(format!("{name}_loads"))).map_err(plot_err)?;
+    render_titled(&charts, 2, (680, 440), heading, &dir.join(format!("{name}_loads"))).map_err(plot_err)?;
     // Shapes at the snapshot times.
     let snaps = read_columns(&dir.join("snapshots.csv"))?;
     let (st, x2, x3) = (snaps.get("t_s"), snaps.get("x2_m"), snaps.get("x3_m"));
@@ -305,7 +316,7 @@ fn draw(
             series: shapes,
             ..Default::default()
         };
-        render(&[chart], 1, (1200, 480), &dir.join(format!("{name}_shapes"))).map_err(plot_err)?;
+        render_titled(&[chart], 1, (1200, 480), heading, &dir.join(format!("{name}_shapes"))).map_err(plot_err)?;
     }
     Ok(())
 }

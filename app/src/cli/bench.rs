@@ -37,6 +37,46 @@ pub struct BenchArgs {
     /// `app/benches/instructions.sh`), e.g. `wind_3d:1000:2000`
     #[arg(long, value_name = "CONFIG:N:STEPS")]
     fixed: Option<String>,
+    /// measure nothing: draw `OUT/throughput.png` from this kernel CSV (and `--baseline`), e.g. to redraw
+    /// the committed figure from the committed CSVs
+    #[arg(long, value_name = "CSV")]
+    replot: Option<PathBuf>,
+}
+
+/// Reads a kernel CSV with its label (the file stem).
+fn labelled_rows(path: &std::path::Path) -> Result<(Vec<bench::ThroughputRow>, String), String> {
+    let rows = bench::read_kernel_csv(path)?;
+    let label = path.file_stem().map(|s| s.to_string_lossy().to_string()).unwrap_or_else(|| "baseline".into());
+    Ok((rows, label))
+}
+
+fn replot(args: &BenchArgs, current: &std::path::Path) -> ExitCode {
+    let (rows, label) = match labelled_rows(current) {
+        Ok(x) => x,
+        Err(e) => {
+            eprintln!("error: --replot: {e}");
+            return ExitCode::from(2);
+        }
+    };
+    let baseline = match args.baseline.as_deref().map(labelled_rows).transpose() {
+        Ok(b) => b,
+        Err(e) => {
+            eprintln!("error: --baseline: {e}");
+            return ExitCode::from(2);
+        }
+    };
+    let stem = args.out.join("throughput");
+    let base = baseline.as_ref().map(|(r, l)| (r.as_slice(), l.as_str()));
+    match bench::plot_throughput(&rows, &label, base, &stem) {
+        Ok(()) => {
+            println!("drawn {}.png and .svg from {}", stem.display(), current.display());
+            ExitCode::SUCCESS
+        }
+        Err(e) => {
+            eprintln!("error: {e}");
+            ExitCode::from(1)
+        }
+    }
 }
 
 fn fixed(spec: &str) -> ExitCode {
@@ -74,6 +114,9 @@ fn fixed(spec: &str) -> ExitCode {
 pub fn main(args: BenchArgs) -> ExitCode {
     if let Some(spec) = &args.fixed {
         return fixed(spec);
+    }
+    if let Some(current) = &args.replot {
+        return replot(&args, current);
     }
     if args.reps == 0 || args.node_steps.is_nan() || args.node_steps < 1.0e3 {
         eprintln!("error: --reps must be >= 1 and --node-steps >= 1000 (got {} and {})", args.reps, args.node_steps);

@@ -13,19 +13,16 @@ use std::path::Path;
 use super::extract::Series as Columns;
 use super::table::Row;
 use crate::paper::spec::{ExtractKind, PanelKind, PanelSpec, PaperSpec, UnitSpec};
-use crate::plot::{Chart, PlotError, Series, Style, render};
+use crate::plot::{Chart, PlotError, Series, Style, TopAxis, render_titled};
 use ohl::run::Outcome;
 use ohl::scenario::Plan;
 
-/// Time axis of a panel: values and label.
-fn time_axis(plan: &Plan, unit: UnitSpec, scale: f64) -> (f64, String) {
+/// Time axis of a panel: physical time `t` [s] along the bottom and, for panels in the paper's units, its
+/// dimensionless time `tau = t U / l` along the top.
+fn time_axis(plan: &Plan, unit: UnitSpec) -> Option<TopAxis> {
     match unit {
-        UnitSpec::S => (1.0, "t [s]".into()),
-        _ => {
-            let per_s = plan.tau_speed_m_per_s / plan.chord_m;
-            let _ = scale;
-            (per_s, format!("tau = t U / l [-]   (t [s] = {:.4} tau)", 1.0 / per_s))
-        }
+        UnitSpec::S => None,
+        _ => Some(TopAxis { label: "tau = t U / l [-]".into(), scale: plan.tau_speed_m_per_s / plan.chord_m }),
     }
 }
 
@@ -44,9 +41,15 @@ pub fn charts(spec: &PaperSpec, plan: &Plan, o: &Outcome, cols: &Columns, rows: 
 }
 
 fn chart(p: &PanelSpec, spec: &PaperSpec, plan: &Plan, o: &Outcome, c: &Columns, rows: &[Row], l: f64) -> Chart {
-    let (tf, tlabel) = time_axis(plan, p.time_unit.unwrap_or(UnitSpec::Tau), l);
+    // Time axes are in seconds (`tf = 1`); the paper's tau is the top axis.
+    let tf = 1.0;
+    let top_axis = time_axis(plan, p.time_unit.unwrap_or(UnitSpec::Tau));
     let idx: Vec<usize> = (0..c.t.len()).filter(|&i| in_window(c.t[i], p.window_s)).collect();
-    let mut chart = Chart { x_label: tlabel, ..Default::default() };
+    let mut chart = Chart { x_label: "t [s]".into(), ..Default::default() };
+    if matches!(p.kind, PanelKind::Midspan | PanelKind::MaxTension | PanelKind::SupportTension | PanelKind::Temperature)
+    {
+        chart.top_axis = top_axis;
+    }
     match p.kind {
         PanelKind::Midspan => {
             let comp = p.component.map_or(2, |c| c.index());
@@ -131,9 +134,12 @@ fn chart(p: &PanelSpec, spec: &PaperSpec, plan: &Plan, o: &Outcome, c: &Columns,
                     part.push((s.x[a][i] / l, s.x[b][i] / l));
                     let cut = i + 1 == s.x[0].len() || s.intact[i] == 0.0;
                     if cut {
-                        let which =
-                            if s.intact.contains(&0.0) { ["left part", "right part"][part_no.min(1)] } else { "" };
-                        let label = format!("tau = {:.2} (t = {:.2} s) {which}", s.tau, s.t_s);
+                        // One legend entry per snapshot: the parts of a broken wire share its colour.
+                        let label = if part_no == 0 {
+                            format!("t = {:.2} s (tau = {:.2})", s.t_s, s.tau)
+                        } else {
+                            String::new()
+                        };
                         chart.series.push(Series::new(label, std::mem::take(&mut part), Style::Line, k));
                         part_no += 1;
                     }
@@ -215,10 +221,10 @@ fn chart(p: &PanelSpec, spec: &PaperSpec, plan: &Plan, o: &Outcome, c: &Columns,
     chart
 }
 
-/// Render the case's figure to `stem.png` and `stem.svg`.
-pub fn draw(charts: &[Chart], stem: &Path) -> Result<(), PlotError> {
+/// Render the case's figure under `heading` to `stem.png` and `stem.svg`.
+pub fn draw(charts: &[Chart], heading: &str, stem: &Path) -> Result<(), PlotError> {
     let cols = if charts.len() >= 4 { 2 } else { charts.len().max(1) };
-    render(charts, cols, (620, 420), stem)
+    render_titled(charts, cols, (680, 440), heading, stem)
 }
 
 /// Write the time series (`stem.csv`) and, if any, the shapes (`stem_shapes.csv`) the figure is drawn from.

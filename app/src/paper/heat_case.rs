@@ -19,7 +19,7 @@ use super::table::Row;
 use super::{CaseReport, PaperError};
 use crate::paper::heat_spec::{self, HeatCase, HeatExtractKind, HeatReferenceKind, RunSpec};
 use crate::paper::spec::UnitSpec;
-use crate::plot::{Chart, Series, Style, render};
+use crate::plot::{Chart, Series, Style, render_titled};
 use ohl::exact::heat::{equalisation_time, slowest_mode_spread, two_halves};
 use ohl::heat::HeatRod;
 use ohl::heat::expansion::{thermal_force, thermal_strain};
@@ -184,7 +184,14 @@ pub fn run_heat_case(text: &str, file: &str, name: &str, out_dir: Option<&Path>)
     if let Some(dir) = out_dir {
         let stem = dir.join(name);
         let charts = charts(&case, &runs, ul, ur, unit_s);
-        render(&charts, 2, (620, 420), &stem).map_err(|e| PaperError::Output(e.to_string()))?;
+        let heading = format!(
+            "{name}: {} | wire d = {:.2} mm, E = {:.0} GPa, span {} m",
+            case.paper.title,
+            m.diameter_m * 1e3,
+            m.youngs_modulus_pa / 1e9,
+            m.span_m
+        );
+        render_titled(&charts, 2, (680, 440), &heading, &stem).map_err(|e| PaperError::Output(e.to_string()))?;
         write_csv(&runs, &stem).map_err(|e| PaperError::Output(format!("{}: {e}", stem.display())))?;
         figure = Some(stem);
     }

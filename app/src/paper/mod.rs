@@ -135,7 +135,16 @@ pub fn run_case(path: &Path, out_dir: Option<&Path>) -> Result<CaseReport, Paper
         let stem = dir.join(&name);
         let charts = figure::charts(&spec, &plan, &o, &cols, &rows);
         if !charts.is_empty() {
-            figure::draw(&charts, &stem).map_err(|e| PaperError::Output(e.to_string()))?;
+            // The heading names the case and its wire (the paper's: mass, stiffness, span, grid).
+            let heading = format!(
+                "{name}: {} | wire {} kg/m, EA = {:.0} kN, span {} m, N = {}",
+                spec.title,
+                sc.conductor.linear_density_kg_per_m,
+                ea / 1e3,
+                plan.chord_m,
+                plan.solver.wire().axial_stiffness_n.len()
+            );
+            figure::draw(&charts, &heading, &stem).map_err(|e| PaperError::Output(e.to_string()))?;
         }
         figure::write_csv(&o, &cols, &plan, l, &stem)
             .map_err(|e| PaperError::Output(format!("{}: {e}", stem.with_extension("csv").display())))?;

@@ -1,0 +1,792 @@
+//! Comparison plots to PNG and SVG in one shared style, drawn by plotters with the font bundled in
+//! `assets/fonts`, so the same figure renders on any machine without a display or system fonts.
+//!
+//! A [`Chart`] is one panel: labelled axes (quantity and unit), any number of [`Series`] (the computed
+//! curve, the analytic or reference curve beside it, markers for paper values), linear or logarithmic
+//! axes, optionally a second time axis on top (the paper's dimensionless time beside physical time).
+//! [`render`] writes `stem.png` and `stem.svg` with one or more panels on a grid. The style, for every
+//! figure of the project:
+//! - the legend sits outside the data area (to the right of the plot, or below it when the labels are
+//!   long) and shows each series as drawn: colour, dash pattern, markers;
+//! - within a panel no two labelled series look alike: two solid lines (or two dashed, or two marker
+//!   sets) never share a colour (a repeated palette index moves to the next free colour), while a computed
+//!   solid line and its dashed reference may; solid lines are drawn first, dashed and dotted references over them, markers last,
+//!   and a solid line that another one would hide is drawn wider beneath it;
+//! - tick labels are chosen by measuring them ([`ticks`]), so they never collide or repeat;
+//! - the PNG is anti-aliased by supersampling ([`raster`]); lines longer than a few points per pixel
+//!   column are reduced to each column's first, least, greatest and last point, which draws the same
+//!   picture (envelopes included) with far fewer points;
+//! - the SVG carries its text as glyph outlines of the bundled font ([`svg`]), so every viewer shows it
+//!   alike.
+
+mod raster;
+mod svg;
+mod text;
+mod ticks;
+
+use std::path::Path;
+
+use plotters::coord::Shift;
+use plotters::coord::ranged1d::Ranged;
+use plotters::coord::types::RangedCoordf64;
+use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
+
+use ticks::{Along, Ticks};
+
+/// How a series is drawn.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Style {
+    /// solid line (computed results)
+    Line,
+    /// dashed line (analytic or reference solutions)
+    Dashed,
+    /// dotted line (a second reference, an envelope, a limit)
+    Dotted,
+    /// markers only (paper values, sampled points)
+    Markers,
+    /// solid line with markers (convergence data)
+    LineMarkers,
+}
+
+/// One curve.
+#[derive(Clone, Debug)]
+pub struct Series {
+    /// legend text
+    pub label: String,
+    /// the points `(x, y)`
+    pub points: Vec<(f64, f64)>,
+    /// how it is drawn
+    pub style: Style,
+    /// palette index (10 colours; labelled series of one panel drawn alike never share one)
+    pub color: usize,
+}
+
+impl Series {
+    /// A series with the given label, points, style and palette colour.
+    pub fn new(label: impl Into<String>, points: Vec<(f64, f64)>, style: Style, color: usize) -> Self {
+        Series { label: label.into(), points, style, color }
+    }
+}
+
+/// A second x axis along the top of a panel, a fixed multiple of the bottom one (the paper's
+/// dimensionless time `tau = t / t_ref` above physical time `t`).
+#[derive(Clone, Debug)]
+pub struct TopAxis {
+    /// axis label: quantity and unit
+    pub label: String,
+    /// top value per bottom value
+    pub scale: f64,
+}
+
+/// One panel.
+#[derive(Clone, Debug, Default)]
+pub struct Chart {
+    /// caption above the panel
+    pub title: String,
+    /// x-axis label: quantity and unit
+    pub x_label: String,
+    /// y-axis label: quantity and unit
+    pub y_label: String,
+    /// the curves
+    pub series: Vec<Series>,
+    /// logarithmic x axis
+    pub log_x: bool,
+    /// logarithmic y axis
+    pub log_y: bool,
+    /// fixed x range (default: the data's, with a margin)
+    pub x_range: Option<(f64, f64)>,
+    /// fixed y range (default: the data's, with a margin)
+    pub y_range: Option<(f64, f64)>,
+    /// a second x axis on top
+    pub top_axis: Option<TopAxis>,
+}
+
+/// Plot failure.
+#[derive(Debug, thiserror::Error)]
+#[error("cannot draw {path}: {message}")]
+pub struct PlotError {
+    /// the file
+    pub path: String,
+    /// what the backend said
+    pub message: String,
+}
+
+/// Ten distinguishable colours (the "tab10" palette of matplotlib, a common reference for line plots).
+const PALETTE: [RGBColor; 10] = [
+    RGBColor(31, 119, 180),
+    RGBColor(214, 39, 40),
+    RGBColor(44, 160, 44),
+    RGBColor(255, 127, 14),
+    RGBColor(148, 103, 189),
+    RGBColor(140, 86, 75),
+    RGBColor(227, 119, 194),
+    RGBColor(127, 127, 127),
+    RGBColor(188, 189, 34),
+    RGBColor(23, 190, 207),
+];
+
+/// Sizes of the style at output scale 1 [px].
+mod size {
+    pub const HEADING: f64 = 19.0;
+    pub const TITLE: f64 = 16.0;
+    pub const TICK: f64 = 13.0;
+    pub const AXIS: f64 = 14.0;
+    pub const LEGEND: f64 = 13.0;
+    pub const MARGIN: f64 = 10.0;
+    pub const LINE: f64 = 2.0;
+    pub const LINE_HIDDEN_MAX: f64 = 5.0;
+    pub const MARKER: f64 = 3.5;
+    pub const SAMPLE: f64 = 30.0;
+}
+
+fn data_range(values: impl Iterator<Item = f64>, log: bool) -> (f64, f64) {
+    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+    for v in values.filter(|v| v.is_finite() && (!log || *v > 0.0)) {
+        lo = lo.min(v);
+        hi = hi.max(v);
+    }
+    if !lo.is_finite() {
+        return if log { (0.1, 10.0) } else { (-1.0, 1.0) };
+    }
+    if log {
+        let r = (hi / lo).powf(0.04).max(1.05);
+        (lo / r, hi * r)
+    } else if hi - lo <= f64::EPSILON * hi.abs().max(1.0) {
+        let m = hi.abs().max(1.0) * 0.05;
+        (lo - m, hi + m)
+    } else {
+        let m = 0.04 * (hi - lo);
+        (lo - m, hi + m)
+    }
+}
+
+/// Render `panels` on a grid with `cols` columns, `panel_size` pixels each, to `stem.png` and
+/// `stem.svg` (the parent directory is created).
+pub fn render(panels: &[Chart], cols: usize, panel_size: (u32, u32), stem: &Path) -> Result<(), PlotError> {
+    render_titled(panels, cols, panel_size, "", stem)
+}
+
+/// [`render`] under a figure title (the case and its conductor), one line above the panels.
+pub fn render_titled(
+    panels: &[Chart],
+    cols: usize,
+    panel_size: (u32, u32),
+    title: &str,
+    stem: &Path,
+) -> Result<(), PlotError> {
+    plotters::style::register_font("sans-serif", FontStyle::Normal, text::FONT_BYTES)
+        .unwrap_or_else(|_| panic!("bundled font assets/fonts/DejaVuSans.ttf is not a valid font"));
+    if let Some(dir) = stem.parent() {
+        std::fs::create_dir_all(dir)
+            .map_err(|e| PlotError { path: dir.display().to_string(), message: e.to_string() })?;
+    }
+    let cols = cols.max(1);
+    let rows = panels.len().div_ceil(cols);
+    let heading = if title.is_empty() { 0 } else { (2.2 * size::HEADING).ceil() as u32 };
+    let size = (panel_size.0 * cols as u32, panel_size.1 * rows as u32 + heading);
+    let png = stem.with_extension("png");
+    let svg = stem.with_extension("svg");
+    let err = |p: &Path| {
+        let path = p.display().to_string();
+        move |e: String| PlotError { path: path.clone(), message: e }
+    };
+    {
+        let k = raster::SUPERSAMPLE;
+        let big = (size.0 * k, size.1 * k);
+        let mut buffer = vec![0u8; big.0 as usize * big.1 as usize * 3];
+        {
+            let root = raster::GlyphBitmap::new(&mut buffer, big).into_drawing_area();
+            draw_all(&root, panels, rows, cols, title, f64::from(k)).map_err(err(&png))?;
+            root.present().map_err(|e| e.to_string()).map_err(err(&png))?;
+        }
+        raster::downsample_to_png(&buffer, size, &png).map_err(err(&png))?;
+    }
+    {
+        let root = svg::GlyphSvg::new(&svg, size).into_drawing_area();
+        draw_all(&root, panels, rows, cols, title, 1.0).map_err(err(&svg))?;
+        root.present().map_err(|e| e.to_string()).map_err(err(&svg))?;
+    }
+    Ok(())
+}
+
+/// A series ready to draw: its effective colour, stroke width [px at scale 1] and drawing rank.
+struct Prepared<'a> {
+    series: &'a Series,
+    color: RGBColor,
+    width: f64,
+}
+
+/// Effective colours (unique among labelled series) and widths (a solid line mostly covered by a later
+/// solid line is widened so that it shows on both sides of it).
+fn prepare<'a>(chart: &'a Chart, xr: (f64, f64), yr: (f64, f64)) -> Vec<Prepared<'a>> {
+    // A colour may be shared only by series drawn differently (a computed solid line and its dashed
+    // reference): the key is (colour, drawing class).
+    let key_class = |s: &Series| match s.style {
+        Style::Line | Style::LineMarkers => 0,
+        Style::Dashed | Style::Dotted => 1,
+        Style::Markers => 2,
+    };
+    let mut used = [[false; PALETTE.len()]; 3];
+    let mut colors = Vec::with_capacity(chart.series.len());
+    for s in &chart.series {
+        let mut c = s.color % PALETTE.len();
+        if !s.label.is_empty() {
+            let u = &mut used[key_class(s)];
+            if u[c] {
+                c = (0..PALETTE.len()).map(|i| (c + i) % PALETTE.len()).find(|&i| !u[i]).unwrap_or(c);
+            }
+            u[c] = true;
+        }
+        colors.push(c);
+    }
+    // Lines are drawn in two classes (solid, then dashed and dotted); within a class a later line can hide
+    // an earlier one.
+    let class = |s: &Series| match s.style {
+        Style::Line | Style::LineMarkers => Some(0),
+        Style::Dashed | Style::Dotted => Some(1),
+        Style::Markers => None,
+    };
+    let unit = |p: (f64, f64)| {
+        let u = |v: f64, (lo, hi): (f64, f64), log: bool| {
+            if log { (v.ln() - lo.ln()) / (hi.ln() - lo.ln()) } else { (v - lo) / (hi - lo) }
+        };
+        (u(p.0, xr, chart.log_x), u(p.1, yr, chart.log_y))
+    };
+    let n = chart.series.len();
+    let mut width = vec![size::LINE; n];
+    // Line i is hidden if a later line j of its class runs within 0.6 % of the axes of most of i's points.
+    for i in (0..n).rev() {
+        let Some(ci) = class(&chart.series[i]) else {
+            continue;
+        };
+        let a: Vec<(f64, f64)> = chart.series[i].points.iter().map(|&p| unit(p)).collect();
+        for j in i + 1..n {
+            if class(&chart.series[j]) != Some(ci) || a.is_empty() {
+                continue;
+            }
+            let b: Vec<(f64, f64)> = chart.series[j].points.iter().map(|&p| unit(p)).collect();
+            let near = a.iter().filter(|p| distance_to_polyline(**p, &b) < 0.006).count();
+            if near * 2 > a.len() {
+                // Nested stripes, capped so that a bundle of coincident lines stays thin.
+                width[i] = width[i].max((width[j] + 1.5).min(size::LINE_HIDDEN_MAX));
+            }
+        }
+    }
+    chart
+        .series
+        .iter()
+        .zip(colors)
+        .zip(width)
+        .map(|((series, c), width)| Prepared { series, color: PALETTE[c], width })
+        .collect()
+}
+
+/// Distance of `p` to the polyline `line` (both in unit coordinates).
+fn distance_to_polyline(p: (f64, f64), line: &[(f64, f64)]) -> f64 {
+    let seg = |a: (f64, f64), b: (f64, f64)| {
+        let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+        let l2 = dx * dx + dy * dy;
+        let t = if l2 > 0.0 { (((p.0 - a.0) * dx + (p.1 - a.1) * dy) / l2).clamp(0.0, 1.0) } else { 0.0 };
+        ((a.0 + t * dx - p.0).powi(2) + (a.1 + t * dy - p.1).powi(2)).sqrt()
+    };
+    match line.len() {
+        0 => f64::INFINITY,
+        1 => seg(line[0], line[0]),
+        _ => line.windows(2).map(|w| seg(w[0], w[1])).fold(f64::INFINITY, f64::min),
+    }
+}
+
+/// Keeps, of each run of points falling in one of `columns` equal columns of the x range, the first, the
+/// least, the greatest and the last (in their order), when x is monotone and the series has more than
+/// four points per column; otherwise returns the points unchanged.
+fn decimate(points: &[(f64, f64)], xr: (f64, f64), log: bool, columns: f64) -> Vec<(f64, f64)> {
+    let pts: Vec<(f64, f64)> = points.iter().copied().filter(|p| p.0.is_finite() && p.1.is_finite()).collect();
+    let monotone = pts.windows(2).all(|w| w[1].0 >= w[0].0);
+    if !monotone || (pts.len() as f64) < 4.0 * columns {
+        return pts;
+    }
+    let col = |x: f64| {
+        let u = if log { (x.ln() - xr.0.ln()) / (xr.1.ln() - xr.0.ln()) } else { (x - xr.0) / (xr.1 - xr.0) };
+        (u * columns).floor() as i64
+    };
+    let mut out = Vec::with_capacity((4.0 * columns) as usize + 4);
+    let mut i = 0;
+    while i < pts.len() {
+        let c = col(pts[i].0);
+        let mut j = i;
+        let (mut lo, mut hi) = (i, i);
+        while j < pts.len() && col(pts[j].0) == c {
+            if pts[j].1 < pts[lo].1 {
+                lo = j;
+            }
+            if pts[j].1 > pts[hi].1 {
+                hi = j;
+            }
+            j += 1;
+        }
+        let mut keep = [i, lo, hi, j - 1];
+        keep.sort_unstable();
+        let mut last = usize::MAX;
+        for k in keep {
+            if k != last {
+                out.push(pts[k]);
+                last = k;
+            }
+        }
+        i = j;
+    }
+    out
+}
+
+/// Where the legend goes and how big it is [px at the drawing scale].
+enum LegendPlace {
+    None,
+    Right(u32),
+    Below(u32, usize),
+}
+
+fn legend_place(chart: &Chart, panel_w: f64, s: f64) -> LegendPlace {
+    let labels: Vec<&str> = chart.series.iter().filter(|x| !x.label.is_empty()).map(|x| x.label.as_str()).collect();
+    // One labelled series needs no legend: the axis label says what it is.
+    if labels.len() < 2 {
+        return LegendPlace::None;
+    }
+    let widest = labels.iter().map(|l| text::width(l, size::LEGEND as f32) as f64).fold(0.0, f64::max);
+    let right = size::SAMPLE + 8.0 + widest + 2.0 * size::MARGIN;
+    if right <= 0.34 * panel_w / s {
+        return LegendPlace::Right((right * s).ceil() as u32);
+    }
+    // Below: entries flow in columns of equal width.
+    let entry = size::SAMPLE + 8.0 + widest + 2.0 * size::MARGIN;
+    let per_row = ((panel_w / s - 2.0 * size::MARGIN - 60.0) / entry).floor().max(1.0) as usize;
+    let rows = labels.len().div_ceil(per_row);
+    LegendPlace::Below(((rows as f64 * 1.5 * size::LEGEND + size::MARGIN) * s).ceil() as u32, per_row)
+}
+
+fn draw_all<DB: DrawingBackend>(
+    root: &DrawingArea<DB, Shift>,
+    panels: &[Chart],
+    rows: usize,
+    cols: usize,
+    title: &str,
+    s: f64,
+) -> Result<(), String> {
+    root.fill(&WHITE).map_err(|e| e.to_string())?;
+    let body = if title.is_empty() {
+        root.clone()
+    } else {
+        let (w, _) = root.dim_in_pixel();
+        let (head, body) = root.split_vertically((2.2 * size::HEADING * s).ceil() as u32);
+        let style = TextStyle::from(("sans-serif", size::HEADING * s).into_font())
+            .color(&BLACK)
+            .pos(Pos::new(HPos::Center, VPos::Center));
+        head.draw(&Text::new(title.to_string(), (w as i32 / 2, (1.2 * size::HEADING * s) as i32), style))
+            .map_err(|e| e.to_string())?;
+        body
+    };
+    let areas = body.split_evenly((rows, cols));
+    for (chart, area) in panels.iter().zip(areas.iter()) {
+        let xs = chart.series.iter().flat_map(|s| s.points.iter().map(|p| p.0));
+        let ys = chart.series.iter().flat_map(|s| s.points.iter().map(|p| p.1));
+        let xr = chart.x_range.unwrap_or_else(|| data_range(xs, chart.log_x));
+        let yr = chart.y_range.unwrap_or_else(|| data_range(ys, chart.log_y));
+        draw_panel(area, chart, xr, yr, s)?;
+    }
+    Ok(())
+}
+
+fn draw_panel<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    chart: &Chart,
+    xr: (f64, f64),
+    yr: (f64, f64),
+    s: f64,
+) -> Result<(), String> {
+    let (w, h) = area.dim_in_pixel();
+    let (plot_area, legend_area) = match legend_place(chart, f64::from(w), s) {
+        LegendPlace::None => (area.clone(), None),
+        LegendPlace::Right(lw) => {
+            let (a, b) = area.split_horizontally(w.saturating_sub(lw));
+            (a, Some((b, None)))
+        }
+        LegendPlace::Below(lh, per_row) => {
+            let (a, b) = area.split_vertically(h.saturating_sub(lh));
+            (a, Some((b, Some(per_row))))
+        }
+    };
+    // Label areas from the measured labels: the y axis's widest tick label, the x axis's text height.
+    let (pw, ph) = plot_area.dim_in_pixel();
+    let top = if chart.top_axis.is_some() { 1.1 * size::TICK + 1.3 * size::AXIS + 12.0 } else { 0.0 };
+    let x_area = 1.0 * size::TICK + 1.6 * size::AXIS + 8.0;
+    let title_h = if chart.title.is_empty() { 0.0 } else { 1.6 * size::TITLE };
+    let plot_h = f64::from(ph) / s - x_area - top - title_h - 2.0 * size::MARGIN;
+    let y_ticks =
+        axis_ticks(yr, chart.log_y, plot_h, Along::Y, chart.series.iter().flat_map(|s| s.points.iter().map(|p| p.1)));
+    let widest_y = y_ticks.labels.iter().map(|l| text::width(l, size::TICK as f32) as f64).fold(0.0, f64::max);
+    let y_area = widest_y + 1.5 * size::AXIS + 12.0;
+    let plot_w = f64::from(pw) / s - y_area - 2.0 * size::MARGIN;
+    let x_ticks =
+        axis_ticks(xr, chart.log_x, plot_w, Along::X, chart.series.iter().flat_map(|s| s.points.iter().map(|p| p.0)));
+    let geometry = Geometry { title: title_h, x_area, y_area, top, plot_w };
+    match (chart.log_x, chart.log_y) {
+        (false, false) => draw_chart(
+            &plot_area,
+            chart,
+            lin(xr, &x_ticks),
+            lin(yr, &y_ticks),
+            (&x_ticks, &y_ticks),
+            &geometry,
+            xr,
+            yr,
+            s,
+        ),
+        (true, false) => draw_chart(
+            &plot_area,
+            chart,
+            logc(xr, &x_ticks),
+            lin(yr, &y_ticks),
+            (&x_ticks, &y_ticks),
+            &geometry,
+            xr,
+            yr,
+            s,
+        ),
+        (false, true) => draw_chart(
+            &plot_area,
+            chart,
+            lin(xr, &x_ticks),
+            logc(yr, &y_ticks),
+            (&x_ticks, &y_ticks),
+            &geometry,
+            xr,
+            yr,
+            s,
+        ),
+        (true, true) => draw_chart(
+            &plot_area,
+            chart,
+            logc(xr, &x_ticks),
+            logc(yr, &y_ticks),
+            (&x_ticks, &y_ticks),
+            &geometry,
+            xr,
+            yr,
+            s,
+        ),
+    }?;
+    if let Some((legend_area, below)) = legend_area {
+        let prepared = prepare(chart, xr, yr);
+        draw_legend(&legend_area, &prepared, below, title_h, s)?;
+    }
+    Ok(())
+}
+
+fn axis_ticks(r: (f64, f64), log: bool, length: f64, along: Along, data: impl Iterator<Item = f64>) -> Ticks {
+    if log {
+        let data: Vec<f64> = if along == Along::X { data.collect() } else { Vec::new() };
+        ticks::log(r.0, r.1, length, size::TICK, along, &data)
+    } else {
+        ticks::linear(r.0, r.1, length, size::TICK, along)
+    }
+}
+
+/// A coordinate whose grid lines and labels are the given ticks (plotters' own `WithKeyPoints` offers no
+/// label formatting, which the mesh needs).
+struct Keyed<R: Ranged<ValueType = f64>> {
+    inner: R,
+    bold: Vec<f64>,
+    light: Vec<f64>,
+}
+
+impl<R: Ranged<ValueType = f64>> Ranged for Keyed<R> {
+    type FormatOption = plotters::coord::ranged1d::DefaultFormatting;
+    type ValueType = f64;
+    fn range(&self) -> std::ops::Range<f64> {
+        self.inner.range()
+    }
+    fn map(&self, value: &f64, limit: (i32, i32)) -> i32 {
+        self.inner.map(value, limit)
+    }
+    fn key_points<H: plotters::coord::ranged1d::KeyPointHint>(&self, hint: H) -> Vec<f64> {
+        if hint.weight().allow_light_points() { self.light.clone() } else { self.bold.clone() }
+    }
+    fn axis_pixel_range(&self, limit: (i32, i32)) -> std::ops::Range<i32> {
+        self.inner.axis_pixel_range(limit)
+    }
+}
+
+fn lin(r: (f64, f64), t: &Ticks) -> Keyed<RangedCoordf64> {
+    Keyed { inner: (r.0..r.1).into(), bold: t.at.clone(), light: t.minor.clone() }
+}
+
+fn logc(r: (f64, f64), t: &Ticks) -> Keyed<plotters::coord::combinators::LogCoord<f64>> {
+    use plotters::coord::combinators::IntoLogRange;
+    Keyed { inner: (r.0..r.1).log_scale().into(), bold: t.at.clone(), light: t.minor.clone() }
+}
+
+struct Geometry {
+    title: f64,
+    x_area: f64,
+    y_area: f64,
+    top: f64,
+    plot_w: f64,
+}
+
+/// The label of tick `v` among `t`'s.
+fn label_of(t: &Ticks, v: f64) -> String {
+    t.at.iter()
+        .position(|a| (a - v).abs() <= 1e-9 * a.abs().max(1e-300))
+        .map(|i| t.labels[i].clone())
+        .unwrap_or_default()
+}
+
+#[allow(clippy::too_many_arguments)]
+fn draw_chart<DB, X, Y>(
+    area: &DrawingArea<DB, Shift>,
+    chart: &Chart,
+    x: X,
+    y: Y,
+    (xt, yt): (&Ticks, &Ticks),
+    g: &Geometry,
+    xr: (f64, f64),
+    yr: (f64, f64),
+    s: f64,
+) -> Result<(), String>
+where
+    DB: DrawingBackend,
+    X: Ranged<ValueType = f64, FormatOption = plotters::coord::ranged1d::DefaultFormatting>,
+    Y: Ranged<ValueType = f64, FormatOption = plotters::coord::ranged1d::DefaultFormatting>,
+{
+    let e = |e: DrawingAreaErrorKind<DB::ErrorType>| e.to_string();
+    let px = |v: f64| (v * s).round() as i32;
+    let font = |v: f64| ("sans-serif", v * s);
+    let mut builder = ChartBuilder::on(area);
+    builder.margin(px(size::MARGIN)).x_label_area_size(px(g.x_area)).y_label_area_size(px(g.y_area));
+    // The title is drawn by hand above the top axis (a caption would sit below a top margin).
+    builder.margin_top(px(size::MARGIN + g.title + g.top));
+    if !chart.title.is_empty() {
+        let (w, _) = area.dim_in_pixel();
+        let style = TextStyle::from(font(size::TITLE).into_font()).color(&BLACK).pos(Pos::new(HPos::Center, VPos::Top));
+        area.draw(&Text::new(chart.title.clone(), (w as i32 / 2, px(size::MARGIN)), style)).map_err(e)?;
+    }
+    let mut cc = builder.build_cartesian_2d(x, y).map_err(e)?;
+    let x_fmt = |v: &f64| label_of(xt, *v);
+    let y_fmt = |v: &f64| label_of(yt, *v);
+    cc.configure_mesh()
+        .x_label_formatter(&x_fmt)
+        .y_label_formatter(&y_fmt)
+        .x_desc(chart.x_label.as_str())
+        .y_desc(chart.y_label.as_str())
+        .label_style(font(size::TICK))
+        .axis_desc_style(font(size::AXIS))
+        .bold_line_style(RGBColor(225, 225, 225).stroke_width(px(1.0).max(1) as u32))
+        .light_line_style(RGBColor(242, 242, 242).stroke_width(px(1.0).max(1) as u32))
+        .axis_style(BLACK.stroke_width(px(1.0).max(1) as u32))
+        .set_all_tick_mark_size(px(4.0))
+        .draw()
+        .map_err(e)?;
+    if let Some(top) = &chart.top_axis {
+        // The top axis is drawn by hand: plotters' secondary axes would repeat the primary labels there.
+        let t2 = ticks::linear(xr.0 * top.scale, xr.1 * top.scale, g.plot_w, size::TICK, Along::X);
+        let base = area.get_base_pixel();
+        let rel = |p: (i32, i32)| (p.0 - base.0, p.1 - base.1);
+        let (left, y_top) = rel(cc.backend_coord(&(xr.0, yr.1)));
+        let (right, _) = rel(cc.backend_coord(&(xr.1, yr.1)));
+        let axis = BLACK.stroke_width(px(1.0).max(1) as u32);
+        area.draw(&PathElement::new(vec![(left, y_top), (right, y_top)], axis)).map_err(e)?;
+        let tick_style =
+            TextStyle::from(font(size::TICK).into_font()).color(&BLACK).pos(Pos::new(HPos::Center, VPos::Bottom));
+        for (v, label) in t2.at.iter().zip(&t2.labels) {
+            let (x, _) = rel(cc.backend_coord(&(v / top.scale, yr.1)));
+            area.draw(&PathElement::new(vec![(x, y_top), (x, y_top - px(4.0))], axis)).map_err(e)?;
+            area.draw(&Text::new(label.clone(), (x, y_top - px(6.0)), tick_style.clone())).map_err(e)?;
+        }
+        let desc_style =
+            TextStyle::from(font(size::AXIS).into_font()).color(&BLACK).pos(Pos::new(HPos::Center, VPos::Bottom));
+        let desc_y = y_top - px(10.0 + 1.1 * size::TICK);
+        area.draw(&Text::new(top.label.clone(), ((left + right) / 2, desc_y), desc_style)).map_err(e)?;
+    }
+    draw_series(&mut cc, chart, xr, yr, g, s)
+}
+
+/// Draws the series: solid lines first, dashed and dotted references over them, markers last.
+fn draw_series<DB, X, Y>(
+    cc: &mut ChartContext<DB, Cartesian2d<X, Y>>,
+    chart: &Chart,
+    xr: (f64, f64),
+    yr: (f64, f64),
+    g: &Geometry,
+    s: f64,
+) -> Result<(), String>
+where
+    DB: DrawingBackend,
+    X: Ranged<ValueType = f64>,
+    Y: Ranged<ValueType = f64>,
+{
+    let e = |e: DrawingAreaErrorKind<DB::ErrorType>| e.to_string();
+    let px = |v: f64| (v * s).round() as i32;
+    let prepared = prepare(chart, xr, yr);
+    let columns = g.plot_w * s;
+    let rank = |p: &Prepared| match p.series.style {
+        Style::Line | Style::LineMarkers => 0,
+        Style::Dashed | Style::Dotted => 1,
+        Style::Markers => 2,
+    };
+    let mut order: Vec<&Prepared> = prepared.iter().collect();
+    order.sort_by_key(|p| rank(p));
+    for p in order {
+        let c = p.color;
+        let stroke = c.stroke_width(px(p.width).max(1) as u32);
+        match p.series.style {
+            Style::Line => {
+                let pts = decimate(&p.series.points, xr, chart.log_x, columns);
+                cc.draw_series(LineSeries::new(pts, stroke)).map_err(e)?;
+            }
+            Style::Dashed => {
+                let pts = decimate(&p.series.points, xr, chart.log_x, columns);
+                cc.draw_series(DashedLineSeries::new(pts, px(7.0) as u32, px(4.0) as u32, stroke)).map_err(e)?;
+            }
+            Style::Dotted => {
+                let pts = decimate(&p.series.points, xr, chart.log_x, columns);
+                cc.draw_series(DashedLineSeries::new(pts, px(2.0) as u32, px(3.0) as u32, stroke)).map_err(e)?;
+            }
+            Style::Markers => {
+                let pts = p.series.points.iter().copied().filter(|q| q.0.is_finite() && q.1.is_finite());
+                cc.draw_series(pts.map(|q| Circle::new(q, px(size::MARKER) as u32, c.filled()))).map_err(e)?;
+            }
+            Style::LineMarkers => {
+                let pts: Vec<_> =
+                    p.series.points.iter().copied().filter(|q| q.0.is_finite() && q.1.is_finite()).collect();
+                cc.draw_series(LineSeries::new(pts.clone(), stroke)).map_err(e)?;
+                cc.draw_series(pts.iter().map(|&q| Circle::new(q, px(size::MARKER) as u32, c.filled()))).map_err(e)?;
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Draws the legend entries (labelled series, in their order) in `area`: a column level with the plot's
+/// top edge (`below = None`, the legend to the right of the plot), or rows of `below` entries under it.
+fn draw_legend<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    prepared: &[Prepared],
+    below: Option<usize>,
+    title_h: f64,
+    s: f64,
+) -> Result<(), String> {
+    let e = |e: DrawingAreaErrorKind<DB::ErrorType>| e.to_string();
+    let px = |v: f64| (v * s).round() as i32;
+    let entries: Vec<&Prepared> = prepared.iter().filter(|p| !p.series.label.is_empty()).collect();
+    let widest = entries.iter().map(|p| text::width(&p.series.label, size::LEGEND as f32) as f64).fold(0.0, f64::max);
+    let entry_w = size::SAMPLE + 8.0 + widest + 2.0 * size::MARGIN;
+    let line_h = 1.5 * size::LEGEND;
+    let per_row = below.unwrap_or(1);
+    let (x0, y0) = match below {
+        None => (0.0, size::MARGIN + title_h + 4.0),
+        Some(_) => (size::MARGIN + 60.0, 0.0),
+    };
+    let style = TextStyle::from(("sans-serif", size::LEGEND * s).into_font())
+        .color(&BLACK)
+        .pos(Pos::new(HPos::Left, VPos::Center));
+    for (i, p) in entries.iter().enumerate() {
+        let (r, c) = (i / per_row, i % per_row);
+        let x = x0 + c as f64 * entry_w;
+        let y = y0 + (r as f64 + 0.5) * line_h;
+        let (xa, xb, yy) = (px(x), px(x + size::SAMPLE), px(y));
+        let stroke = p.color.stroke_width(px(p.width.min(3.0)).max(1) as u32);
+        match p.series.style {
+            Style::Line | Style::LineMarkers => {
+                area.draw(&PathElement::new(vec![(xa, yy), (xb, yy)], stroke)).map_err(e)?;
+            }
+            Style::Dashed | Style::Dotted => {
+                let (on, off) = if p.series.style == Style::Dashed { (7.0, 4.0) } else { (2.0, 3.0) };
+                let mut t = 0.0;
+                while t < size::SAMPLE {
+                    let a = px(x + t);
+                    let b = px(x + (t + on).min(size::SAMPLE));
+                    area.draw(&PathElement::new(vec![(a, yy), (b, yy)], stroke)).map_err(e)?;
+                    t += on + off;
+                }
+            }
+            Style::Markers => {}
+        }
+        if matches!(p.series.style, Style::Markers | Style::LineMarkers) {
+            area.draw(&Circle::new((px(x + 0.5 * size::SAMPLE), yy), px(size::MARKER) as u32, p.color.filled()))
+                .map_err(e)?;
+        }
+        area.draw(&Text::new(p.series.label.clone(), (px(x + size::SAMPLE + 8.0), yy), style.clone())).map_err(e)?;
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn renders_png_and_svg_with_the_bundled_font() {
+        let dir = std::env::temp_dir().join(format!("ohl-plot-{}", std::process::id()));
+        let stem = dir.join("demo");
+        let line: Vec<(f64, f64)> = (0..50).map(|i| (i as f64 * 0.1, (i as f64 * 0.1).sin())).collect();
+        let conv: Vec<(f64, f64)> = [25.0, 50.0, 100.0].iter().map(|&n| (n, 1.0 / (n * n))).collect();
+        let a = Chart {
+            title: "sine".into(),
+            x_label: "t [s]".into(),
+            y_label: "x3 [m]".into(),
+            series: vec![
+                Series::new("computed", line.clone(), Style::Line, 0),
+                Series::new("exact", line, Style::Dashed, 1),
+            ],
+            top_axis: Some(TopAxis { label: "tau [-]".into(), scale: 2.0 }),
+            ..Default::default()
+        };
+        let b = Chart {
+            title: "convergence".into(),
+            x_label: "N".into(),
+            y_label: "error".into(),
+            series: vec![Series::new("error", conv, Style::LineMarkers, 2)],
+            log_x: true,
+            log_y: true,
+            ..Default::default()
+        };
+        render(&[a, b], 2, (500, 350), &stem).expect("render");
+        let png = std::fs::read(stem.with_extension("png")).unwrap();
+        assert_eq!(&png[1..4], b"PNG");
+        let svg = std::fs::read_to_string(stem.with_extension("svg")).unwrap();
+        // Text is glyph outlines: no <text> element, no font family, glyphs defined once and used.
+        assert!(svg.contains("<svg") && svg.contains("<use") && svg.contains("<path id=\"g"));
+        assert!(!svg.contains("<text") && !svg.contains("font-family"));
+    }
+
+    #[test]
+    fn labelled_series_of_a_panel_get_distinct_colours() {
+        let pts = vec![(0.0, 0.0), (1.0, 1.0)];
+        let chart = Chart {
+            series: vec![
+                Series::new("a", pts.clone(), Style::Line, 3),
+                Series::new("b", pts.clone(), Style::Dashed, 3),
+                Series::new("c", pts.clone(), Style::Line, 13),
+            ],
+            ..Default::default()
+        };
+        let p = prepare(&chart, (0.0, 1.0), (0.0, 1.0));
+        // Two solid lines never share a colour; a solid line and a dashed one may.
+        assert!(p[0].color != p[2].color);
+        assert!(p[0].color == p[1].color);
+        // "a" lies under the identical solid "c": it is drawn wider.
+        assert!(p[0].width > p[2].width);
+    }
+
+    #[test]
+    fn decimation_keeps_the_envelope() {
+        let pts: Vec<(f64, f64)> = (0..100_000).map(|i| (i as f64 * 1e-3, (i as f64 * 0.7).sin())).collect();
+        let d = decimate(&pts, (0.0, 100.0), false, 500.0);
+        assert!(d.len() <= 4 * 501, "{}", d.len());
+        let max = d.iter().map(|p| p.1).fold(f64::MIN, f64::max);
+        let min = d.iter().map(|p| p.1).fold(f64::MAX, f64::min);
+        let true_max = pts.iter().map(|p| p.1).fold(f64::MIN, f64::max);
+        assert_eq!(max, true_max);
+        assert!(min < -0.9999);
+    }
+}
