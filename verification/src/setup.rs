@@ -11,6 +11,9 @@ use ohl::wire::aero::{Aerodynamic, UniformNormal};
 use ohl::wire::tension::LawKind;
 use ohl::wire::{Conductor, Wire};
 
+/// The wire of sections 4.1-4.2 in words, for figure headings.
+pub const PAPER_WIRE: &str = "the paper's wire: 160 m span, 1.0 kg/m, EA = 792 kN, d = 15.53 mm";
+
 /// axial stiffness `EA` [N] (section 4.1: "E = 80734 g")
 pub const EA_N: f64 = 80734.0 * 9.81;
 /// linear density `rho0` [kg/m] (wire plus equal ice, section 4.1)

@@ -183,8 +183,10 @@ pub fn render_titled(
     }
     let cols = cols.max(1);
     let rows = panels.len().div_ceil(cols);
-    let heading = if title.is_empty() { 0 } else { (2.2 * size::HEADING).ceil() as u32 };
-    let size = (panel_size.0 * cols as u32, panel_size.1 * rows as u32 + heading);
+    let width = panel_size.0 * cols as u32;
+    let heading = heading_lines(title, f64::from(width));
+    let heading_h = heading_height(&heading);
+    let size = (width, panel_size.1 * rows as u32 + heading_h);
     let png = stem.with_extension("png");
     let svg = stem.with_extension("svg");
     let err = |p: &Path| {
@@ -197,14 +199,14 @@ pub fn render_titled(
         let mut buffer = vec![0u8; big.0 as usize * big.1 as usize * 3];
         {
             let root = raster::GlyphBitmap::new(&mut buffer, big).into_drawing_area();
-            draw_all(&root, panels, rows, cols, title, f64::from(k)).map_err(err(&png))?;
+            draw_all(&root, panels, rows, cols, &heading, f64::from(k)).map_err(err(&png))?;
             root.present().map_err(|e| e.to_string()).map_err(err(&png))?;
         }
         raster::downsample_to_png(&buffer, size, &png).map_err(err(&png))?;
     }
     {
         let root = svg::GlyphSvg::new(&svg, size).into_drawing_area();
-        draw_all(&root, panels, rows, cols, title, 1.0).map_err(err(&svg))?;
+        draw_all(&root, panels, rows, cols, &heading, 1.0).map_err(err(&svg))?;
         root.present().map_err(|e| e.to_string()).map_err(err(&svg))?;
     }
     Ok(())
@@ -364,25 +366,58 @@ fn legend_place(chart: &Chart, panel_w: f64, s: f64) -> LegendPlace {
     LegendPlace::Below(((rows as f64 * 1.5 * size::LEGEND + size::MARGIN) * s).ceil() as u32, per_row)
 }
 
+/// A figure heading: its lines and font size [px at scale 1].
+struct Heading {
+    lines: Vec<String>,
+    font: f64,
+}
+
+/// Lays out a heading in `width` pixels: one line if it fits, else broken at its " | " separators, and
+/// the font reduced (down to 70 %) until the longest line fits.
+fn heading_lines(title: &str, width: f64) -> Heading {
+    if title.is_empty() {
+        return Heading { lines: Vec::new(), font: size::HEADING };
+    }
+    let room = width - 2.0 * size::MARGIN;
+    let fits = |l: &str, f: f64| f64::from(text::width(l, f as f32)) <= room;
+    let lines: Vec<String> = if fits(title, size::HEADING) {
+        vec![title.to_string()]
+    } else {
+        title.split(" | ").map(str::to_string).collect()
+    };
+    let mut font = size::HEADING;
+    while font > 0.7 * size::HEADING && !lines.iter().all(|l| fits(l, font)) {
+        font -= 0.5;
+    }
+    Heading { lines, font }
+}
+
+/// Height of a heading [px at scale 1].
+fn heading_height(h: &Heading) -> u32 {
+    if h.lines.is_empty() { 0 } else { (1.2 * h.font + 1.4 * h.font * h.lines.len() as f64).ceil() as u32 }
+}
+
 fn draw_all<DB: DrawingBackend>(
     root: &DrawingArea<DB, Shift>,
     panels: &[Chart],
     rows: usize,
     cols: usize,
-    title: &str,
+    heading: &Heading,
     s: f64,
 ) -> Result<(), String> {
     root.fill(&WHITE).map_err(|e| e.to_string())?;
-    let body = if title.is_empty() {
+    let body = if heading.lines.is_empty() {
         root.clone()
     } else {
         let (w, _) = root.dim_in_pixel();
-        let (head, body) = root.split_vertically((2.2 * size::HEADING * s).ceil() as u32);
-        let style = TextStyle::from(("sans-serif", size::HEADING * s).into_font())
+        let (head, body) = root.split_vertically((f64::from(heading_height(heading)) * s).round() as u32);
+        let style = TextStyle::from(("sans-serif", heading.font * s).into_font())
             .color(&BLACK)
             .pos(Pos::new(HPos::Center, VPos::Center));
-        head.draw(&Text::new(title.to_string(), (w as i32 / 2, (1.2 * size::HEADING * s) as i32), style))
-            .map_err(|e| e.to_string())?;
+        for (i, line) in heading.lines.iter().enumerate() {
+            let y = (0.6 * heading.font + (i as f64 + 0.5) * 1.4 * heading.font) * s;
+            head.draw(&Text::new(line.clone(), (w as i32 / 2, y as i32), style.clone())).map_err(|e| e.to_string())?;
+        }
         body
     };
     let areas = body.split_evenly((rows, cols));

@@ -20,7 +20,7 @@ use crate::setup::{G_M_PER_S2, SPAN_M, aerodynamic_wind, loads, params, straight
 use ohl::scheme::{Explicit, WindLoad};
 use ohl::wire::aero::{Aerodynamic, SegmentLoad};
 use ohl::wire::tension::{LawKind, TensionLaw, TensionOnly};
-use ohl_app::plot::{Chart, Series, Style, render};
+use ohl_app::plot::{Chart, Series, Style, render_titled};
 use std::path::Path;
 
 const TERMS: [&str; 6] =
@@ -210,7 +210,17 @@ pub fn run(budget: Budget, dir: &Path) -> Result<StudyReport, String> {
         }
     }
     let _ = SPAN_M;
-    render(&charts, 3, (520, 400), &dir.join("energy_budget")).map_err(|e| e.to_string())?;
+    render_titled(
+        &charts,
+        3,
+        (520, 400),
+        &format!(
+            "energy: discrete energy balance, term by term, of the weight release and the wind | {}",
+            crate::setup::PAPER_WIRE
+        ),
+        &dir.join("energy_budget"),
+    )
+    .map_err(|e| e.to_string())?;
     rep.figures.push("energy_budget.png".into());
     rep.tables.push(table);
     rep.discussion = "The balance closes to rounding: every joule of kinetic energy is accounted for by the work of \

@@ -43,7 +43,7 @@ use ohl::scheme::Explicit;
 use ohl::statics::jacobian::replica_gap;
 use ohl::statics::{StaticError, StaticOptions, rounding_floor_n, solve as solve_static};
 use ohl::wire::tension::LawKind;
-use ohl_app::plot::{Chart, Series, Style, render};
+use ohl_app::plot::{Chart, Series, Style, render_titled};
 use rayon::prelude::*;
 use std::path::Path;
 
@@ -352,7 +352,7 @@ pub fn run(budget: Budget, dir: &Path) -> Result<StudyReport, String> {
             ));
         }
     }
-    render(
+    render_titled(
         &[
             Chart {
                 title: format!("Newton residual, N = {n_static}"),
@@ -375,6 +375,7 @@ pub fn run(budget: Budget, dir: &Path) -> Result<StudyReport, String> {
         ],
         2,
         (620, 440),
+        &format!("implicit: Newton statics and the implicit reference on faer | {}", crate::setup::PAPER_WIRE),
         &dir.join("newton_convergence"),
     )
     .map_err(|e| e.to_string())?;
@@ -511,7 +512,14 @@ pub fn run(budget: Budget, dir: &Path) -> Result<StudyReport, String> {
             ..Default::default()
         });
     }
-    render(&charts, 2, (620, 440), &dir.join("implicit_reference")).map_err(|e| e.to_string())?;
+    render_titled(
+        &charts,
+        2,
+        (620, 440),
+        &format!("implicit: Newton statics and the implicit reference on faer | {}", crate::setup::PAPER_WIRE),
+        &dir.join("implicit_reference"),
+    )
+    .map_err(|e| e.to_string())?;
     rep.figures.push("implicit_reference.png".into());
     rep.tables.push(t_newton);
     rep.tables.push(t_summary);

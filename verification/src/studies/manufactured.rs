@@ -38,7 +38,7 @@ use crate::setup::{
 use ohl::scheme::Explicit;
 use ohl::wire::tension::LawKind;
 use ohl::wire::{Conductor, Wire};
-use ohl_app::plot::{Chart, Series, Style, render};
+use ohl_app::plot::{Chart, Series, Style, render_titled};
 use rayon::prelude::*;
 use std::f64::consts::{FRAC_PI_2, PI};
 use std::path::Path;
@@ -291,7 +291,7 @@ pub fn run(budget: Budget, dir: &Path) -> Result<StudyReport, String> {
         Style::Dashed,
         6,
     ));
-    render(
+    render_titled(
         &[Chart {
             title: format!("Manufactured solution, fixed Courant number {COURANT}"),
             x_label: "segments N [-] (dt proportional to 1/N)".into(),
@@ -303,6 +303,7 @@ pub fn run(budget: Budget, dir: &Path) -> Result<StudyReport, String> {
         }],
         1,
         (760, 520),
+        &format!("mms: manufactured 3D solution of the dynamic equations | {}", crate::setup::PAPER_WIRE),
         &dir.join("mms_convergence"),
     )
     .map_err(|e| e.to_string())?;

@@ -108,7 +108,7 @@ use ohl::wire::insulator::clamp_stable_step_s;
 use ohl::wire::section::{self, CrossarmSpec, Layout, Section, Span, Stringing, Support};
 use ohl::wire::tension::LawKind;
 use ohl::wire::{Conductor, Wire};
-use ohl_app::plot::{Chart, Series, Style, render};
+use ohl_app::plot::{Chart, Series, Style, render_titled};
 use rayon::prelude::*;
 use std::path::Path;
 use std::time::Instant;
@@ -1156,7 +1156,14 @@ pub fn run(budget: Budget, dir: &Path) -> Result<StudyReport, String> {
     }
 
     // ---- figures ----
-    render(&panels, 2, (640, 460), &dir.join("section_statics_convergence")).map_err(|e| e.to_string())?;
+    render_titled(
+        &panels,
+        2,
+        (640, 460),
+        "section_statics: exact statics of ACSR Drake sections on suspension strings (EA = 2.9e7 N, 1.628 kg/m)",
+        &dir.join("section_statics_convergence"),
+    )
+    .map_err(|e| e.to_string())?;
     rep.figures.push("section_statics_convergence.png".into());
     let mut shape = vec![];
     for case in [Case::Inclined, Case::Broken] {
@@ -1176,7 +1183,14 @@ pub fn run(budget: Budget, dir: &Path) -> Result<StudyReport, String> {
     let c = sol.supports[1].clamp;
     let window = ([c[0] - 25.0, c[0] + 10.0], [c[1] - 22.0, PIVOT_Z + 2.0]);
     shape.push(shape_chart(Case::Broken, s, layout, sec, sol, Some(window)));
-    render(&shape, 1, (1100, 460), &dir.join("section_statics_shape")).map_err(|e| e.to_string())?;
+    render_titled(
+        &shape,
+        1,
+        (1100, 460),
+        "section_statics: exact statics of ACSR Drake sections on suspension strings (EA = 2.9e7 N, 1.628 kg/m)",
+        &dir.join("section_statics_shape"),
+    )
+    .map_err(|e| e.to_string())?;
     rep.figures.push("section_statics_shape.png".into());
 
     rep.tables.push(table);

@@ -67,7 +67,7 @@ use crate::setup::{
 use ohl::scheme::{Explicit, courant};
 use ohl::statics::{StaticOptions, solve as solve_static};
 use ohl::wire::tension::LawKind;
-use ohl_app::plot::{Chart, Series, Style, render};
+use ohl_app::plot::{Chart, Series, Style, render_titled};
 use rayon::prelude::*;
 use std::collections::VecDeque;
 use std::path::Path;
@@ -461,7 +461,7 @@ pub fn run(budget: Budget, dir: &Path) -> Result<StudyReport, String> {
         &["configuration", "eta [N s]", "b", "theory C_max", "measured C_max", "rel. difference"],
     );
     let limits: Vec<f64> = configs.par_iter().map(|&(_, eta, b)| measured_limit(eta, b)).collect();
-    let mut lim_series = vec![];
+    let (mut theory_pts, mut measured_pts) = (vec![], vec![]);
     for (k, (&(name, eta, b), &m)) in configs.iter().zip(&limits).enumerate() {
         let z = courant::friction_number(EA_N, eta, wave_speed(), ds);
         let theory = if b > 0.0 { ((1.0 - 2.0 * b) / (1.0 - 4.0 * b)).sqrt() } else { courant::stable_courant(z) };
@@ -473,11 +473,15 @@ pub fn run(budget: Budget, dir: &Path) -> Result<StudyReport, String> {
             format!("{m:.4}"),
             rel.abs() < 0.05,
         );
-        lim_series.push(Series::new(format!("{name} theory"), vec![(k as f64, theory)], Style::Markers, 0));
-        lim_series.push(Series::new(format!("{name} measured"), vec![(k as f64 + 0.1, m)], Style::Markers, 1));
+        theory_pts.push((k as f64, theory));
+        measured_pts.push((k as f64 + 0.1, m));
     }
+    let lim_series = vec![
+        Series::new("theory", theory_pts, Style::Markers, 0),
+        Series::new("measured", measured_pts, Style::Markers, 1),
+    ];
     charts.push(Chart {
-        title: "Stability limit: theory (blue) vs measured (red)".into(),
+        title: "Stability limit: theory vs measured".into(),
         x_label: "configuration (0: none, 1: eta z = 0.5, 2: b = 0.05)".into(),
         y_label: "largest stable Courant number [-]".into(),
         series: lim_series,
@@ -495,7 +499,17 @@ pub fn run(budget: Budget, dir: &Path) -> Result<StudyReport, String> {
         over.to_string(),
         over,
     );
-    render(&charts, 2, (620, 440), &dir.join("sensitivity")).map_err(|e| e.to_string())?;
+    render_titled(
+        &charts,
+        2,
+        (620, 440),
+        &format!(
+            "sensitivity: mu, b and the Courant number on the catenary and the wind arc, N = 50 | {}",
+            crate::setup::PAPER_WIRE
+        ),
+        &dir.join("sensitivity"),
+    )
+    .map_err(|e| e.to_string())?;
     rep.figures.push("sensitivity.png".into());
     rep.tables.push(table);
     rep.tables.push(lt);

@@ -17,7 +17,7 @@ use crate::convergence::{gci, ls_order, three_grid_order};
 use crate::report::{Budget, StudyReport, Table, sci};
 use crate::setup::{Case, SPAN_M, explicit_for, max_distance, positions, settle};
 use ohl::statics::{StaticOptions, solve as solve_static};
-use ohl_app::plot::{Chart, Series, Style, render};
+use ohl_app::plot::{Chart, Series, Style, render_titled};
 use rayon::prelude::*;
 use std::path::Path;
 
@@ -234,7 +234,17 @@ pub fn run(budget: Budget, dir: &Path) -> Result<StudyReport, String> {
         log_y: true,
         ..Default::default()
     });
-    render(&charts, 2, (640, 460), &dir.join("static_convergence")).map_err(|e| e.to_string())?;
+    render_titled(
+        &charts,
+        2,
+        (640, 460),
+        &format!(
+            "static: grid convergence of the settled explicit scheme to the exact statics | {}",
+            crate::setup::PAPER_WIRE
+        ),
+        &dir.join("static_convergence"),
+    )
+    .map_err(|e| e.to_string())?;
     rep.figures.push("static_convergence.png".into());
     rep.tables.push(table);
     rep.tables.push(gtable);

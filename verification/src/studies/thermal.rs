@@ -97,7 +97,7 @@ use ohl::thermal::radiation::{STEFAN_BOLTZMANN_W_PER_M2_K4, radiation_w_per_m};
 use ohl::thermal::steady::{self, SteadyError};
 use ohl::thermal::transient::{CurrentSchedule, Sample, Transient, time_to_reach};
 use ohl::thermal::{HeatBalance, HeatTerms, Model, Standard, ThermalConductor, Weather, catalog, joule};
-use ohl_app::plot::{Chart, Series, Style, render};
+use ohl_app::plot::{Chart, Series, Style, render_titled};
 use std::path::Path;
 
 /// Offset between the kelvin and degree Celsius scales \[K\].
@@ -843,7 +843,14 @@ fn transient(rep: &mut StudyReport, dir: &Path, drake: &ThermalConductor) -> Res
         log_y: true,
         ..Default::default()
     };
-    render(&[panel_t, panel_e], 2, (640, 460), &dir.join("thermal_transient")).map_err(|e| e.to_string())?;
+    render_titled(
+        &[panel_t, panel_e],
+        2,
+        (640, 460),
+        "thermal: IEEE 738 / CIGRE TB 601 heat balance of ACSR Drake (catalogue data)",
+        &dir.join("thermal_transient"),
+    )
+    .map_err(|e| e.to_string())?;
     rep.figures.push("thermal_transient.png".into());
     Ok((
         table,
@@ -1136,7 +1143,14 @@ fn deicing(
             ..Default::default()
         },
     ];
-    render(&panels, 2, (640, 460), &dir.join("thermal_deicing")).map_err(|e| e.to_string())?;
+    render_titled(
+        &panels,
+        2,
+        (640, 460),
+        "thermal: IEEE 738 / CIGRE TB 601 heat balance of ACSR Drake (catalogue data)",
+        &dir.join("thermal_deicing"),
+    )
+    .map_err(|e| e.to_string())?;
     rep.figures.push("thermal_deicing.png".into());
 
     Ok((
