@@ -5,7 +5,8 @@
 //! - [`plot`]: PNG and SVG charts (plotters);
 //! - [`cases`]: the line-section cases of `cases/` (runs, load figures, peak-to-residual tables);
 //! - [`bench`]: the kernel benchmark (measurements, machine description, CSV tables, throughput plot);
-//! - [`progress`]: the terminal progress bar of `ohl run`, an observer of the library's run loop.
+//! - [`progress`]: the terminal progress bar of `ohl run`, an observer of the library's run loop;
+//! - [`run_plot`]: the figures of a run's output folder (`ohl plot RUN_DIR`).
 //!
 //! The binary `ohl` (`src/main.rs`, `src/cli/`) is the command line over these.
 
@@ -14,6 +15,7 @@ pub mod cases;
 pub mod paper;
 pub mod plot;
 pub mod progress;
+pub mod run_plot;
 
 /// The repository the default paths (`paper_cases/`, `cases/`, `figures/`) are relative to: the current
 /// directory if it holds `paper_cases/`, else the workspace the binary was built from (so that `ohl paper

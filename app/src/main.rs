@@ -7,7 +7,8 @@
 //! - `ohl bench` measures the explicit kernel's throughput;
 //! - `ohl thermal CASE.toml` evaluates a conductor's heat balance (steady temperature, ampacity, transient,
 //!   de-icing);
-//! - `ohl rating SCENARIO.toml` rates a span or section by clearance or sag (steady, and after a step).
+//! - `ohl rating SCENARIO.toml` rates a span or section by clearance or sag (steady, and after a step);
+//! - `ohl plot RUN_DIR` draws a run's time series, support forces and shapes to PNG and SVG.
 //!
 //! Exit codes: 0 success; 1 the run went unstable (or an output file could not be written), and what
 //! was written so far stays readable; 2 the scenario is invalid (the message names the file, the field,
@@ -42,6 +43,8 @@ enum Command {
     /// Thermal rating of a span or section by ground clearance or sag, steady and after a current step;
     /// writes rating.json.
     Rating(cli::rating::RatingArgs),
+    /// Draw a run's time series, support forces and shapes (RUN_DIR/plots/*.png and *.svg).
+    Plot(cli::plot::PlotArgs),
 }
 
 fn main() -> ExitCode {
@@ -52,5 +55,6 @@ fn main() -> ExitCode {
         Command::Bench(a) => cli::bench::main(a),
         Command::Thermal(a) => cli::thermal::main(a),
         Command::Rating(a) => cli::rating::main(a),
+        Command::Plot(a) => cli::plot::main(a),
     }
 }

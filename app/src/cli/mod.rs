@@ -3,6 +3,7 @@
 pub mod bench;
 pub mod cases;
 pub mod paper;
+pub mod plot;
 pub mod rating;
 pub mod run;
 pub mod thermal;

@@ -1,0 +1,762 @@
+//! The figures of one run's output folder (`ohl plot RUN_DIR`): what `ohl run SCENARIO.toml --out DIR`
+//! wrote, read back and drawn with [`crate::plot`] to PNG and SVG.
+//!
+//! - `timeseries`: displacement of the mid-span point (a section: of each span's mid-span point) and of
+//!   every named probe from its chord point, vertical always and across or along the line when it moves;
+//!   the largest segment tension (a section: per span); the least ground clearance per span (with a
+//!   ground); the kinetic energy and the elastic, potential and total energy; the conductor temperature
+//!   (with a `[thermal]` table);
+//! - `reactions`: each support's force components (the force the wire applies to the support: vertical
+//!   `F3`, along the line `F2`, across it `F1`), and the swing of each suspension string;
+//! - `shapes`: the wire at the snapshot times (at most [`MAX_SHAPES`], evenly chosen), side view `x3`
+//!   against `x2`, and plan view `x1` against `x2` when the wire moves across the line. A segment stretched
+//!   by more than [`GAP_STRAIN`] (a broken one: no conductor stretches that far) is drawn as a gap.
+//!
+//! `timeseries.csv` is required; `snapshots.csv` and `summary.json` are optional (a run killed before its
+//! end has no `summary.json`): without the summary the scenario is named after the folder. Titles name
+//! the scenario (`summary.json`'s `name`) and the conductor when the summary records one (`thermal`).
+//! Series of more than `2 BUCKETS` points are thinned to the smallest and largest value in each of
+//! [`BUCKETS`] equal time intervals ([`decimate`]): peaks survive, the SVG stays small, and a window
+//! (`--from`, `--to`) shows the detail.
+
+use std::collections::HashMap;
+use std::path::{Path, PathBuf};
+
+use crate::plot::{Chart, PlotError, Series, Style, render};
+
+/// Most snapshots drawn in one shape panel (the palette has 8 colours).
+pub const MAX_SHAPES: usize = 8;
+/// Time intervals of a thinned series ([`decimate`]): two points each, about 2.4 px apart on a panel.
+pub const BUCKETS: usize = 120;
+/// A segment whose chord exceeds its unstretched length by this fraction is drawn as a gap (broken).
+pub const GAP_STRAIN: f64 = 0.1;
+/// A displacement component whose range over the window stays below this [m] gets no panel.
+const STILL_M: f64 = 1.0e-6;
+
+/// Panel size [px] of the time-series and reaction figures (two columns).
+const PANEL: (u32, u32) = (720, 420);
+/// Panel size [px] of the shape figure (one column).
+const SHAPE_PANEL: (u32, u32) = (1400, 460);
+
+/// What `ohl plot` draws and where.
+#[derive(Clone, Debug, Default)]
+pub struct PlotOptions {
+    /// folder of the figures (default `RUN_DIR/plots`)
+    pub out: Option<PathBuf>,
+    /// first time drawn [s] (default: the run's start)
+    pub from_s: Option<f64>,
+    /// last time drawn [s] (default: the run's end)
+    pub to_s: Option<f64>,
+}
+
+/// What was drawn.
+#[derive(Clone, Debug, Default)]
+pub struct PlotReport {
+    /// the files written (`.png` and `.svg` of each figure)
+    pub files: Vec<PathBuf>,
+    /// remarks for the user (a figure left out, and why; a run that went unstable)
+    pub notes: Vec<String>,
+}
+
+/// `ohl plot` failed.
+#[derive(Debug, thiserror::Error)]
+pub enum RunPlotError {
+    /// RUN_DIR does not exist or is not a folder.
+    #[error("{}: not a folder (give the folder `ohl run SCENARIO.toml --out DIR` wrote)", .0.display())]
+    NoFolder(PathBuf),
+    /// RUN_DIR lacks `timeseries.csv`.
+    #[error(
+        "{dir} is not a run folder: {missing} is missing (`ohl run SCENARIO.toml --out DIR` writes timeseries.csv, snapshots.csv and summary.json)",
+        dir = .dir.display(),
+        missing = .missing.display()
+    )]
+    NotARun {
+        /// the folder given
+        dir: PathBuf,
+        /// the file it lacks
+        missing: PathBuf,
+    },
+    /// A file of the run could not be read or is not what `ohl run` writes.
+    #[error("{path}: {message}", path = .path.display())]
+    BadFile {
+        /// the file
+        path: PathBuf,
+        /// what is wrong
+        message: String,
+    },
+    /// `--from` / `--to` select nothing or are not a window.
+    #[error("{0}")]
+    Window(String),
+    /// A figure could not be drawn or written.
+    #[error(transparent)]
+    Plot(#[from] PlotError),
+}
+
+impl RunPlotError {
+    /// The exit code of `ohl plot`: 1 when a figure could not be written, 2 for the input (the folder,
+    /// its files, the window).
+    pub fn exit_code(&self) -> u8 {
+        match self {
+            RunPlotError::Plot(_) => 1,
+            _ => 2,
+        }
+    }
+}
+
+/// A CSV file's columns by header position.
+struct Table {
+    path: PathBuf,
+    names: Vec<String>,
+    index: HashMap<String, usize>,
+    cols: Vec<Vec<f64>>,
+}
+
+impl Table {
+    fn read(path: &Path) -> Result<Table, RunPlotError> {
+        let bad = |message: String| RunPlotError::BadFile { path: path.to_path_buf(), message };
+        let mut r = csv::Reader::from_path(path).map_err(|e| bad(e.to_string()))?;
+        let names: Vec<String> = r.headers().map_err(|e| bad(e.to_string()))?.iter().map(String::from).collect();
+        let mut cols = vec![Vec::new(); names.len()];
+        for rec in r.records() {
+            let rec = rec.map_err(|e| bad(e.to_string()))?;
+            let line = rec.position().map_or(0, |p| p.line());
+            for (k, cell) in rec.iter().enumerate() {
+                let v: f64 = cell.trim().parse().map_err(|_| {
+                    let name = names.get(k).map_or("?", String::as_str);
+                    bad(format!("line {line}, column `{name}`: `{cell}` is not a number"))
+                })?;
+                if let Some(c) = cols.get_mut(k) {
+                    c.push(v);
+                }
+            }
+        }
+        let index = names.iter().enumerate().map(|(k, n)| (n.clone(), k)).collect();
+        Ok(Table { path: path.to_path_buf(), names, index, cols })
+    }
+
+    fn col(&self, name: &str) -> Option<&[f64]> {
+        self.index.get(name).map(|&k| self.cols[k].as_slice())
+    }
+
+    fn require(&self, name: &str) -> Result<&[f64], RunPlotError> {
+        self.col(name).ok_or_else(|| RunPlotError::BadFile {
+            path: self.path.clone(),
+            message: format!("no column `{name}`: not a file of `ohl run`"),
+        })
+    }
+}
+
+/// One snapshot: the wire's nodes at one time.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Snapshot {
+    /// its time [s]
+    pub t_s: f64,
+    /// Lagrangian coordinate of each node [m]
+    pub s_m: Vec<f64>,
+    /// position of each node [m]
+    pub x_m: Vec<[f64; 3]>,
+}
+
+/// The snapshots of `snapshots.csv`, one per time (a new one starts at node 0 or at a new time).
+fn read_snapshots(path: &Path) -> Result<Vec<Snapshot>, RunPlotError> {
+    let tab = Table::read(path)?;
+    let (t, node, s) = (tab.require("t_s")?, tab.require("node")?, tab.require("s_m")?);
+    let (x1, x2, x3) = (tab.require("x1_m")?, tab.require("x2_m")?, tab.require("x3_m")?);
+    let mut out: Vec<Snapshot> = Vec::new();
+    for i in 0..t.len() {
+        let new = match out.last() {
+            Some(last) => node[i] == 0.0 || last.t_s != t[i],
+            None => true,
+        };
+        if new {
+            out.push(Snapshot { t_s: t[i], ..Default::default() });
+        }
+        if let Some(last) = out.last_mut() {
+            last.s_m.push(s[i]);
+            last.x_m.push([x1[i], x2[i], x3[i]]);
+        }
+    }
+    Ok(out)
+}
+
+/// A support as `summary.json` records it.
+#[derive(Clone, Debug)]
+struct Support {
+    position_m: [f64; 3],
+}
+
+/// A run folder read back.
+struct Run {
+    heading: String,
+    ts: Table,
+    snapshots: Vec<Snapshot>,
+    supports: Vec<Support>,
+    /// `peaks_from_s` of the summary: the first event's time or the scenario's choice
+    events_from_s: Option<f64>,
+    notes: Vec<String>,
+}
+
+impl Run {
+    fn read(dir: &Path) -> Result<Run, RunPlotError> {
+        if !dir.is_dir() {
+            return Err(RunPlotError::NoFolder(dir.to_path_buf()));
+        }
+        let ts_path = dir.join("timeseries.csv");
+        if !ts_path.is_file() {
+            return Err(RunPlotError::NotARun { dir: dir.to_path_buf(), missing: ts_path });
+        }
+        let ts = Table::read(&ts_path)?;
+        ts.require("t_s")?;
+        let mut notes = Vec::new();
+        let snap_path = dir.join("snapshots.csv");
+        let snapshots = if snap_path.is_file() { read_snapshots(&snap_path)? } else { Vec::new() };
+        let sum_path = dir.join("summary.json");
+        let folder = dir
+            .canonicalize()
+            .ok()
+            .and_then(|p| p.file_name().map(|n| n.to_string_lossy().into_owned()))
+            .unwrap_or_else(|| dir.display().to_string());
+        let (mut heading, mut supports, mut events_from_s) = (folder, Vec::new(), None);
+        if sum_path.is_file() {
+            let text = std::fs::read_to_string(&sum_path)
+                .map_err(|e| RunPlotError::BadFile { path: sum_path.clone(), message: e.to_string() })?;
+            let v: serde_json::Value = serde_json::from_str(&text)
+                .map_err(|e| RunPlotError::BadFile { path: sum_path.clone(), message: e.to_string() })?;
+            if let Some(name) = v["name"].as_str().filter(|n| !n.is_empty()) {
+                heading = name.to_string();
+            }
+            if let Some(c) = v["thermal"]["conductor"].as_str() {
+                heading = format!("{heading} ({c})");
+            }
+            supports = v["supports"]
+                .as_array()
+                .map(|a| {
+                    a.iter()
+                        .filter_map(|s| {
+                            let p = s["position_m"].as_array()?;
+                            let x = |k: usize| p.get(k).and_then(|x| x.as_f64());
+                            Some(Support { position_m: [x(0)?, x(1)?, x(2)?] })
+                        })
+                        .collect()
+                })
+                .unwrap_or_default();
+            events_from_s = v["peaks_from_s"].as_f64();
+            if let Some(i) = v.get("instability").filter(|i| !i.is_null()) {
+                let reason =
+                    i["reason"].as_str().map_or_else(|| format!("unstable at t = {} s", i["time_s"]), String::from);
+                notes.push(format!("the run stopped: {reason}; the figures end there"));
+            }
+        } else {
+            notes.push(format!(
+                "{} is missing (a run stopped early?): titles use the folder's name",
+                sum_path.display()
+            ));
+        }
+        Ok(Run { heading, ts, snapshots, supports, events_from_s, notes })
+    }
+
+    fn title(&self, what: &str) -> String {
+        format!("{}: {what}", self.heading)
+    }
+
+    /// Number of supports with force columns.
+    fn support_count(&self) -> usize {
+        (0..).take_while(|k| self.ts.col(&format!("support{k}_f1_n")).is_some()).count()
+    }
+
+    /// Number of spans with columns of their own (0 for one span).
+    fn span_count(&self) -> usize {
+        (0..).take_while(|k| self.ts.col(&format!("span{k}_max_tension_n")).is_some()).count()
+    }
+
+    /// The probes after the fixed columns: names `P` of the triples `P_dx1_m, P_dx2_m, P_dx3_m`.
+    fn probe_names(&self) -> Vec<String> {
+        let n = &self.ts.names;
+        let mut out = Vec::new();
+        let mut k = 10.min(n.len());
+        while k + 2 < n.len() {
+            let Some(p) = n[k].strip_suffix("_dx1_m") else { break };
+            if n[k + 1] != format!("{p}_dx2_m") || n[k + 2] != format!("{p}_dx3_m") {
+                break;
+            }
+            out.push(p.to_string());
+            k += 3;
+        }
+        out
+    }
+
+    fn support_label(&self, k: usize) -> String {
+        match self.supports.get(k) {
+            Some(s) if self.supports.len() == self.support_count() => {
+                format!("support {k} (x2 = {} m)", short(s.position_m[1]))
+            }
+            _ => format!("support {k}"),
+        }
+    }
+}
+
+/// Style and palette index of the `k`-th series of a panel: solid for the first 8, dashed for the next.
+fn look(k: usize) -> (Style, usize) {
+    (if (k / 8).is_multiple_of(2) { Style::Line } else { Style::Dashed }, k)
+}
+
+/// A number with about four significant digits, no trailing zeros.
+fn short(v: f64) -> String {
+    if v == 0.0 || !v.is_finite() {
+        return format!("{v}");
+    }
+    let digits = (3 - v.abs().log10().floor() as i32).clamp(0, 6) as usize;
+    let s = format!("{v:.digits$}");
+    if s.contains('.') { s.trim_end_matches('0').trim_end_matches('.').to_string() } else { s }
+}
+
+/// Thin a time series `points` (in time order) for drawing. Past `2 buckets` points, the time window is
+/// cut into `buckets` equal intervals of width `w`: an interval where the curve rises or falls steadily
+/// (its smallest and largest values are its first and last, and the samples either side carry on the
+/// same way) keeps its middle sample; any other keeps its smallest and largest value, in time order,
+/// drawn at a quarter and three quarters of the interval. The first and last samples stay. So every peak
+/// and trough survives (in an interval of its own, which draws its extremes), and consecutive points stay
+/// a few pixels apart: plotters' wide lines draw spikes at sharp turns between points closer than that.
+pub fn decimate(points: Vec<(f64, f64)>, buckets: usize) -> Vec<(f64, f64)> {
+    let n = points.len();
+    if n <= 2 * buckets || buckets == 0 {
+        return points;
+    }
+    let (t0, t1) = (points[0].0, points[n - 1].0);
+    // A window of no length (or not a number) has nothing to thin.
+    let rising = t1 > t0;
+    if !rising {
+        return points;
+    }
+    let w = (t1 - t0) / buckets as f64;
+    // Per interval: (first, last, index of min, index of max), finite values only.
+    let mut ext: Vec<Option<(usize, usize, usize, usize)>> = vec![None; buckets];
+    for (i, &(t, y)) in points.iter().enumerate() {
+        if !y.is_finite() || !t.is_finite() {
+            continue;
+        }
+        let b = (((t - t0) / w) as usize).min(buckets - 1);
+        ext[b] = Some(match ext[b] {
+            None => (i, i, i, i),
+            Some((first, _, lo, hi)) => {
+                (first, i, if y < points[lo].1 { i } else { lo }, if y > points[hi].1 { i } else { hi })
+            }
+        });
+    }
+    let mut out = Vec::with_capacity(2 * buckets + 2);
+    out.push(points[0]);
+    for (b, e) in ext.iter().enumerate() {
+        let Some((first, last, lo, hi)) = *e else { continue };
+        // Steady: monotone, and the samples either side carry on the same way (neither end is a local
+        // peak or trough of the series, which must stay drawn).
+        let (y0, y1) = (points[first].1, points[last].1);
+        let before = first.checked_sub(1).map(|i| points[i].1);
+        let after = points.get(last + 1).map(|p| p.1);
+        let steady = if lo == first && hi == last {
+            before.is_none_or(|p| p <= y0) && after.is_none_or(|p| p >= y1)
+        } else if lo == last && hi == first {
+            before.is_none_or(|p| p >= y0) && after.is_none_or(|p| p <= y1)
+        } else {
+            false
+        };
+        if steady {
+            out.push(points[(first + last) / 2]);
+        } else {
+            let left = t0 + (b as f64 + 0.25) * w;
+            out.push((left, points[lo.min(hi)].1));
+            out.push((left + 0.5 * w, points[lo.max(hi)].1));
+        }
+    }
+    out.push(points[n - 1]);
+    out.dedup_by(|a, b| a.0 == b.0);
+    out
+}
+
+/// Largest finite magnitude over several columns (0 if none).
+fn max_abs<'a>(cols: impl IntoIterator<Item = &'a [f64]>, rows: &[usize]) -> f64 {
+    cols.into_iter()
+        .flat_map(|c| rows.iter().map(move |&i| c[i]))
+        .filter(|v| v.is_finite())
+        .fold(0.0, |m, v| m.max(v.abs()))
+}
+
+/// Force unit for values up to `m` [N]: (name, factor from N).
+fn force_unit(m: f64) -> (&'static str, f64) {
+    if m >= 1.0e3 { ("kN", 1.0e-3) } else { ("N", 1.0) }
+}
+
+/// Energy unit for values up to `m` [J].
+fn energy_unit(m: f64) -> (&'static str, f64) {
+    if m >= 1.0e7 {
+        ("MJ", 1.0e-6)
+    } else if m >= 1.0e4 {
+        ("kJ", 1.0e-3)
+    } else {
+        ("J", 1.0)
+    }
+}
+
+/// Break a snapshot's polyline `(x2, y)` where a segment is stretched by more than [`GAP_STRAIN`].
+pub fn pieces(snap: &Snapshot, y: usize) -> Vec<Vec<(f64, f64)>> {
+    let mut out: Vec<Vec<(f64, f64)>> = vec![Vec::new()];
+    for i in 0..snap.x_m.len() {
+        if i > 0 {
+            let (a, b) = (snap.x_m[i - 1], snap.x_m[i]);
+            let chord = ((b[0] - a[0]).powi(2) + (b[1] - a[1]).powi(2) + (b[2] - a[2]).powi(2)).sqrt();
+            let ds = snap.s_m[i] - snap.s_m[i - 1];
+            if chord > (1.0 + GAP_STRAIN) * ds.abs() + 1.0e-9 {
+                out.push(Vec::new());
+            }
+        }
+        if let Some(p) = out.last_mut() {
+            p.push((snap.x_m[i][1], snap.x_m[i][y]));
+        }
+    }
+    out.retain(|p| !p.is_empty());
+    out
+}
+
+/// Indices of at most `max` of `n` items, evenly spread, first and last included.
+pub fn evenly(n: usize, max: usize) -> Vec<usize> {
+    if n <= max {
+        return (0..n).collect();
+    }
+    let mut v: Vec<usize> =
+        (0..max).map(|k| ((k as f64) * (n - 1) as f64 / (max - 1).max(1) as f64).round() as usize).collect();
+    v.dedup();
+    v
+}
+
+/// Draw the figures of the run in `run_dir`.
+pub fn plot_run(run_dir: &Path, opts: &PlotOptions) -> Result<PlotReport, RunPlotError> {
+    let (from, to) = (opts.from_s.unwrap_or(f64::NEG_INFINITY), opts.to_s.unwrap_or(f64::INFINITY));
+    if from.is_nan() || to.is_nan() || from >= to {
+        return Err(RunPlotError::Window(format!(
+            "--from {} --to {}: the window must have --from < --to",
+            opts.from_s.map_or("(start)".into(), |v| v.to_string()),
+            opts.to_s.map_or("(end)".into(), |v| v.to_string())
+        )));
+    }
+    let run = Run::read(run_dir)?;
+    let t = run.ts.require("t_s")?;
+    let rows: Vec<usize> = (0..t.len()).filter(|&i| t[i] >= from && t[i] <= to).collect();
+    if rows.is_empty() {
+        let span = match (t.first(), t.last()) {
+            (Some(&a), Some(&b)) => format!("its samples run from t = {} s to t = {} s", short(a), short(b)),
+            _ => "it has no samples".into(),
+        };
+        let window = match (opts.from_s, opts.to_s) {
+            (Some(a), Some(b)) => format!("between t = {a} s and t = {b} s"),
+            (Some(a), None) => format!("from t = {a} s on"),
+            (None, Some(b)) => format!("up to t = {b} s"),
+            (None, None) => "at all".into(),
+        };
+        return Err(RunPlotError::Window(format!("{}: no sample {window} ({span})", run.ts.path.display())));
+    }
+    let out = opts.out.clone().unwrap_or_else(|| run_dir.join("plots"));
+    let mut report = PlotReport { notes: run.notes.clone(), ..Default::default() };
+    let mut draw = |charts: Vec<Chart>, cols: usize, size: (u32, u32), name: &str| -> Result<(), RunPlotError> {
+        let stem = out.join(name);
+        render(&charts, cols, size, &stem)?;
+        report.files.push(stem.with_extension("png"));
+        report.files.push(stem.with_extension("svg"));
+        Ok(())
+    };
+    draw(timeseries_charts(&run, &rows)?, 2, PANEL, "timeseries")?;
+    let (reactions, mut notes) = reaction_charts(&run, &rows);
+    if !reactions.is_empty() {
+        draw(reactions, 2, PANEL, "reactions")?;
+    }
+    let snaps: Vec<&Snapshot> = run.snapshots.iter().filter(|s| s.t_s >= from && s.t_s <= to).collect();
+    let shapes = shape_charts(&run, &snaps);
+    if shapes.is_empty() {
+        notes.push(if run.snapshots.is_empty() {
+            "no snapshots (snapshots.csv missing or empty): no shapes figure".into()
+        } else {
+            "no snapshot in the time window: no shapes figure".into()
+        });
+    } else {
+        draw(shapes, 1, SHAPE_PANEL, "shapes")?;
+    }
+    if snaps.len() > MAX_SHAPES {
+        notes.push(format!("{} snapshots: the shapes show {MAX_SHAPES} of them, evenly chosen", snaps.len()));
+    }
+    // A run whose peaks count from late on (the first event, or `output.peaks_from_s`: a de-icing after a
+    // long warm-up): say how to see that part in detail.
+    if let (Some(e), Some(&last), None) = (run.events_from_s, t.last(), opts.from_s)
+        && e > 0.5 * last
+    {
+        notes.push(format!(
+            "the run's peaks count from t = {} s (of {} s): `--from {}` draws that part in detail",
+            short(e),
+            short(last),
+            short(e)
+        ));
+    }
+    report.notes.extend(notes);
+    Ok(report)
+}
+
+/// The time-series panels.
+fn timeseries_charts(run: &Run, rows: &[usize]) -> Result<Vec<Chart>, RunPlotError> {
+    let ts = &run.ts;
+    let t = ts.require("t_s")?;
+    let line = |y: &[f64], scale: f64, label: String, k: usize| {
+        let (style, color) = look(k);
+        let pts = rows.iter().map(|&i| (t[i], y[i] * scale)).collect();
+        Series::new(label, decimate(pts, BUCKETS), style, color)
+    };
+    let spans = run.span_count();
+    // Displacement probes: mid-span (left out in a section, where each span has its own), span
+    // mid-points ("span k"), named probes.
+    let mut probes: Vec<(String, String)> = Vec::new();
+    if spans == 0 {
+        probes.push(("mid".into(), "mid-span".into()));
+    }
+    for p in run.probe_names() {
+        let label = match p.strip_prefix("span").and_then(|r| r.strip_suffix("_mid")) {
+            Some(k) if k.parse::<usize>().is_ok() => format!("span {k} mid-span"),
+            _ => p.clone(),
+        };
+        probes.push((p, label));
+    }
+    let mut charts = Vec::new();
+    let components = [
+        (3, "vertical displacement from the chord", "dx3 [m]"),
+        (1, "displacement across the line (x1)", "dx1 [m]"),
+        (2, "displacement along the line (x2)", "dx2 [m]"),
+    ];
+    for (c, what, label) in components {
+        let cols: Vec<(&[f64], &str)> =
+            probes.iter().filter_map(|(p, l)| Some((ts.col(&format!("{p}_dx{c}_m"))?, l.as_str()))).collect();
+        let (lo, hi) = cols
+            .iter()
+            .flat_map(|(y, _)| rows.iter().map(|&i| y[i]))
+            .filter(|v| v.is_finite())
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| (a.min(v), b.max(v)));
+        let moves = hi - lo > STILL_M;
+        if cols.is_empty() || (c != 3 && !moves) {
+            continue;
+        }
+        charts.push(Chart {
+            title: run.title(what),
+            x_label: "t [s]".into(),
+            y_label: label.into(),
+            series: cols.iter().enumerate().map(|(k, (y, l))| line(y, 1.0, l.to_string(), k)).collect(),
+            ..Default::default()
+        });
+    }
+    // Tension: per span in a section, else the wire's largest.
+    let tension: Vec<(&[f64], String)> = if spans > 0 {
+        (0..spans).filter_map(|k| Some((ts.col(&format!("span{k}_max_tension_n"))?, format!("span {k}")))).collect()
+    } else {
+        ts.col("max_tension_n").map(|y| (y, "largest segment tension".to_string())).into_iter().collect()
+    };
+    if !tension.is_empty() {
+        let (unit, f) = force_unit(max_abs(tension.iter().map(|c| c.0), rows));
+        charts.push(Chart {
+            title: run.title(if spans > 0 { "largest tension in each span" } else { "largest tension" }),
+            x_label: "t [s]".into(),
+            y_label: format!("T_max [{unit}]"),
+            series: tension.iter().enumerate().map(|(k, (y, l))| line(y, f, l.clone(), k)).collect(),
+            ..Default::default()
+        });
+    }
+    let clearance: Vec<(&[f64], String)> =
+        (0..spans).filter_map(|k| Some((ts.col(&format!("span{k}_clearance_m"))?, format!("span {k}")))).collect();
+    if !clearance.is_empty() {
+        charts.push(Chart {
+            title: run.title("least ground clearance"),
+            x_label: "t [s]".into(),
+            y_label: "clearance [m]".into(),
+            series: clearance.iter().enumerate().map(|(k, (y, l))| line(y, 1.0, l.clone(), k)).collect(),
+            ..Default::default()
+        });
+    }
+    if let Some(y) = ts.col("kinetic_j") {
+        let (unit, f) = energy_unit(max_abs([y], rows));
+        charts.push(Chart {
+            title: run.title("kinetic energy"),
+            x_label: "t [s]".into(),
+            y_label: format!("E_kin [{unit}]"),
+            series: vec![line(y, f, "kinetic".into(), 0)],
+            ..Default::default()
+        });
+    }
+    let energies: Vec<(&[f64], &str)> = [("elastic_j", "elastic"), ("potential_j", "potential"), ("total_j", "total")]
+        .iter()
+        .filter_map(|(c, l)| Some((ts.col(c)?, *l)))
+        .collect();
+    if !energies.is_empty() {
+        let (unit, f) = energy_unit(max_abs(energies.iter().map(|c| c.0), rows));
+        charts.push(Chart {
+            title: run.title("elastic, potential and total energy"),
+            x_label: "t [s]".into(),
+            y_label: format!("E [{unit}]"),
+            // Colours 1.. so that no curve takes the kinetic energy's colour.
+            series: energies.iter().enumerate().map(|(k, (y, l))| line(y, f, l.to_string(), k + 1)).collect(),
+            ..Default::default()
+        });
+    }
+    if let Some(y) = ts.col("temperature_k") {
+        let pts = rows.iter().map(|&i| (t[i], y[i] - 273.15)).collect();
+        charts.push(Chart {
+            title: run.title("conductor temperature"),
+            x_label: "t [s]".into(),
+            y_label: "T_c [°C]".into(),
+            series: vec![Series::new("conductor", decimate(pts, BUCKETS), Style::Line, 0)],
+            ..Default::default()
+        });
+    }
+    Ok(charts)
+}
+
+/// The support panels: force components (the force the wire applies to each support) and string swings,
+/// with notes on the panels left out. Empty without support columns.
+fn reaction_charts(run: &Run, rows: &[usize]) -> (Vec<Chart>, Vec<String>) {
+    let ts = &run.ts;
+    let (Some(t), n) = (ts.col("t_s"), run.support_count()) else { return (Vec::new(), Vec::new()) };
+    if n == 0 {
+        return (Vec::new(), Vec::new());
+    }
+    let col = |k: usize, c: &str| ts.col(&format!("support{k}_{c}"));
+    let all = (0..n).flat_map(|k| (1..=3).filter_map(move |c| col(k, &format!("f{c}_n"))));
+    let (unit, f) = force_unit(max_abs(all, rows));
+    let line = |y: &[f64], scale: f64, k: usize| {
+        let (style, color) = look(k);
+        let pts = rows.iter().map(|&i| (t[i], y[i] * scale)).collect();
+        Series::new(run.support_label(k), decimate(pts, BUCKETS), style, color)
+    };
+    let mut charts = Vec::new();
+    let mut notes = Vec::new();
+    let components = [(3, "vertical (+ up)"), (2, "along the line (+ x2)"), (1, "across the line (+ x1)")];
+    for (c, what) in components {
+        let cols: Vec<&[f64]> = (0..n).filter_map(|k| col(k, &format!("f{c}_n"))).collect();
+        // A component that is zero throughout (no load across the line) gets no panel.
+        if c == 1 && max_abs(cols.iter().copied(), rows) == 0.0 {
+            notes.push("the support forces across the line (F1) are zero throughout: no panel".into());
+            continue;
+        }
+        let series: Vec<Series> = (0..n).filter_map(|k| Some(line(col(k, &format!("f{c}_n"))?, f, k))).collect();
+        charts.push(Chart {
+            title: run.title(&format!("force on the supports, {what}")),
+            x_label: "t [s]".into(),
+            y_label: format!("F{c} [{unit}]"),
+            series,
+            ..Default::default()
+        });
+    }
+    for (c, what) in [("swing_along_deg", "string swing along the line"), ("swing_across_deg", "string swing across")] {
+        let cols: Vec<&[f64]> = (0..n).filter_map(|k| col(k, c)).collect();
+        if cols.is_empty() || (c == "swing_across_deg" && max_abs(cols.iter().copied(), rows) == 0.0) {
+            continue;
+        }
+        let series: Vec<Series> = (0..n).filter_map(|k| Some(line(col(k, c)?, 1.0, k))).collect();
+        charts.push(Chart {
+            title: run.title(what),
+            x_label: "t [s]".into(),
+            y_label: "swing from plumb [deg]".into(),
+            series,
+            ..Default::default()
+        });
+    }
+    (charts, notes)
+}
+
+/// The shape panels: side view, and plan view when the wire moves across the line. Empty without
+/// snapshots.
+fn shape_charts(run: &Run, snaps: &[&Snapshot]) -> Vec<Chart> {
+    if snaps.is_empty() {
+        return Vec::new();
+    }
+    let chosen: Vec<&Snapshot> = evenly(snaps.len(), MAX_SHAPES).into_iter().map(|k| snaps[k]).collect();
+    let x1 = chosen.iter().flat_map(|s| s.x_m.iter().map(|x| x[0])).filter(|v| v.is_finite());
+    let (lo, hi) = x1.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| (a.min(v), b.max(v)));
+    let lateral = hi - lo > STILL_M;
+    let panel = |y: usize, what: &str, y_label: &str| {
+        let mut series = Vec::new();
+        for (k, s) in chosen.iter().enumerate() {
+            for (j, p) in pieces(s, y).into_iter().enumerate() {
+                // One legend entry per snapshot; the pieces after a gap share its colour.
+                let label = if j == 0 { format!("t = {} s", short(s.t_s)) } else { String::new() };
+                series.push(Series::new(label, p, look(k).0, look(k).1));
+            }
+        }
+        if !run.supports.is_empty() {
+            let pts = run.supports.iter().map(|s| (s.position_m[1], s.position_m[y])).collect();
+            series.push(Series::new("supports", pts, Style::Markers, chosen.len()));
+        }
+        Chart {
+            title: run.title(what),
+            x_label: "x2, along the line [m]".into(),
+            y_label: y_label.into(),
+            series,
+            ..Default::default()
+        }
+    };
+    let mut charts = vec![panel(2, "shape at the snapshot times, side view", "x3, height [m]")];
+    if lateral {
+        charts.push(panel(0, "shape at the snapshot times, plan view", "x1, across the line [m]"));
+    }
+    charts
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn decimation_keeps_the_peaks_and_the_ends() {
+        let pts: Vec<(f64, f64)> =
+            (0..100_000).map(|i| (i as f64, if i == 31_337 { 50.0 } else { (i as f64 * 0.01).sin() })).collect();
+        let d = decimate(pts.clone(), 100);
+        assert!(d.len() <= 202, "{}", d.len());
+        assert_eq!((d[0], d[d.len() - 1]), (pts[0], pts[99_999]), "the ends");
+        assert!(d.iter().any(|p| p.1 == 50.0), "the peak");
+        assert!(d.iter().any(|p| p.1 < -0.999) && d.iter().any(|p| p.1 > 0.999 && p.1 < 2.0));
+        // Points stay apart (a quarter of an interval, 250 here), ends aside.
+        assert!(d[1..d.len() - 1].windows(2).all(|w| w[1].0 - w[0].0 >= 250.0 - 1e-9), "spaced");
+        // A steady ramp keeps one real sample per interval: no stairs.
+        let ramp: Vec<(f64, f64)> = (0..10_000).map(|i| (i as f64, 2.0 * i as f64)).collect();
+        assert!(decimate(ramp, 100).iter().all(|p| p.1 == 2.0 * p.0));
+        // A one-sample spike on an interval's edge (rising into it, falling out of the next) is kept.
+        for at in [99, 100] {
+            let spike: Vec<(f64, f64)> = (0..1000).map(|i| (i as f64, if i == at { 60.0 } else { 0.0 })).collect();
+            assert!(decimate(spike, 10).iter().any(|p| p.1 == 60.0), "spike at {at}");
+            let dip: Vec<(f64, f64)> = (0..1000).map(|i| (i as f64, -((i as f64 - at as f64).abs()))).collect();
+            assert!(decimate(dip.clone(), 10).iter().any(|p| p.1 == 0.0), "peak at {at}");
+            let trough: Vec<(f64, f64)> = dip.iter().map(|p| (p.0, -p.1)).collect();
+            assert!(decimate(trough, 10).iter().any(|p| p.1 == 0.0), "trough at {at}");
+        }
+        let few = vec![(0.0, 1.0), (1.0, 2.0)];
+        assert_eq!(decimate(few.clone(), 100), few);
+    }
+
+    #[test]
+    fn a_broken_segment_is_a_gap() {
+        let s = Snapshot {
+            t_s: 1.0,
+            s_m: vec![0.0, 1.0, 2.0, 3.0],
+            x_m: vec![[0.0, 0.0, 0.0], [0.0, 1.0, -0.1], [0.0, 1.0, -5.0], [0.0, 1.5, -5.5]],
+        };
+        // Segment 1 (chord 4.9 m for 1 m unstretched) is broken; segment 2 (0.71 m) is slack, not broken.
+        assert_eq!(pieces(&s, 2), vec![vec![(0.0, 0.0), (1.0, -0.1)], vec![(1.0, -5.0), (1.5, -5.5)]]);
+    }
+
+    #[test]
+    fn snapshots_are_chosen_evenly_with_both_ends() {
+        assert_eq!(evenly(3, 8), vec![0, 1, 2]);
+        let v = evenly(100, 8);
+        assert_eq!(v.len(), 8);
+        assert_eq!((v[0], v[7]), (0, 99));
+    }
+
+    #[test]
+    fn short_numbers() {
+        assert_eq!(short(0.5004353828386588), "0.5004");
+        assert_eq!(short(1963.081822), "1963");
+        assert_eq!(short(30.0), "30");
+        assert_eq!(short(400.0), "400");
+        assert_eq!(short(0.0), "0");
+    }
+}
