@@ -15,19 +15,17 @@
 //! `timeseries.csv` is required; `snapshots.csv` and `summary.json` are optional (a run killed before its
 //! end has no `summary.json`): without the summary the scenario is named after the folder. Titles name
 //! the scenario (`summary.json`'s `name`) and the conductor when the summary records one (`thermal`).
-//! Series of more than `2 BUCKETS` points are thinned to the smallest and largest value in each of
-//! [`BUCKETS`] equal time intervals ([`decimate`]): peaks survive, the SVG stays small, and a window
-//! (`--from`, `--to`) shows the detail.
+//! Every sample is handed to the plotting module, which reduces a long series to each pixel column's
+//! first, least, greatest and last point (peaks survive, the SVG stays small); a window (`--from`, `--to`)
+//! shows the detail.
 
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 
 use crate::plot::{Chart, PlotError, Series, Style, render};
 
-/// Most snapshots drawn in one shape panel (the palette has 8 colours).
+/// Most snapshots drawn in one shape panel (each in its own colour of the palette's 10).
 pub const MAX_SHAPES: usize = 8;
-/// Time intervals of a thinned series ([`decimate`]): two points each, about 2.4 px apart on a panel.
-pub const BUCKETS: usize = 120;
 /// A segment whose chord exceeds its unstretched length by this fraction is drawn as a gap (broken).
 pub const GAP_STRAIN: f64 = 0.1;
 /// A displacement component whose range over the window stays below this [m] gets no panel.
@@ -310,68 +308,6 @@ fn short(v: f64) -> String {
     if s.contains('.') { s.trim_end_matches('0').trim_end_matches('.').to_string() } else { s }
 }
 
-/// Thin a time series `points` (in time order) for drawing. Past `2 buckets` points, the time window is
-/// cut into `buckets` equal intervals of width `w`: an interval where the curve rises or falls steadily
-/// (its smallest and largest values are its first and last, and the samples either side carry on the
-/// same way) keeps its middle sample; any other keeps its smallest and largest value, in time order,
-/// drawn at a quarter and three quarters of the interval. The first and last samples stay. So every peak
-/// and trough survives (in an interval of its own, which draws its extremes), and consecutive points stay
-/// a few pixels apart: plotters' wide lines draw spikes at sharp turns between points closer than that.
-pub fn decimate(points: Vec<(f64, f64)>, buckets: usize) -> Vec<(f64, f64)> {
-    let n = points.len();
-    if n <= 2 * buckets || buckets == 0 {
-        return points;
-    }
-    let (t0, t1) = (points[0].0, points[n - 1].0);
-    // A window of no length (or not a number) has nothing to thin.
-    let rising = t1 > t0;
-    if !rising {
-        return points;
-    }
-    let w = (t1 - t0) / buckets as f64;
-    // Per interval: (first, last, index of min, index of max), finite values only.
-    let mut ext: Vec<Option<(usize, usize, usize, usize)>> = vec![None; buckets];
-    for (i, &(t, y)) in points.iter().enumerate() {
-        if !y.is_finite() || !t.is_finite() {
-            continue;
-        }
-        let b = (((t - t0) / w) as usize).min(buckets - 1);
-        ext[b] = Some(match ext[b] {
-            None => (i, i, i, i),
-            Some((first, _, lo, hi)) => {
-                (first, i, if y < points[lo].1 { i } else { lo }, if y > points[hi].1 { i } else { hi })
-            }
-        });
-    }
-    let mut out = Vec::with_capacity(2 * buckets + 2);
-    out.push(points[0]);
-    for (b, e) in ext.iter().enumerate() {
-        let Some((first, last, lo, hi)) = *e else { continue };
-        // Steady: monotone, and the samples either side carry on the same way (neither end is a local
-        // peak or trough of the series, which must stay drawn).
-        let (y0, y1) = (points[first].1, points[last].1);
-        let before = first.checked_sub(1).map(|i| points[i].1);
-        let after = points.get(last + 1).map(|p| p.1);
-        let steady = if lo == first && hi == last {
-            before.is_none_or(|p| p <= y0) && after.is_none_or(|p| p >= y1)
-        } else if lo == last && hi == first {
-            before.is_none_or(|p| p >= y0) && after.is_none_or(|p| p <= y1)
-        } else {
-            false
-        };
-        if steady {
-            out.push(points[(first + last) / 2]);
-        } else {
-            let left = t0 + (b as f64 + 0.25) * w;
-            out.push((left, points[lo.min(hi)].1));
-            out.push((left + 0.5 * w, points[lo.max(hi)].1));
-        }
-    }
-    out.push(points[n - 1]);
-    out.dedup_by(|a, b| a.0 == b.0);
-    out
-}
-
 /// Largest finite magnitude over several columns (0 if none).
 fn max_abs<'a>(cols: impl IntoIterator<Item = &'a [f64]>, rows: &[usize]) -> f64 {
     cols.into_iter()
@@ -504,7 +440,7 @@ fn timeseries_charts(run: &Run, rows: &[usize]) -> Result<Vec<Chart>, RunPlotErr
     let line = |y: &[f64], scale: f64, label: String, k: usize| {
         let (style, color) = look(k);
         let pts = rows.iter().map(|&i| (t[i], y[i] * scale)).collect();
-        Series::new(label, decimate(pts, BUCKETS), style, color)
+        Series::new(label, pts, style, color)
     };
     let spans = run.span_count();
     // Displacement probes: mid-span (left out in a section, where each span has its own), span
@@ -604,7 +540,7 @@ fn timeseries_charts(run: &Run, rows: &[usize]) -> Result<Vec<Chart>, RunPlotErr
             title: run.title("conductor temperature"),
             x_label: "t [s]".into(),
             y_label: "T_c [°C]".into(),
-            series: vec![Series::new("conductor", decimate(pts, BUCKETS), Style::Line, 0)],
+            series: vec![Series::new("conductor", pts, Style::Line, 0)],
             ..Default::default()
         });
     }
@@ -625,7 +561,7 @@ fn reaction_charts(run: &Run, rows: &[usize]) -> (Vec<Chart>, Vec<String>) {
     let line = |y: &[f64], scale: f64, k: usize| {
         let (style, color) = look(k);
         let pts = rows.iter().map(|&i| (t[i], y[i] * scale)).collect();
-        Series::new(run.support_label(k), decimate(pts, BUCKETS), style, color)
+        Series::new(run.support_label(k), pts, style, color)
     };
     let mut charts = Vec::new();
     let mut notes = Vec::new();
@@ -704,33 +640,6 @@ fn shape_charts(run: &Run, snaps: &[&Snapshot]) -> Vec<Chart> {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn decimation_keeps_the_peaks_and_the_ends() {
-        let pts: Vec<(f64, f64)> =
-            (0..100_000).map(|i| (i as f64, if i == 31_337 { 50.0 } else { (i as f64 * 0.01).sin() })).collect();
-        let d = decimate(pts.clone(), 100);
-        assert!(d.len() <= 202, "{}", d.len());
-        assert_eq!((d[0], d[d.len() - 1]), (pts[0], pts[99_999]), "the ends");
-        assert!(d.iter().any(|p| p.1 == 50.0), "the peak");
-        assert!(d.iter().any(|p| p.1 < -0.999) && d.iter().any(|p| p.1 > 0.999 && p.1 < 2.0));
-        // Points stay apart (a quarter of an interval, 250 here), ends aside.
-        assert!(d[1..d.len() - 1].windows(2).all(|w| w[1].0 - w[0].0 >= 250.0 - 1e-9), "spaced");
-        // A steady ramp keeps one real sample per interval: no stairs.
-        let ramp: Vec<(f64, f64)> = (0..10_000).map(|i| (i as f64, 2.0 * i as f64)).collect();
-        assert!(decimate(ramp, 100).iter().all(|p| p.1 == 2.0 * p.0));
-        // A one-sample spike on an interval's edge (rising into it, falling out of the next) is kept.
-        for at in [99, 100] {
-            let spike: Vec<(f64, f64)> = (0..1000).map(|i| (i as f64, if i == at { 60.0 } else { 0.0 })).collect();
-            assert!(decimate(spike, 10).iter().any(|p| p.1 == 60.0), "spike at {at}");
-            let dip: Vec<(f64, f64)> = (0..1000).map(|i| (i as f64, -((i as f64 - at as f64).abs()))).collect();
-            assert!(decimate(dip.clone(), 10).iter().any(|p| p.1 == 0.0), "peak at {at}");
-            let trough: Vec<(f64, f64)> = dip.iter().map(|p| (p.0, -p.1)).collect();
-            assert!(decimate(trough, 10).iter().any(|p| p.1 == 0.0), "trough at {at}");
-        }
-        let few = vec![(0.0, 1.0), (1.0, 2.0)];
-        assert_eq!(decimate(few.clone(), 100), few);
-    }
 
     #[test]
     fn a_broken_segment_is_a_gap() {

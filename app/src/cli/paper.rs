@@ -65,6 +65,8 @@ pub fn main(args: PaperArgs) -> ExitCode {
         }
         vec![p]
     };
+    // Taken before the cases rewrite their figures (which would read as a dirty tree).
+    let stamp = ohl_app::stamp::stamp();
     let results = paper::run_cases(&paths, Some(&args.out), args.threads);
     let mut rows = Vec::new();
     let mut code = 0u8;
@@ -94,13 +96,29 @@ pub fn main(args: PaperArgs) -> ExitCode {
         }
     }
     println!();
-    print!("{}", table::format(&rows));
+    let table = table::format(&rows);
+    print!("{table}");
     let missed = rows.iter().filter(|r| r.compare == CompareSpec::Match && !r.within_tolerance()).count();
-    println!(
-        "\n{} values checked, {} equilibria/exact values not reproduced; wall time {:.2} s",
+    let summary = format!(
+        "{} values checked, {} equilibria/exact values not reproduced; wall time {:.2} s",
         rows.len(),
         missed,
         started.elapsed().as_secs_f64()
     );
+    println!("\n{summary}");
+    // `all` also keeps the table, stamped, beside the figures.
+    if args.case == "all" {
+        let path = args.out.join("paper_table.md");
+        let text = format!(
+            "# The paper's values against this code\n\nWritten by `ohl paper all`. {stamp}\n\n{table}\n{summary}\n"
+        );
+        match std::fs::write(&path, text) {
+            Ok(()) => println!("table written to {}", path.display()),
+            Err(e) => {
+                eprintln!("error: cannot write {}: {e}", path.display());
+                code = code.max(1);
+            }
+        }
+    }
     ExitCode::from(code)
 }
