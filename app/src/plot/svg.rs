@@ -205,18 +205,23 @@ impl DrawingBackend for GlyphSvg {
         }
         let line = text::layout(s, style);
         let k = text::units_to_px(line.scale);
+        // One group per line of text: anchor, rotation, baseline, then font units (y up); each glyph is a
+        // `<use>` at its pen position in font units.
         let rotate = if line.degrees == 0 { String::new() } else { format!(" rotate({})", line.degrees) };
-        let _ =
-            writeln!(self.body, "<g transform=\"translate({} {}){rotate}\" {}>", pos.0, pos.1, paint("fill", color));
+        let baseline = line.glyphs.first().map_or(0.0, |g| g.y);
+        let _ = writeln!(
+            self.body,
+            "<g transform=\"translate({} {}){rotate} translate(0 {baseline:.2}) scale({k:.6} {:.6})\" {}>",
+            pos.0,
+            pos.1,
+            -k,
+            paint("fill", color)
+        );
         for g in &line.glyphs {
             let id = g.id.0;
             let has_path = self.glyphs.entry(id).or_insert_with(|| text::glyph_path(g.id)).is_some();
             if has_path {
-                let _ = writeln!(
-                    self.body,
-                    "<use xlink:href=\"#g{id}\" transform=\"matrix({k:.5} 0 0 {:.5} {:.2} {:.2})\"/>",
-                    -k, g.x, g.y
-                );
+                let _ = writeln!(self.body, "<use xlink:href=\"#g{id}\" x=\"{:.0}\"/>", g.x / k);
             }
         }
         self.body.push_str("</g>\n");

@@ -125,10 +125,8 @@ pub(super) fn glyph_path(id: GlyphId) -> Option<String> {
     let outline = FONT.outline(id)?;
     let mut d = String::new();
     let mut last: Option<ab_glyph::Point> = None;
-    let f = |v: f32| {
-        let r = (v * 10.0).round() / 10.0;
-        if r == r.trunc() { format!("{}", r as i64) } else { format!("{r:.1}") }
-    };
+    // Whole font units (1/2048 em): the outline's own grid, the implied midpoints rounded.
+    let f = |v: f32| format!("{}", v.round() as i64);
     for c in &outline.curves {
         let start = match c {
             OutlineCurve::Line(a, _) | OutlineCurve::Quad(a, _, _) | OutlineCurve::Cubic(a, _, _, _) => *a,
