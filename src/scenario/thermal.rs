@@ -133,7 +133,7 @@ pub enum ShedSpec {
 #[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct DeicingSpec {
-    /// radial ice thickness `t` [m], in (0, 0.1]
+    /// radial ice thickness `t` [m], in [1e-4, 0.1] (as validated)
     pub thickness_m: f64,
     /// ice density `rho_i` [kg/m^3], in [100, 1000]; default 900 (glaze, IEC 60826)
     #[serde(default = "glaze_density")]

@@ -792,6 +792,8 @@ mod tests {
         // Text is glyph outlines: no <text> element, no font family, glyphs defined once and used.
         assert!(svg.contains("<svg") && svg.contains("<use") && svg.contains("<path id=\"g"));
         assert!(!svg.contains("<text") && !svg.contains("font-family"));
+        // The words stay searchable as labels of the glyph groups.
+        assert!(svg.contains("aria-label=\"convergence\"") && svg.contains("aria-label=\"x3 [m]\""));
     }
 
     #[test]

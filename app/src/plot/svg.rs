@@ -4,7 +4,7 @@
 //! with whatever font it has, and strokes dashed curves as hundreds of separate elements with fractional
 //! coordinates. This backend writes each glyph once as a path in `<defs>` (font units) and places it with
 //! `<use>`, so the figure looks the same everywhere and carries no font file; coordinates are the backend's
-//! integer pixels.
+//! integer pixels. Each line of text keeps its words as the group's `aria-label` (screen readers, search).
 
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
@@ -48,6 +48,11 @@ impl GlyphSvg {
         s.push_str("</svg>\n");
         s
     }
+}
+
+/// `s` as XML attribute text.
+fn escape(s: &str) -> String {
+    s.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;").replace('"', "&quot;")
 }
 
 /// `#rrggbb` plus an opacity attribute when not opaque.
@@ -211,11 +216,12 @@ impl DrawingBackend for GlyphSvg {
         let baseline = line.glyphs.first().map_or(0.0, |g| g.y);
         let _ = writeln!(
             self.body,
-            "<g transform=\"translate({} {}){rotate} translate(0 {baseline:.2}) scale({k:.6} {:.6})\" {}>",
+            "<g transform=\"translate({} {}){rotate} translate(0 {baseline:.2}) scale({k:.6} {:.6})\" {} aria-label=\"{}\">",
             pos.0,
             pos.1,
             -k,
-            paint("fill", color)
+            paint("fill", color),
+            escape(s)
         );
         for g in &line.glyphs {
             let id = g.id.0;
