@@ -4,27 +4,27 @@
 //!     (`ohl::statics::solve`): the iteration history down to rounding, and the agreement of the settled
 //!     explicit state with Newton's solution (required: 1e-8 relative to the deflection).
 //!
-//!     History: from the `static` study's start (a parabola through 0.9 of the exact mid-span
-//!     displacement) the solve is run with a zero tolerance for `k = 0, 1, ..., K` iterations (`K = 8`,
-//!     three past the floor), which gives the iterates `x_k` themselves: the largest nodal residual `r_k`
-//!     [N] and the error `e_k = max_i |x_k,i - x_K,i|` [m] against the last iterate. Rounding floors: the
-//!     residual cannot fall below `R = (EA / l0) X eps` (`ohl::statics::rounding_floor_n`: an ulp of a
-//!     coordinate of magnitude `X` through a segment's axial stiffness; `EA N eps` here), nor the error
-//!     below about `X eps` (an ulp of the coordinates, `X` the largest coordinate magnitude).
+//! History: from the `static` study's start (a parabola through 0.9 of the exact mid-span
+//! displacement) the solve is run with a zero tolerance for `k = 0, 1, ..., K` iterations (`K = 8`,
+//! three past the floor), which gives the iterates `x_k` themselves: the largest nodal residual `r_k`
+//! [N] and the error `e_k = max_i |x_k,i - x_K,i|` [m] against the last iterate. Rounding floors: the
+//! residual cannot fall below `R = (EA / l0) X eps` (`ohl::statics::rounding_floor_n`: an ulp of a
+//! coordinate of magnitude `X` through a segment's axial stiffness; `EA N eps` here), nor the error
+//! below about `X eps` (an ulp of the coordinates, `X` the largest coordinate magnitude).
 //!
-//!     Quadratic convergence is a statement on the error, `e_{k+1} <= C e_k^2` (Newton-Kantorovich;
-//!     Deuflhard's affine-covariant form has `C = omega / 2`), and is checked on it: the order `p` of the
-//!     least-squares fit `ln e_{k+1} = ln C + p ln e_k` over the steps whose new error is still 1e3 times
-//!     above its floor (so that rounding contributes at most 0.1 %) must be within 0.19 of 2, i.e. closer to
-//!     2 than to the golden-ratio order 1.618 of a secant-type (superlinear but not quadratic) iteration,
-//!     the next-best alternative an inexact Jacobian would give; a linearly convergent iteration has
-//!     order 1. The contractions `e_{k+1} / e_k^2` and the step-wise orders
-//!     `ln(e_{k+1} / e_k) / ln(e_k / e_{k-1})` are tabulated. The residual max-norm is not affine
-//!     invariant: it weighs a node's stiff axial balance (`EA / ds`) and its soft transverse balance
-//!     (`T / ds` and less) alike, so `r_{k+1} / r_k^2` changes by orders of magnitude between iterations
-//!     while `e_{k+1} / e_k^2` stays steady; it is tabulated too, and the residual is required to reach its
-//!     floor: `r_K <= 4 R` (a node's residual adds two segment forces, each with a rounding error of
-//!     about `R`; observed 0.7 to 1.4 `R`).
+//! Quadratic convergence is a statement on the error, `e_{k+1} <= C e_k^2` (Newton-Kantorovich;
+//! Deuflhard's affine-covariant form has `C = omega / 2`), and is checked on it: the order `p` of the
+//! least-squares fit `ln e_{k+1} = ln C + p ln e_k` over the steps whose new error is still 1e3 times
+//! above its floor (so that rounding contributes at most 0.1 %) must be within 0.19 of 2, i.e. closer to
+//! 2 than to the golden-ratio order 1.618 of a secant-type (superlinear but not quadratic) iteration,
+//! the next-best alternative an inexact Jacobian would give; a linearly convergent iteration has
+//! order 1. The contractions `e_{k+1} / e_k^2` and the step-wise orders
+//! `ln(e_{k+1} / e_k) / ln(e_k / e_{k-1})` are tabulated. The residual max-norm is not affine
+//! invariant: it weighs a node's stiff axial balance (`EA / ds`) and its soft transverse balance
+//! (`T / ds` and less) alike, so `r_{k+1} / r_k^2` changes by orders of magnitude between iterations
+//! while `e_{k+1} / e_k^2` stays steady; it is tabulated too, and the residual is required to reach its
+//! floor: `r_K <= 4 R` (a node's residual adds two segment forces, each with a rounding error of
+//! about `R`; observed 0.7 to 1.4 `R`).
 //! (b) Newmark's average-acceleration integrator with Newton and faer (`implicit::newmark`) on the same
 //!     discrete equations: its own time-step convergence (expected order 2), and its difference from the
 //!     explicit scheme on the weight release (from straight, weight only) and on the wind step (the settled
