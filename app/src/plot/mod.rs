@@ -602,7 +602,13 @@ where
     builder.margin_top(px(size::MARGIN + g.title + g.top));
     if !chart.title.is_empty() {
         let (w, _) = area.dim_in_pixel();
-        let style = TextStyle::from(font(size::TITLE).into_font()).color(&BLACK).pos(Pos::new(HPos::Center, VPos::Top));
+        // A long title shrinks (down to 60 %) to fit the panel.
+        let room = f64::from(w) / s - 2.0 * size::MARGIN;
+        let mut title_px = size::TITLE;
+        while title_px > 0.6 * size::TITLE && f64::from(text::width(&chart.title, title_px as f32)) > room {
+            title_px -= 0.5;
+        }
+        let style = TextStyle::from(font(title_px).into_font()).color(&BLACK).pos(Pos::new(HPos::Center, VPos::Top));
         area.draw(&Text::new(chart.title.clone(), (w as i32 / 2, px(size::MARGIN)), style)).map_err(e)?;
     }
     let mut cc = builder.build_cartesian_2d(x, y).map_err(e)?;

@@ -109,6 +109,15 @@ pub(super) fn format_log(v: f64, sci: bool) -> String {
     }
 }
 
+/// `v` rounded to `digits` significant digits.
+fn round_sig(v: f64, digits: i32) -> f64 {
+    if v == 0.0 || !v.is_finite() {
+        return v;
+    }
+    let scale = 10f64.powi(digits - 1 - v.abs().log10().floor() as i32);
+    (v * scale).round() / scale
+}
+
 /// Ticks of a logarithmic axis over `[lo, hi]` (both > 0); `data` are the abscissae of the points drawn
 /// (used as ticks when there are at most 8 distinct ones).
 pub(super) fn log(lo: f64, hi: f64, length_px: f64, font_px: f64, along: Along, data: &[f64]) -> Ticks {
@@ -155,8 +164,10 @@ pub(super) fn log(lo: f64, hi: f64, length_px: f64, font_px: f64, along: Along, 
     let sci = candidates.iter().any(|v| !(1.0e-3..1.0e5).contains(&v.abs()));
     // Greedy: keep a candidate if its label clears every kept one.
     let mut kept: Vec<(f64, String)> = Vec::new();
+    let from_data = !distinct.is_empty() && distinct.len() <= 8;
     for v in candidates {
-        let l = format_log(v, sci);
+        // Data abscissae (grid sizes, segment lengths) print with at most 3 significant digits.
+        let l = if from_data { format_log(round_sig(v, 3), sci) } else { format_log(v, sci) };
         let (p, e) = (to_px(v), extent(&l, font_px, along));
         let clear = kept.iter().all(|(k, kl)| (to_px(*k) - p).abs() >= 0.5 * (e + extent(kl, font_px, along)) + gap);
         if clear {
@@ -196,6 +207,9 @@ mod tests {
     fn log_axes_label_few_data_abscissae() {
         let t = log(20.0, 1200.0, 400.0, 13.0, Along::X, &[25.0, 50.0, 100.0, 200.0, 400.0, 800.0]);
         assert_eq!(t.labels, ["25", "50", "100", "200", "400", "800"]);
+        // Segment lengths of a convergence plot print with 3 significant digits.
+        let h = [4.944184, 9.767779, 19.070426, 36.407176];
+        assert_eq!(log(4.0, 45.0, 400.0, 13.0, Along::X, &h).labels, ["4.94", "9.77", "19.1", "36.4"]);
         let t = log(20.0, 1200.0, 400.0, 13.0, Along::X, &(1..100).map(f64::from).collect::<Vec<_>>());
         assert!(t.labels.contains(&"100".to_string()) && t.labels.contains(&"1000".to_string()), "{:?}", t.labels);
     }
