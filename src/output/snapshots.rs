@@ -45,36 +45,65 @@ impl Snapshots {
     }
 
     fn write(&mut self, solver: &Explicit, t_s: f64, tau: f64) -> Result<(), OutputError> {
-        let w = &solver.wire();
-        let n = w.segments();
-        self.tension.clear();
-        self.tension.extend((0..n).map(|j| solver.segment_tension(j)));
         let f = &mut self.file;
-        let mut s = 0.0;
-        for i in 0..=n {
-            let (mut sum, mut cnt) = (0.0, 0.0);
-            if i > 0 {
-                sum += self.tension[i - 1] * w.intact[i - 1];
-                cnt += w.intact[i - 1];
-            }
-            if i < n {
-                sum += self.tension[i] * w.intact[i];
-                cnt += w.intact[i];
-            }
+        node_rows(solver, &mut self.tension, |r| {
             f.number(t_s);
             f.number(tau);
-            f.integer(i as u64);
-            for x in [s, w.x[0][i], w.x[1][i], w.x[2][i], w.v[0][i], w.v[1][i], w.v[2][i]] {
+            f.integer(r.node as u64);
+            for x in [r.s_m, r.x_m[0], r.x_m[1], r.x_m[2], r.v_m_per_s[0], r.v_m_per_s[1], r.v_m_per_s[2]] {
                 f.number(x);
             }
-            f.number(if cnt > 0.0 { sum / cnt } else { 0.0 });
+            f.number(r.tension_n);
             f.end_row();
-            if i < n {
-                s += w.reference_length[i];
-            }
-        }
+        });
         self.last_t_s = Some(t_s);
         f.commit().map_err(OutputError::at(f.path()))
+    }
+}
+
+/// One node of a snapshot, as a row of `snapshots.csv` has it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct NodeRow {
+    /// node index [-]
+    pub node: usize,
+    /// Lagrangian coordinate: unstretched length from the first node [m]
+    pub s_m: f64,
+    /// position [m]
+    pub x_m: [f64; 3],
+    /// velocity at the last half step [m/s]
+    pub v_m_per_s: [f64; 3],
+    /// mean tension of the adjacent intact segments (0 if none) [N]
+    pub tension_n: f64,
+}
+
+/// The rows of a snapshot of `solver`'s current state, node by node (`tension` is scratch space): the
+/// numbers `snapshots.csv` holds, for the file and for in-memory records alike.
+pub fn node_rows(solver: &Explicit, tension: &mut Vec<f64>, mut each: impl FnMut(NodeRow)) {
+    let w = &solver.wire();
+    let n = w.segments();
+    tension.clear();
+    tension.extend((0..n).map(|j| solver.segment_tension(j)));
+    let mut s = 0.0;
+    for i in 0..=n {
+        let (mut sum, mut cnt) = (0.0, 0.0);
+        if i > 0 {
+            sum += tension[i - 1] * w.intact[i - 1];
+            cnt += w.intact[i - 1];
+        }
+        if i < n {
+            sum += tension[i] * w.intact[i];
+            cnt += w.intact[i];
+        }
+        each(NodeRow {
+            node: i,
+            s_m: s,
+            x_m: [w.x[0][i], w.x[1][i], w.x[2][i]],
+            v_m_per_s: [w.v[0][i], w.v[1][i], w.v[2][i]],
+            tension_n: if cnt > 0.0 { sum / cnt } else { 0.0 },
+        });
+        if i < n {
+            s += w.reference_length[i];
+        }
     }
 }
 

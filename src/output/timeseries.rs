@@ -116,10 +116,11 @@ pub struct LineColumns {
     pub temperature: bool,
 }
 
-/// Writes `timeseries.csv` (rows reach the file a page at a time, always whole: [`super::rows`]).
-pub struct Timeseries {
-    file: RowFile,
-    clock: SampleClock,
+/// The columns of `timeseries.csv`: their names, and their values at a time level. The file writer
+/// ([`Timeseries`]) and in-memory records of the same table (the Python package) share it, so both hold
+/// the same numbers.
+pub struct Columns {
+    header: Vec<String>,
     mid: ProbePoint,
     probes: Vec<ProbePoint>,
     forces: Vec<(usize, [f64; 3])>,
@@ -129,16 +130,9 @@ pub struct Timeseries {
     temperature: bool,
 }
 
-impl Timeseries {
-    /// Create `path` for samples every `interval_s` [s] of the mid-span probe `mid`, the other `probes`
-    /// and `supports` supports.
-    pub fn create(
-        path: &Path,
-        interval_s: f64,
-        mid: ProbePoint,
-        probes: Vec<ProbePoint>,
-        line: LineColumns,
-    ) -> Result<Self, OutputError> {
+impl Columns {
+    /// The columns of the mid-span probe `mid`, the other `probes` and what `line` has.
+    pub fn new(mid: ProbePoint, probes: Vec<ProbePoint>, line: LineColumns) -> Self {
         let LineColumns { supports, strings: suspensions, spans, ground, temperature } = line;
         let mut header: Vec<String> = Sample::COLUMNS.map(String::from).into();
         for p in &probes {
@@ -161,41 +155,30 @@ impl Timeseries {
         if temperature {
             header.push("temperature_k".into());
         }
-        let file = RowFile::create(path, &header).map_err(OutputError::at(path))?;
         let strings = !suspensions.is_empty();
-        Ok(Timeseries {
-            file,
-            clock: SampleClock::new(interval_s),
-            mid,
-            probes,
-            forces: Vec::new(),
-            strings,
-            spans,
-            ground,
-            temperature,
-        })
+        Columns { header, mid, probes, forces: Vec::new(), strings, spans, ground, temperature }
     }
-}
 
-impl Observer for Timeseries {
-    fn observe(&mut self, level: &Level) -> Result<Control, OutputError> {
-        if !self.clock.due(level.t_s, LANDING * level.solver.params().dt_s) {
-            return Ok(Control::Continue);
-        }
+    /// The column names, in the order of [`Columns::values`].
+    pub fn header(&self) -> &[String] {
+        &self.header
+    }
+
+    /// The row of `level`: one call of `push` per column, in the order of [`Columns::header`].
+    pub fn values(&mut self, level: &Level, mut push: impl FnMut(f64)) {
         let s = Sample::of(level, &self.mid);
-        let f = &mut self.file;
         for x in s.values() {
-            f.number(x);
+            push(x);
         }
         for p in &self.probes {
             for x in p.displacement(level.solver.wire()) {
-                f.number(x);
+                push(x);
             }
         }
         level.solver.support_forces(&mut self.forces);
         for (_, force) in &self.forces {
             for x in force {
-                f.number(*x);
+                push(*x);
             }
         }
         if self.strings {
@@ -204,22 +187,59 @@ impl Observer for Timeseries {
                 let [along, across] = ins.swing(w.position(ins.node));
                 let d = ins.pivot_displacement_m();
                 for x in [along.to_degrees(), across.to_degrees(), d[0], d[1]] {
-                    f.number(x);
+                    push(x);
                 }
             }
         }
         for &(first, last) in &self.spans {
             let s = level.solver;
             let w = s.wire();
-            f.number(s.max_tension_in(first..last));
+            push(s.max_tension_in(first..last));
             if let Some(g) = &self.ground {
-                f.number(g.least_clearance_m(&w.x, first..=last));
+                push(g.least_clearance_m(&w.x, first..=last));
             }
         }
         if self.temperature {
             let t = &level.solver.wire().temperature_k;
-            f.number(t.iter().sum::<f64>() / t.len() as f64);
+            push(t.iter().sum::<f64>() / t.len() as f64);
         }
+    }
+}
+
+/// Writes `timeseries.csv` (rows reach the file a page at a time, always whole: [`super::rows`]).
+pub struct Timeseries {
+    file: RowFile,
+    clock: SampleClock,
+    columns: Columns,
+}
+
+impl Timeseries {
+    /// Create `path` for samples every `interval_s` [s] of the mid-span probe `mid`, the other `probes`
+    /// and `supports` supports.
+    pub fn create(
+        path: &Path,
+        interval_s: f64,
+        mid: ProbePoint,
+        probes: Vec<ProbePoint>,
+        line: LineColumns,
+    ) -> Result<Self, OutputError> {
+        Self::with_columns(path, interval_s, Columns::new(mid, probes, line))
+    }
+
+    /// Create `path` for samples of `columns` every `interval_s` [s].
+    pub fn with_columns(path: &Path, interval_s: f64, columns: Columns) -> Result<Self, OutputError> {
+        let file = RowFile::create(path, columns.header()).map_err(OutputError::at(path))?;
+        Ok(Timeseries { file, clock: SampleClock::new(interval_s), columns })
+    }
+}
+
+impl Observer for Timeseries {
+    fn observe(&mut self, level: &Level) -> Result<Control, OutputError> {
+        if !self.clock.due(level.t_s, LANDING * level.solver.params().dt_s) {
+            return Ok(Control::Continue);
+        }
+        let f = &mut self.file;
+        self.columns.values(level, |x| f.number(x));
         f.end_row();
         f.commit().map_err(OutputError::at(f.path()))?;
         Ok(Control::Continue)

@@ -22,7 +22,7 @@ use crate::output::rows::write_atomically;
 use crate::output::summary::{
     EquilibriumReport, EventRecord, InstabilityReport, ProbeSummary, SpanSummary, SupportSummary,
 };
-use crate::output::timeseries::LineColumns;
+use crate::output::timeseries::{Columns, LineColumns};
 use crate::output::{Peaks, ProbePoint, Recorder, Sample, Snapshots, Summary, Timeseries};
 use crate::scenario::Plan;
 use crate::scenario::build::Stop;
@@ -155,18 +155,8 @@ pub fn run_observed<'o>(
     let (mut series, mut snaps) = match &opts.out_dir {
         Some(d) => {
             std::fs::create_dir_all(d).map_err(OutputError::at(d))?;
-            // Suspension supports: their index among the supports, in the order of the wire's strings.
-            let strings: Vec<usize> =
-                (wire.insulators.iter()).map(|s| supports.iter().position(|p| p.0 == s.node).unwrap_or(0)).collect();
             let path = d.join("timeseries.csv");
-            let line = LineColumns {
-                supports: supports.len(),
-                strings,
-                spans: plan.spans.clone(),
-                ground: plan.ground.clone(),
-                temperature: plan.thermal.is_some(),
-            };
-            let ts = Timeseries::create(&path, plan.sample_interval_s, mid, named, line)?;
+            let ts = Timeseries::with_columns(&path, plan.sample_interval_s, timeseries_columns(&plan))?;
             (Some(ts), Some(Snapshots::create(&d.join("snapshots.csv"), plan.snapshot_times_s.clone())?))
         }
         None => (None, None),
@@ -276,6 +266,26 @@ pub fn run_observed<'o>(
         Ending::Unstable(instability) => Err(RunError::Unstable { instability, outcome: Box::new(outcome) }),
         _ => Ok(outcome),
     }
+}
+
+/// The columns of the plan's `timeseries.csv` ([`Columns`]): mid-span, the named probes, every support,
+/// the suspension strings, the spans and the temperature, as [`run`] writes them.
+pub fn timeseries_columns(plan: &Plan) -> Columns {
+    let wire = plan.solver.wire();
+    let mid = ProbePoint::new(crate::output::probe::MIDSPAN, 0.5, wire);
+    let named: Vec<ProbePoint> = plan.probes.iter().map(|(name, at)| ProbePoint::at(name, *at, wire)).collect();
+    let supports = wire.supports();
+    // Suspension supports: their index among the supports, in the order of the wire's strings.
+    let strings: Vec<usize> =
+        (wire.insulators.iter()).map(|s| supports.iter().position(|p| p.0 == s.node).unwrap_or(0)).collect();
+    let line = LineColumns {
+        supports: supports.len(),
+        strings,
+        spans: plan.spans.clone(),
+        ground: plan.ground.clone(),
+        temperature: plan.thermal.is_some(),
+    };
+    Columns::new(mid, named, line)
 }
 
 /// The temperature summary of a `[thermal]` history up to the end time `t_end` [s].

@@ -1,0 +1,421 @@
+"""ohl: dynamics of overhead power-line wires, from Python.
+
+The package wraps the Rust library ``ohl`` (not the command line): a scenario (a TOML file, TOML text or
+a dict with the same tables) is parsed, validated and planned by the library, run with the GIL released,
+and its results come back as NumPy arrays holding exactly the numbers ``ohl run`` writes to
+``timeseries.csv``, ``snapshots.csv`` and ``summary.json``. Everything is in SI units, temperatures in
+kelvin. ``docs/python.md`` in the repository documents the API.
+
+    >>> import ohl
+    >>> r = ohl.run("paper_cases/fig4_weight_release.toml")
+    >>> r.t_s, r.mid_displacement_m[:, 2], r.max_tension_n      # [s], [m], [N]
+    >>> ohl.ampacity(373.15, conductor="ACSR Drake", weather={...})["current_a"]   # [A]
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Mapping
+from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
+
+import numpy as np
+
+from . import _ohl
+from ._errors import (
+    Problem,
+    ScenarioError,
+    ScenarioWarning,
+    StaticsError,
+    ThermalError,
+    UnstableError,
+    WorkBudgetError,
+)
+from ._ohl import Scenario
+
+__version__: str = _ohl.__version__
+
+__all__ = [
+    "Problem",
+    "RunResult",
+    "Scenario",
+    "ScenarioError",
+    "ScenarioWarning",
+    "Snapshots",
+    "StaticsError",
+    "ThermalError",
+    "UnstableError",
+    "WorkBudgetError",
+    "ampacity",
+    "conductor",
+    "conductors",
+    "deicing",
+    "deicing_current",
+    "equilibrium",
+    "from_dict",
+    "heat_terms",
+    "load",
+    "loads",
+    "run",
+    "steady_temperature",
+    "transient",
+]
+
+ScenarioLike = Union[Scenario, Mapping, str, "os.PathLike[str]"]
+
+
+# --- scenarios ---------------------------------------------------------------------------------------
+
+
+def load(path: Union[str, "os.PathLike[str]"]) -> Scenario:
+    """Read, validate and plan a scenario file (TOML, SI units).
+
+    Raises ``FileNotFoundError`` if the file does not exist and :class:`ScenarioError` if it is invalid
+    (with ``file``, ``field``, ``value``, ``allowed``). Valid but doubtful values are issued as
+    :class:`ScenarioWarning`.
+    """
+    return Scenario.from_file(os.fspath(path))
+
+
+def loads(text: str, name: str = "<string>") -> Scenario:
+    """A scenario from TOML text; ``name`` stands for the file name in messages."""
+    return Scenario.from_toml(text, name)
+
+
+def from_dict(d: Mapping, name: str = "<dict>") -> Scenario:
+    """A scenario from a dict with the tables and keys of a scenario file.
+
+    Tables are nested dicts, ``events`` a list of dicts. A Python ``int`` is a TOML integer and a
+    ``float`` a TOML float: a whole-number field (``segments``) needs an ``int``, a number field takes
+    either (exactly as in a file). The dict is written as TOML (``Scenario.toml``) and read like a file,
+    so a dict and the equivalent TOML text give bitwise the same run.
+    """
+    return Scenario.from_dict(_plain_dict(d), name)
+
+
+def _plain_dict(d: Mapping) -> dict:
+    return {k: (_plain_dict(v) if isinstance(v, Mapping) else _plain_list(v)) for k, v in d.items()}
+
+
+def _plain_list(v: Any) -> Any:
+    if isinstance(v, (list, tuple)):
+        return [_plain_dict(x) if isinstance(x, Mapping) else _plain_list(x) for x in v]
+    return v
+
+
+def _as_scenario(source: ScenarioLike) -> Scenario:
+    if isinstance(source, Scenario):
+        return source
+    if isinstance(source, Mapping):
+        return from_dict(source)
+    if isinstance(source, (str, os.PathLike)):
+        return load(source)
+    raise TypeError(
+        f"expected an ohl.Scenario, a dict or a path to a scenario file, not {type(source).__name__} "
+        "(for TOML text use ohl.loads(text))"
+    )
+
+
+# --- runs --------------------------------------------------------------------------------------------
+
+
+class Snapshots:
+    """The whole wire at the snapshot times and at the end (the rows of ``snapshots.csv``).
+
+    ``k`` snapshots of ``N + 1`` nodes:
+
+    Attributes:
+        t_s: (k,) times [s] (the first time level at or after each requested time).
+        tau: (k,) dimensionless times ``t U / l`` [-].
+        s_m: (k, N+1) Lagrangian coordinate of each node (unstretched length from the first node) [m].
+        x_m: (k, N+1, 3) node positions ``x1`` (across), ``x2`` (along), ``x3`` (up) [m].
+        v_m_per_s: (k, N+1, 3) node velocities at the last half step [m/s].
+        tension_n: (k, N+1) mean tension of the intact segments next to each node [N].
+    """
+
+    def __init__(self, raw: dict) -> None:
+        self.t_s: np.ndarray = raw["snapshot_t_s"]
+        self.tau: np.ndarray = raw["snapshot_tau"]
+        self.s_m: np.ndarray = raw["snapshot_s_m"]
+        self.x_m: np.ndarray = raw["snapshot_x_m"]
+        self.v_m_per_s: np.ndarray = raw["snapshot_v_m_per_s"]
+        self.tension_n: np.ndarray = raw["snapshot_tension_n"]
+
+    def __len__(self) -> int:
+        return len(self.t_s)
+
+    def __repr__(self) -> str:
+        nodes = self.x_m.shape[1] if self.x_m.ndim == 3 else 0
+        return f"Snapshots({len(self)} times, {nodes} nodes)"
+
+
+class RunResult:
+    """What a run produced: the time series, the snapshots, the summary and the events.
+
+    The time series holds the columns of ``timeseries.csv`` (``columns``; one row per sample interval,
+    at the first time level at or after each multiple of it), the same numbers bit for bit.
+
+    Attributes:
+        scenario: the :class:`Scenario` that ran.
+        status: ``"completed"``, ``"settled"``, ``"not_settled"`` or ``"unstable"``.
+        columns: the column names, in the order of ``timeseries.csv``.
+        table: (rows, columns) array of the time series.
+        timeseries: dict column name -> (rows,) array.
+        snapshots: the :class:`Snapshots`.
+        summary: the summary, a dict with the keys of ``summary.json``.
+        events: the events applied, as (time [s], what) tuples.
+    """
+
+    def __init__(self, raw: dict, scenario: Scenario) -> None:
+        self.scenario = scenario
+        self.status: str = raw["status"]
+        self.columns: List[str] = list(raw["columns"])
+        self.table: np.ndarray = raw["rows"]
+        by_column = np.ascontiguousarray(self.table.T)
+        self.timeseries: Dict[str, np.ndarray] = {c: by_column[k] for k, c in enumerate(self.columns)}
+        self.snapshots = Snapshots(raw)
+        self.summary: Dict[str, Any] = raw["summary"]
+        self.events: List[Tuple[float, str]] = list(raw["events"])
+
+    def __getitem__(self, column: str) -> np.ndarray:
+        """The column ``column`` of the time series (a name of ``timeseries.csv``)."""
+        return self.timeseries[column]
+
+    def _xyz(self, prefix: str, suffix: str) -> np.ndarray:
+        return np.stack([self.timeseries[f"{prefix}{k}{suffix}"] for k in (1, 2, 3)], axis=1)
+
+    @property
+    def t_s(self) -> np.ndarray:
+        """(rows,) time [s]."""
+        return self.timeseries["t_s"]
+
+    @property
+    def tau(self) -> np.ndarray:
+        """(rows,) dimensionless time ``tau = t U / l`` [-]."""
+        return self.timeseries["tau"]
+
+    @property
+    def mid_displacement_m(self) -> np.ndarray:
+        """(rows, 3) mid-span displacement from the chord midpoint, ``x1, x2, x3`` [m]; the sag is
+        ``-mid_displacement_m[:, 2]``."""
+        return self._xyz("mid_dx", "_m")
+
+    @property
+    def max_tension_n(self) -> np.ndarray:
+        """(rows,) largest segment tension [N]."""
+        return self.timeseries["max_tension_n"]
+
+    @property
+    def energies(self) -> Dict[str, np.ndarray]:
+        """Kinetic, elastic, potential (gravity and uniform load) and total energy [J], (rows,) each."""
+        return {k: self.timeseries[k] for k in ("kinetic_j", "elastic_j", "potential_j", "total_j")}
+
+    @property
+    def probes(self) -> Dict[str, np.ndarray]:
+        """Probe name -> (rows, 3) displacement [m]: ``"mid"`` and the named probes of the scenario."""
+        return {"mid": self.mid_displacement_m, **{p: self._xyz(f"{p}_dx", "_m") for p in self.scenario.probes[1:]}}
+
+    @property
+    def support_forces_n(self) -> np.ndarray:
+        """(rows, supports, 3) force the wire applies to each support, ``F1`` across the line, ``F2`` along
+        it, ``F3`` up [N] (supports in node order, as ``Scenario.supports``)."""
+        n = len(self.scenario.supports)
+        if n == 0:
+            return np.zeros((len(self.t_s), 0, 3))
+        return np.stack([self._xyz(f"support{s}_f", "_n") for s in range(n)], axis=1)
+
+    @property
+    def temperature_k(self) -> Optional[np.ndarray]:
+        """(rows,) conductor temperature [K] of a scenario with a ``[thermal]`` table, else None."""
+        return self.timeseries.get("temperature_k")
+
+    def to_pandas(self) -> Any:
+        """The time series as a ``pandas.DataFrame`` (pandas is not a dependency of ohl)."""
+        import pandas as pd
+
+        return pd.DataFrame(self.timeseries, columns=self.columns)
+
+    def __repr__(self) -> str:
+        return (
+            f"RunResult(name={self.summary.get('name')!r}, status={self.status!r}, "
+            f"rows={len(self.t_s)}, columns={len(self.columns)}, snapshots={len(self.snapshots)})"
+        )
+
+
+def run(
+    scenario: ScenarioLike,
+    *,
+    out_dir: Optional[Union[str, "os.PathLike[str]"]] = None,
+    allow_large: bool = False,
+) -> RunResult:
+    """Run a scenario to its end and return its :class:`RunResult`.
+
+    ``scenario`` is an :class:`ohl.Scenario`, a dict (:func:`from_dict`) or the path of a scenario file
+    (:func:`load`). The run releases the GIL, so runs in threads (``concurrent.futures``, Dask's threaded
+    scheduler) run in parallel. With ``out_dir`` it also writes ``timeseries.csv``, ``snapshots.csv``
+    and ``summary.json`` there, as ``ohl run --out`` does.
+
+    Raises :class:`WorkBudgetError` above the work budget unless ``allow_large`` (as ``ohl run
+    --allow-large``), :class:`UnstableError` (with the result so far in ``.result``) if the scheme goes
+    unstable, ``KeyboardInterrupt`` on Ctrl-C.
+    """
+    sc = _as_scenario(scenario)
+    raw = _ohl.run_raw(sc, None if out_dir is None else os.fspath(out_dir), allow_large)
+    result = RunResult(raw, sc)
+    u = raw["instability"]
+    if u is not None:
+        raise UnstableError(u["message"], u["time_s"], u["node"], u["reason"], result)
+    return result
+
+
+def equilibrium(scenario: ScenarioLike, *, tolerance_n: Optional[float] = None, max_iterations: int = 100) -> Dict[str, Any]:
+    """The static equilibrium of the scenario's line under its loads at ``t = 0`` (before any event).
+
+    Newton's method on the scheme's own discrete equations at rest, with the exact Jacobian, from the
+    scenario's initial shape (the library's ``statics::solve``; ``tolerance_n`` [N] on the largest nodal
+    residual, default ``1e-10`` of the largest nodal load). Raises :class:`StaticsError` if it does not
+    converge. Returns a dict:
+
+    - ``x_m`` (N+1, 3) node positions [m]; ``s_m`` (N+1,) Lagrangian coordinate [m];
+    - ``segment_tension_n`` (N,) and ``node_tension_n`` (N+1,) tensions [N] (a node's is the mean of its
+      intact segments', as in ``snapshots.csv``); ``max_tension_n`` [N];
+    - ``midspan_displacement_m`` [x1, x2, x3] from the chord midpoint [m];
+    - ``support_nodes`` and ``support_forces_n`` (supports, 3): the force the wire applies to each
+      support [N];
+    - ``iterations``, ``residual_n``, ``tolerance_n`` [N], ``residual_history_n``.
+    """
+    return _ohl.equilibrium(_as_scenario(scenario), tolerance_n, max_iterations)
+
+
+# --- thermal -----------------------------------------------------------------------------------------
+
+
+def conductors() -> List[str]:
+    """The names of the conductors in the catalogue (``data/conductors.toml``)."""
+    return _ohl.conductors()
+
+
+def conductor(name: str) -> Dict[str, Any]:
+    """A catalogue conductor by name or alias (case-insensitive), every field in SI units and kelvin."""
+    return _ohl.conductor(name)
+
+
+def _vector(x: Any) -> Tuple[List[float], bool, Tuple[int, ...]]:
+    a = np.asarray(x, dtype=float)
+    return a.ravel().tolist(), a.ndim == 0, a.shape
+
+
+def _shaped(d: Dict[str, Any], scalar: bool, shape: Tuple[int, ...]) -> Dict[str, Any]:
+    out = {}
+    for k, v in d.items():
+        if isinstance(v, np.ndarray):
+            v = float(v[0]) if scalar else v.reshape(shape)
+        out[k] = v
+    return out
+
+
+def heat_terms(
+    temperature_k: Any, current_a: Any, *, conductor: str, weather: Mapping, standard: str = "ieee738"
+) -> Dict[str, Any]:
+    """The heat-balance terms [W/m] at conductor temperature(s) ``temperature_k`` [K] and current(s)
+    ``current_a`` [A] (broadcast together): ``joule_w_per_m``, ``solar_w_per_m``,
+    ``convection_w_per_m``, ``radiation_w_per_m``.
+
+    ``conductor`` is a catalogue name (:func:`conductors`); ``weather`` a dict with the keys of a
+    ``[weather]`` table: ``air_temperature_k`` [K], ``wind_speed_m_per_s`` [m/s], ``wind_angle_deg``
+    [deg, 90 = across the line], ``elevation_m`` [m], and ``sun`` (a dict: ``latitude_deg``,
+    ``day_of_year``, ``solar_hour``, ``line_azimuth_deg``, ``atmosphere``, ...; omit for a night);
+    ``standard`` is ``"ieee738"`` (IEEE Std 738-2012) or ``"cigre601"`` (CIGRE TB 601).
+    """
+    t, i = np.broadcast_arrays(np.asarray(temperature_k, dtype=float), np.asarray(current_a, dtype=float))
+    scalar = t.ndim == 0
+    d = _ohl.heat_terms(t.ravel().tolist(), i.ravel().tolist(), conductor, dict(weather), standard, scalar)
+    return _shaped(d, scalar, t.shape)
+
+
+def steady_temperature(current_a: Any, *, conductor: str, weather: Mapping, standard: str = "ieee738") -> Dict[str, Any]:
+    """The steady conductor temperature for a current (or an array of currents) [A].
+
+    Returns ``temperature_k`` [K] and the terms there [W/m] (``joule_w_per_m``, ``solar_w_per_m``,
+    ``convection_w_per_m``, ``radiation_w_per_m``): floats for a scalar current, arrays of its shape
+    otherwise. Raises :class:`ThermalError` where there is no steady state (thermal runaway). Arguments
+    as :func:`heat_terms`.
+    """
+    v, scalar, shape = _vector(current_a)
+    return _shaped(_ohl.steady_temperature(v, conductor, dict(weather), standard, scalar), scalar, shape)
+
+
+def ampacity(max_temperature_k: Any, *, conductor: str, weather: Mapping, standard: str = "ieee738") -> Dict[str, Any]:
+    """The steady ampacity ``current_a`` [A] for a maximum conductor temperature (or an array) [K], with
+    the terms there [W/m]. Raises :class:`ThermalError` if the sun alone heats the conductor above it.
+    Arguments as :func:`heat_terms`."""
+    v, scalar, shape = _vector(max_temperature_k)
+    return _shaped(_ohl.ampacity(v, conductor, dict(weather), standard, scalar), scalar, shape)
+
+
+def transient(
+    current_a: Any,
+    end_time_s: float,
+    *,
+    conductor: str,
+    weather: Mapping,
+    standard: str = "ieee738",
+    initial_temperature_k: Optional[float] = None,
+    step_s: float = 1.0,
+    limit_k: Optional[float] = None,
+) -> Dict[str, Any]:
+    """The conductor temperature in time for a current schedule (RK4, as ``ohl thermal``'s transient).
+
+    ``current_a`` is a list of ``(t [s], I [A])`` points, piecewise linear, a step where two points share
+    a time (``[(0, 800), (0, 1200)]``: a step from 800 to 1200 A at ``t = 0``), or one current [A]. The
+    start is ``initial_temperature_k`` [K], by default the steady state of the first point's current.
+    ``step_s`` is the longest RK4 step [s]. Returns ``t_s``, ``current_a`` and ``temperature_k`` arrays,
+    ``initial_temperature_k``, ``final_temperature_k``, and with ``limit_k`` [K] the time it is first
+    reached, ``time_to_limit_s`` [s] (None if not within ``end_time_s``).
+    """
+    if np.ndim(current_a) == 0:
+        points = [[0.0, float(current_a)]]
+    else:
+        points = np.asarray(current_a, dtype=float).reshape(-1, 2).tolist()
+    return _ohl.transient(points, float(end_time_s), conductor, dict(weather), standard, initial_temperature_k, float(step_s), limit_k)
+
+
+def deicing(
+    thickness_m: float,
+    current_a: float,
+    *,
+    conductor: str,
+    weather: Mapping,
+    standard: str = "ieee738",
+    density_kg_per_m3: float = 900.0,
+    criterion: str = "slot",
+    step_s: float = 1.0,
+    record_every_s: float = 10.0,
+) -> Dict[str, Any]:
+    """De-icing of a radial ice shell ``thickness_m`` [m] by a current ``current_a`` [A]: warming to 0 C,
+    melting, and the time to shed (``criterion`` ``"slot"`` or ``"full_melt"``).
+
+    Returns ``melting_from_s``, ``shed_time_s`` [s], ``minimum_current_a`` (the least current that melts)
+    [A], ``ice_kg_per_m``, ``shed_kg_per_m``, the energy budget ``energy_j_per_m`` [J/m], and series
+    every ``record_every_s`` [s]: ``t_s``, ``conductor_k``, ``surface_k``, ``melted_kg_per_m``,
+    ``joule_w_per_m``, ``loss_w_per_m``. Raises :class:`ThermalError` if the ice does not shed.
+    """
+    return _ohl.deicing(
+        float(thickness_m), float(current_a), conductor, dict(weather), standard, float(density_kg_per_m3), criterion, float(step_s), float(record_every_s)
+    )
+
+
+def deicing_current(
+    thickness_m: float,
+    shed_within_s: float,
+    *,
+    conductor: str,
+    weather: Mapping,
+    standard: str = "ieee738",
+    density_kg_per_m3: float = 900.0,
+    criterion: str = "slot",
+    step_s: float = 1.0,
+) -> float:
+    """The least current [A] that sheds an ice shell ``thickness_m`` [m] within ``shed_within_s`` [s]."""
+    return _ohl.deicing_current(
+        float(thickness_m), float(shed_within_s), conductor, dict(weather), standard, float(density_kg_per_m3), criterion, float(step_s)
+    )

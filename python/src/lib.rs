@@ -1,0 +1,31 @@
+//! `ohl._ohl`: the Rust half of the Python package `ohl` (PyO3). It wraps the library, not the command
+//! line: scenarios are parsed, validated and planned by `ohl::scenario`, run by `ohl::run::run_observed`
+//! with the GIL released, and the numbers come back as NumPy arrays taken from the same code that writes
+//! `timeseries.csv` and `snapshots.csv` (`ohl::output::timeseries::Columns`,
+//! `ohl::output::snapshots::node_rows`). The pure-Python half (`python/ohl/__init__.py`) holds the result
+//! class and the exceptions; `docs/python.md` documents the API.
+
+mod convert;
+mod errors;
+mod scenario;
+mod thermal;
+
+use pyo3::prelude::*;
+
+/// The Rust extension of the `ohl` package (use `import ohl`, not this module).
+#[pymodule]
+fn _ohl(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_class::<scenario::Scenario>()?;
+    m.add_function(wrap_pyfunction!(scenario::run_raw, m)?)?;
+    m.add_function(wrap_pyfunction!(scenario::equilibrium, m)?)?;
+    m.add_function(wrap_pyfunction!(thermal::conductors, m)?)?;
+    m.add_function(wrap_pyfunction!(thermal::conductor, m)?)?;
+    m.add_function(wrap_pyfunction!(thermal::heat_terms, m)?)?;
+    m.add_function(wrap_pyfunction!(thermal::steady_temperature, m)?)?;
+    m.add_function(wrap_pyfunction!(thermal::ampacity, m)?)?;
+    m.add_function(wrap_pyfunction!(thermal::transient, m)?)?;
+    m.add_function(wrap_pyfunction!(thermal::deicing, m)?)?;
+    m.add_function(wrap_pyfunction!(thermal::deicing_current, m)?)?;
+    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+    Ok(())
+}
