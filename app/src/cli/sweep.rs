@@ -15,6 +15,23 @@ use std::time::Instant;
 use ohl_app::sweep::table::Status;
 use ohl_app::sweep::{Options, Shard, Spec, Sweep, merge, run_sweep};
 
+/// A line on stdout; a closed stdout (`ohl sweep ... | head -1`) is not an error of the sweep, whose files
+/// are written: the line is dropped instead of the panic of `println!`.
+macro_rules! out {
+    ($($arg:tt)*) => {{
+        use std::io::Write as _;
+        let _ = writeln!(std::io::stdout(), $($arg)*);
+    }};
+}
+
+/// A line on stderr, dropped if stderr is closed (see `out!`).
+macro_rules! err {
+    ($($arg:tt)*) => {{
+        use std::io::Write as _;
+        let _ = writeln!(std::io::stderr(), $($arg)*);
+    }};
+}
+
 /// Arguments of `ohl sweep`.
 #[derive(clap::Args)]
 #[command(args_conflicts_with_subcommands = true, subcommand_negates_reqs = true)]
@@ -88,7 +105,7 @@ pub fn main(args: SweepArgs) -> ExitCode {
 }
 
 fn fail(message: impl std::fmt::Display, code: u8) -> ExitCode {
-    eprintln!("error: {message}");
+    err!("error: {message}");
     ExitCode::from(code)
 }
 
@@ -114,18 +131,14 @@ fn main_run(a: RunArgs) -> ExitCode {
     if !a.quiet {
         let fields: Vec<String> = sweep.spec.fields().map(|f| f.to_string()).collect();
         let plural = if threads == 1 { "" } else { "s" };
-        eprintln!(
-            "sweep: {what} varying {} on {threads} thread{plural} into {}",
-            fields.join(", "),
-            opts.out.display()
-        );
+        err!("sweep: {what} varying {} on {threads} thread{plural} into {}", fields.join(", "), opts.out.display());
     }
     let started = Instant::now();
     let quiet = a.quiet;
     let progress = move |done: usize, total: usize| {
         // One line at every tenth of the cases, for logs (a Slurm job's output) as well as terminals.
         if !quiet && total >= 20 && (done * 10 / total) > ((done - 1) * 10 / total) {
-            eprintln!("  {done}/{total} cases, {:.1} s", started.elapsed().as_secs_f64());
+            err!("  {done}/{total} cases, {:.1} s", started.elapsed().as_secs_f64());
         }
     };
     let report = match run_sweep(&sweep, &opts, &progress) {
@@ -136,14 +149,14 @@ fn main_run(a: RunArgs) -> ExitCode {
     let all_fine = report.statuses.keys().all(|s| matches!(s, Status::Completed | Status::Settled));
     let note = if all_fine { "" } else { " (see the status and reason columns)" };
     if !a.quiet {
-        println!(
+        out!(
             "sweep: {what} in {:.3} s on {threads} thread{}: {:.3} cases/s; {}{note}",
             report.wall_time_s,
             if threads == 1 { "" } else { "s" },
             report.cases_per_second,
             counts.join(", ")
         );
-        println!("  table: {}, manifest: {}", report.table.display(), report.manifest.display());
+        out!("  table: {}, manifest: {}", report.table.display(), report.manifest.display());
     }
     let failed = report.statuses.get(&Status::Failed).copied().unwrap_or(0);
     if failed > 0 {
@@ -156,13 +169,7 @@ fn main_merge(m: MergeArgs) -> ExitCode {
     match merge(&m.inputs, m.out.as_deref()) {
         Ok(r) => {
             let counts: Vec<String> = r.statuses.iter().map(|(s, n)| format!("{n} {s}")).collect();
-            println!(
-                "merged {} tables: {} cases ({}) into {}",
-                r.tables,
-                r.cases,
-                counts.join(", "),
-                r.table.display()
-            );
+            out!("merged {} tables: {} cases ({}) into {}", r.tables, r.cases, counts.join(", "), r.table.display());
             ExitCode::SUCCESS
         }
         Err(e) => fail(&e, e.exit_code()),
