@@ -7,6 +7,7 @@
 //! - [`bench`]: the kernel benchmark (measurements, machine description, CSV tables, throughput plot);
 //! - [`progress`]: the terminal progress bar of `ohl run`, an observer of the library's run loop;
 //! - [`run_plot`]: the figures of a run's output folder (`ohl plot RUN_DIR`).
+//! - [`sweep`]: parameter sweeps (`ohl sweep`): cases from a base scenario, run in parallel into one table.
 //! - [`stamp`]: the provenance line (commit, date, compiler, CPU) of the generated reports.
 //!
 //! The binary `ohl` (`src/main.rs`, `src/cli/`) is the command line over these.
@@ -18,6 +19,7 @@ pub mod plot;
 pub mod progress;
 pub mod run_plot;
 pub mod stamp;
+pub mod sweep;
 
 /// The repository the default paths (`paper_cases/`, `cases/`, `figures/`) are relative to: the current
 /// directory if it holds `paper_cases/`, else the workspace the binary was built from (so that `ohl paper

@@ -8,7 +8,9 @@
 //! - `ohl thermal CASE.toml` evaluates a conductor's heat balance (steady temperature, ampacity, transient,
 //!   de-icing);
 //! - `ohl rating SCENARIO.toml` rates a span or section by clearance or sag (steady, and after a step);
-//! - `ohl plot RUN_DIR` draws a run's time series, support forces and shapes to PNG and SVG.
+//! - `ohl plot RUN_DIR` draws a run's time series, support forces and shapes to PNG and SVG;
+//! - `ohl sweep BASE.toml --vary FIELD=VALUES` runs a parameter sweep in parallel into one table
+//!   (`ohl sweep merge` joins the tables of its shards).
 //!
 //! Exit codes: 0 success; 1 the run went unstable (or an output file could not be written), and what
 //! was written so far stays readable; 2 the scenario is invalid (the message names the file, the field,
@@ -45,6 +47,8 @@ enum Command {
     Rating(cli::rating::RatingArgs),
     /// Draw a run's time series, support forces and shapes (RUN_DIR/plots/*.png and *.svg).
     Plot(cli::plot::PlotArgs),
+    /// Run a parameter sweep of a base scenario in parallel into one table (sweep.csv); `sweep merge` joins shards.
+    Sweep(cli::sweep::SweepArgs),
 }
 
 fn main() -> ExitCode {
@@ -56,5 +60,6 @@ fn main() -> ExitCode {
         Command::Thermal(a) => cli::thermal::main(a),
         Command::Rating(a) => cli::rating::main(a),
         Command::Plot(a) => cli::plot::main(a),
+        Command::Sweep(a) => cli::sweep::main(a),
     }
 }

@@ -6,4 +6,5 @@ pub mod paper;
 pub mod plot;
 pub mod rating;
 pub mod run;
+pub mod sweep;
 pub mod thermal;

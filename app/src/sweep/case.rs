@@ -1,0 +1,117 @@
+//! One case of a sweep: the base document with the case's values set ([`super::overrides`]), written back
+//! to TOML text and read by the same parser, validation and plan as `ohl run` (so a case is exactly the
+//! scenario `OUT/cases/<id>/scenario.toml` that `--keep-runs` writes), checked against the work budget,
+//! then run on the calling thread. Whatever happens becomes the case's [`Row`]: a value that does not fit
+//! its field, an invalid scenario, a refused or unstable run are rows with their status and reason, never
+//! the end of the sweep.
+
+use std::path::Path;
+use std::time::Instant;
+
+use ohl::run::{RunError, RunOptions, run};
+use ohl::scenario;
+
+use super::Sweep;
+use super::table::{Row, Status, result_cells};
+
+/// The scenario text of case `id`, or why its values do not fit.
+pub fn scenario_text(sweep: &Sweep, id: usize) -> Result<String, String> {
+    let mut doc = sweep.base.clone();
+    for (field, value) in sweep.spec.fields().zip(sweep.spec.case(id)) {
+        if let Some(v) = value {
+            super::overrides::apply(&mut doc, field, v).map_err(|e| e.to_string())?;
+        }
+    }
+    toml::to_string(&doc).map_err(|e| format!("the scenario cannot be written as TOML: {e}"))
+}
+
+/// Run case `id`; with `keep` (`OUT/cases`), write its scenario and outputs to `keep/<id>/`.
+pub fn run_case(sweep: &Sweep, id: usize, keep: Option<&Path>) -> Row {
+    let started = Instant::now();
+    let values = sweep.spec.case(id).into_iter().map(|v| v.unwrap_or_default().to_string()).collect();
+    let mut row = Row {
+        case: id,
+        values,
+        status: Status::Invalid,
+        reason: String::new(),
+        results: None,
+        warnings: String::new(),
+        loop_timing: None,
+        case_wall_s: 0.0,
+    };
+    run_into(sweep, id, keep, &mut row);
+    row.reason = row.reason.replace('\n', "; ");
+    row.case_wall_s = started.elapsed().as_secs_f64();
+    row
+}
+
+fn run_into(sweep: &Sweep, id: usize, keep: Option<&Path>, row: &mut Row) {
+    let text = match scenario_text(sweep, id) {
+        Ok(t) => t,
+        Err(reason) => {
+            row.reason = reason;
+            return;
+        }
+    };
+    let dir = keep.map(|k| k.join(id.to_string()));
+    if let Some(d) = &dir {
+        let written = std::fs::create_dir_all(d).and_then(|_| std::fs::write(d.join("scenario.toml"), &text));
+        if let Err(e) = written {
+            (row.status, row.reason) = (Status::Failed, format!("{}: {e}", d.display()));
+            return;
+        }
+    }
+    let file = format!("case {id}");
+    let plan = match scenario::parse(&text, &file).and_then(|sc| scenario::plan(&sc, &file)) {
+        Ok(p) => p,
+        Err(e) => {
+            row.reason = input_reason(e);
+            return;
+        }
+    };
+    row.warnings = plan.warnings.iter().map(|w| w.to_string()).collect::<Vec<_>>().join("; ");
+    let estimate = plan.work_estimate();
+    let checked = if sweep.allow_large { estimate.check_resolvable() } else { estimate.check() };
+    if let Err(refusal) = checked {
+        (row.status, row.reason) = (Status::Refused, refusal.to_string());
+        return;
+    }
+    let opts = RunOptions { out_dir: dir, record: false };
+    let summary = match run(plan, &opts) {
+        Ok(o) => o.summary,
+        Err(RunError::Unstable { instability, outcome }) => {
+            row.reason = instability.to_string();
+            outcome.summary
+        }
+        Err(e @ RunError::Io(_)) => {
+            (row.status, row.reason) = (Status::Failed, e.to_string());
+            return;
+        }
+    };
+    row.status = Status::of_summary(&summary.status);
+    if row.status == Status::NotSettled {
+        row.reason = "reached duration.until_settled.max_time_s before the wire settled".into();
+    }
+    row.results = Some(result_cells(&summary));
+    row.loop_timing = Some((summary.wall_time_s, summary.node_steps_per_second));
+}
+
+/// The message of a scenario that cannot be used, without the file name (the row names the case): every
+/// problem, `; `-separated.
+fn input_reason(e: scenario::InputError) -> String {
+    match e {
+        scenario::InputError::Invalid { problems, .. } => {
+            problems.iter().map(|p| p.to_string()).collect::<Vec<_>>().join("; ")
+        }
+        // The parser's message without its source excerpt (`12 | key = value`, `  |   ^`); its line numbers
+        // are those of the case's scenario text (`--keep-runs` writes it).
+        scenario::InputError::Parse { message, .. } => {
+            let excerpt = |l: &str| {
+                let t = l.trim_start_matches(|c: char| c.is_ascii_digit() || c == ' ');
+                t.starts_with('|') || l.trim().is_empty()
+            };
+            message.lines().filter(|l| !excerpt(l)).map(str::trim).collect::<Vec<_>>().join(": ")
+        }
+        other => other.to_string(),
+    }
+}

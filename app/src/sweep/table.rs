@@ -1,0 +1,231 @@
+//! The table of a sweep, `sweep.csv`: one row per case.
+//!
+//! Columns: `case` (the id, from 0), one column per varied field named by its path (the value as written;
+//! empty where a cases file left the base value), `status`, `reason`, then the scalar results of the run's
+//! summary ([`RESULT_COLUMNS`], units in the names), `warnings`, and last the timings ([`TIMING_COLUMNS`],
+//! which differ from run to run; every other column is the same for the same case on any thread count,
+//! shard or machine with the same build). Numbers are written in the shortest form that reads back to the
+//! same `f64` (ryu), so a table's values are bitwise those of the runs. A cell is empty where the run has
+//! no such value (a case that did not run, `settled_since_s` of a run that did not settle,
+//! `peak_temperature_k` without a `[thermal]` table).
+
+use std::io::Write;
+use std::path::Path;
+
+use ohl::output::Summary;
+
+/// Status of a case.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum Status {
+    /// ran to its end time
+    Completed,
+    /// ran until the wire settled
+    Settled,
+    /// reached `max_time_s` without settling (the results are those at that time)
+    NotSettled,
+    /// the scheme went unstable (the results are those up to the failure)
+    Unstable,
+    /// the overridden scenario is not valid (parse or validation message in `reason`); not run
+    Invalid,
+    /// above the work budget (`--allow-large` runs it); not run
+    Refused,
+    /// an output file of `--keep-runs` could not be written, or an internal error
+    Failed,
+}
+
+impl Status {
+    /// The word in the table.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Status::Completed => "completed",
+            Status::Settled => "settled",
+            Status::NotSettled => "not_settled",
+            Status::Unstable => "unstable",
+            Status::Invalid => "invalid",
+            Status::Refused => "refused",
+            Status::Failed => "failed",
+        }
+    }
+
+    /// The status of a summary's `status` word.
+    pub fn of_summary(word: &str) -> Status {
+        match word {
+            "settled" => Status::Settled,
+            "not_settled" => Status::NotSettled,
+            "unstable" => Status::Unstable,
+            _ => Status::Completed,
+        }
+    }
+}
+
+/// The result columns, in order: the summary's scalar values ([`result_cells`]).
+pub const RESULT_COLUMNS: [&str; 23] = [
+    "final_time_s",
+    "steps",
+    "dt_s",
+    "segments",
+    "peaks_from_s",
+    "peak_max_tension_n",
+    "peak_max_tension_time_s",
+    "peak_mid_dx1_m",
+    "peak_mid_dx1_time_s",
+    "peak_mid_dx2_m",
+    "peak_mid_dx2_time_s",
+    "peak_mid_dx3_m",
+    "peak_mid_dx3_time_s",
+    "final_mid_dx1_m",
+    "final_mid_dx2_m",
+    "final_mid_dx3_m",
+    "final_max_tension_n",
+    "final_kinetic_j",
+    "settled_since_s",
+    "peak_support_force_n",
+    "peak_support_force_time_s",
+    "peak_support_force_support",
+    "peak_temperature_k",
+];
+
+/// The timing columns, last: time loop [s], its throughput [node-steps/s], and the whole case with its
+/// parse, validation, static solve and outputs [s].
+pub const TIMING_COLUMNS: [&str; 3] = ["wall_time_s", "node_steps_per_s", "case_wall_s"];
+
+/// One case's row.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Row {
+    /// the case id
+    pub case: usize,
+    /// each varied field's value as written (empty: the base file's)
+    pub values: Vec<String>,
+    /// how the case ended
+    pub status: Status,
+    /// why it did not complete (empty when it did)
+    pub reason: String,
+    /// the summary's values, one per [`RESULT_COLUMNS`] entry (none when the case did not run)
+    pub results: Option<Vec<String>>,
+    /// the plan's warnings (valid but doubtful values), `; `-separated
+    pub warnings: String,
+    /// time loop [s] and node-steps per second, from the summary
+    pub loop_timing: Option<(f64, f64)>,
+    /// the whole case [s]
+    pub case_wall_s: f64,
+}
+
+/// A number as the table writes it: shortest round-trip form.
+pub fn number(x: f64) -> String {
+    ryu::Buffer::new().format(x).to_string()
+}
+
+/// The values of [`RESULT_COLUMNS`] from a run's summary.
+pub fn result_cells(s: &Summary) -> Vec<String> {
+    let n = number;
+    let opt = |x: Option<f64>| x.map(number).unwrap_or_default();
+    let p = &s.peak_midspan_displacement_m;
+    let d = &s.final_midspan_displacement_m;
+    // The support with the largest peak force magnitude (the first of equal ones).
+    let support = s.supports.iter().enumerate().fold(None, |best: Option<(usize, f64, f64)>, (k, sp)| {
+        let m = &sp.peaks.magnitude;
+        match best {
+            Some((_, v, _)) if m.value_n.partial_cmp(&v) != Some(std::cmp::Ordering::Greater) => best,
+            _ => Some((k, m.value_n, m.time_s)),
+        }
+    });
+    let cells = vec![
+        n(s.final_time_s),
+        s.steps.to_string(),
+        n(s.dt_s),
+        s.segments.to_string(),
+        n(s.peaks_from_s),
+        n(s.peak_max_tension_n),
+        n(s.peak_max_tension_time_s),
+        n(p[0].value_m),
+        n(p[0].time_s),
+        n(p[1].value_m),
+        n(p[1].time_s),
+        n(p[2].value_m),
+        n(p[2].time_s),
+        n(d[0]),
+        n(d[1]),
+        n(d[2]),
+        n(s.final_max_tension_n),
+        n(s.final_kinetic_j),
+        opt(s.settled_since_s),
+        opt(support.map(|b| b.1)),
+        opt(support.map(|b| b.2)),
+        support.map(|b| b.0.to_string()).unwrap_or_default(),
+        opt(s.thermal.as_ref().map(|t| t.peak_temperature_k)),
+    ];
+    debug_assert_eq!(cells.len(), RESULT_COLUMNS.len());
+    cells
+}
+
+/// The header of a table varying `fields`.
+pub fn header(fields: &[String]) -> Vec<String> {
+    let mut h = vec!["case".to_string()];
+    h.extend(fields.iter().cloned());
+    h.extend(["status", "reason"].map(String::from));
+    h.extend(RESULT_COLUMNS.map(String::from));
+    h.push("warnings".into());
+    h.extend(TIMING_COLUMNS.map(String::from));
+    h
+}
+
+/// The cells of a row, in [`header`] order.
+pub fn cells(row: &Row) -> Vec<String> {
+    let mut c = vec![row.case.to_string()];
+    c.extend(row.values.iter().cloned());
+    c.push(row.status.as_str().into());
+    c.push(row.reason.clone());
+    match &row.results {
+        Some(r) => c.extend(r.iter().cloned()),
+        None => c.extend(RESULT_COLUMNS.map(|_| String::new())),
+    }
+    c.push(row.warnings.clone());
+    match row.loop_timing {
+        Some((wall, rate)) => c.extend([number(wall), number(rate)]),
+        None => c.extend([String::new(), String::new()]),
+    }
+    c.push(number(row.case_wall_s));
+    c
+}
+
+/// Write a table with `header` and `records` to `path`, whole or not at all (a temporary file renamed).
+pub fn write<I, R>(path: &Path, header: &[String], records: I) -> std::io::Result<()>
+where
+    I: IntoIterator<Item = R>,
+    R: IntoIterator<Item = String>,
+{
+    let mut w = csv::Writer::from_writer(Vec::new());
+    w.write_record(header)?;
+    for r in records {
+        w.write_record(r)?;
+    }
+    let bytes = w.into_inner().map_err(|e| e.into_error())?;
+    write_atomically(path, &bytes)
+}
+
+/// Write `bytes` to `path` through a temporary file in the same directory, renamed into place.
+pub fn write_atomically(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
+    let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+    let tmp = path.with_file_name(format!(".{name}.{}.tmp", std::process::id()));
+    let mut f = std::fs::File::create(&tmp)?;
+    f.write_all(bytes)?;
+    f.sync_all()?;
+    drop(f);
+    std::fs::rename(&tmp, path)
+}
+
+/// A table as read back: its header and its records (as text, unchanged).
+pub struct Table {
+    /// the header
+    pub header: Vec<String>,
+    /// the records
+    pub records: Vec<Vec<String>>,
+}
+
+/// Read a table written by [`write`](fn@write).
+pub fn read(path: &Path) -> Result<Table, csv::Error> {
+    let mut r = csv::ReaderBuilder::new().flexible(false).from_path(path)?;
+    let header = r.headers()?.iter().map(String::from).collect();
+    let records = r.records().map(|rec| rec.map(|r| r.iter().map(String::from).collect())).collect::<Result<_, _>>()?;
+    Ok(Table { header, records })
+}
