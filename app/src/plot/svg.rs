@@ -55,6 +55,15 @@ fn escape(s: &str) -> String {
     s.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;").replace('"', "&quot;")
 }
 
+/// The paint of a filled shape, or of its outline.
+fn fill_or_stroke<S: BackendStyle>(style: &S, fill: bool) -> String {
+    if fill {
+        paint("fill", style.color())
+    } else {
+        format!("fill=\"none\" {} stroke-width=\"{}\"", paint("stroke", style.color()), style.stroke_width())
+    }
+}
+
 /// `#rrggbb` plus an opacity attribute when not opaque.
 fn paint(attr: &str, c: BackendColor) -> String {
     let (r, g, b) = c.rgb;
@@ -122,11 +131,7 @@ impl DrawingBackend for GlyphSvg {
         fill: bool,
     ) -> Result<(), DrawingErrorKind<Self::ErrorType>> {
         if style.color().alpha > 0.0 {
-            let paint = if fill {
-                paint("fill", style.color())
-            } else {
-                format!("fill=\"none\" {} stroke-width=\"{}\"", paint("stroke", style.color()), style.stroke_width())
-            };
+            let paint = fill_or_stroke(style, fill);
             let _ = writeln!(
                 self.body,
                 "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" {paint}/>",
@@ -173,11 +178,7 @@ impl DrawingBackend for GlyphSvg {
         fill: bool,
     ) -> Result<(), DrawingErrorKind<Self::ErrorType>> {
         if style.color().alpha > 0.0 {
-            let paint = if fill {
-                paint("fill", style.color())
-            } else {
-                format!("fill=\"none\" {} stroke-width=\"{}\"", paint("stroke", style.color()), style.stroke_width())
-            };
+            let paint = fill_or_stroke(style, fill);
             let _ = writeln!(self.body, "<circle cx=\"{}\" cy=\"{}\" r=\"{r}\" {paint}/>", c.0, c.1);
         }
         Ok(())
