@@ -49,6 +49,19 @@ pub enum Style {
     LineMarkers,
 }
 
+impl Style {
+    /// Drawing class: 0 solid lines, 1 dashed and dotted lines, 2 markers. Classes are drawn in this
+    /// order; within a class a later series can hide an earlier one, and a colour may be shared only across
+    /// classes (a computed solid line and its dashed reference).
+    fn class(self) -> usize {
+        match self {
+            Style::Line | Style::LineMarkers => 0,
+            Style::Dashed | Style::Dotted => 1,
+            Style::Markers => 2,
+        }
+    }
+}
+
 /// One curve.
 #[derive(Clone, Debug)]
 pub struct Series {
@@ -187,6 +200,7 @@ pub fn render_titled(
     let heading = heading_lines(title, f64::from(width));
     let heading_h = heading_height(&heading);
     let size = (width, panel_size.1 * rows as u32 + heading_h);
+    let planned: Vec<Panel> = panels.iter().map(Panel::new).collect();
     let png = stem.with_extension("png");
     let svg = stem.with_extension("svg");
     let err = |p: &Path| {
@@ -199,17 +213,35 @@ pub fn render_titled(
         let mut buffer = vec![0u8; big.0 as usize * big.1 as usize * 3];
         {
             let root = raster::GlyphBitmap::new(&mut buffer, big).into_drawing_area();
-            draw_all(&root, panels, rows, cols, &heading, f64::from(k)).map_err(err(&png))?;
+            draw_all(&root, &planned, rows, cols, &heading, f64::from(k)).map_err(err(&png))?;
             root.present().map_err(|e| e.to_string()).map_err(err(&png))?;
         }
         raster::downsample_to_png(&buffer, size, &png).map_err(err(&png))?;
     }
     {
         let root = svg::GlyphSvg::new(&svg, size).into_drawing_area();
-        draw_all(&root, panels, rows, cols, &heading, 1.0).map_err(err(&svg))?;
+        draw_all(&root, &planned, rows, cols, &heading, 1.0).map_err(err(&svg))?;
         root.present().map_err(|e| e.to_string()).map_err(err(&svg))?;
     }
     Ok(())
+}
+
+/// A panel ready to draw on either backend: its chart, axis ranges and prepared series, computed once.
+struct Panel<'a> {
+    chart: &'a Chart,
+    xr: (f64, f64),
+    yr: (f64, f64),
+    prepared: Vec<Prepared<'a>>,
+}
+
+impl<'a> Panel<'a> {
+    fn new(chart: &'a Chart) -> Self {
+        let xs = chart.series.iter().flat_map(|s| s.points.iter().map(|p| p.0));
+        let ys = chart.series.iter().flat_map(|s| s.points.iter().map(|p| p.1));
+        let xr = chart.x_range.unwrap_or_else(|| data_range(xs, chart.log_x));
+        let yr = chart.y_range.unwrap_or_else(|| data_range(ys, chart.log_y));
+        Panel { chart, xr, yr, prepared: prepare(chart, xr, yr) }
+    }
 }
 
 /// A series ready to draw: its effective colour, stroke width [px at scale 1] and drawing rank.
@@ -224,17 +256,12 @@ struct Prepared<'a> {
 fn prepare<'a>(chart: &'a Chart, xr: (f64, f64), yr: (f64, f64)) -> Vec<Prepared<'a>> {
     // A colour may be shared only by series drawn differently (a computed solid line and its dashed
     // reference): the key is (colour, drawing class).
-    let key_class = |s: &Series| match s.style {
-        Style::Line | Style::LineMarkers => 0,
-        Style::Dashed | Style::Dotted => 1,
-        Style::Markers => 2,
-    };
     let mut used = [[false; PALETTE.len()]; 3];
     let mut colors = Vec::with_capacity(chart.series.len());
     for s in &chart.series {
         let mut c = s.color % PALETTE.len();
         if !s.label.is_empty() {
-            let u = &mut used[key_class(s)];
+            let u = &mut used[s.style.class()];
             if u[c] {
                 c = (0..PALETTE.len()).map(|i| (c + i) % PALETTE.len()).find(|&i| !u[i]).unwrap_or(c);
             }
@@ -242,13 +269,8 @@ fn prepare<'a>(chart: &'a Chart, xr: (f64, f64), yr: (f64, f64)) -> Vec<Prepared
         }
         colors.push(c);
     }
-    // Lines are drawn in two classes (solid, then dashed and dotted); within a class a later line can hide
-    // an earlier one.
-    let class = |s: &Series| match s.style {
-        Style::Line | Style::LineMarkers => Some(0),
-        Style::Dashed | Style::Dotted => Some(1),
-        Style::Markers => None,
-    };
+    // Lines only: markers are drawn over everything.
+    let class = |s: &Series| Some(s.style.class()).filter(|&c| c < 2);
     let unit = |p: (f64, f64)| {
         let u = |v: f64, (lo, hi): (f64, f64), log: bool| {
             if log { (v.ln() - lo.ln()) / (hi.ln() - lo.ln()) } else { (v - lo) / (hi - lo) }
@@ -399,7 +421,7 @@ fn heading_height(h: &Heading) -> u32 {
 
 fn draw_all<DB: DrawingBackend>(
     root: &DrawingArea<DB, Shift>,
-    panels: &[Chart],
+    panels: &[Panel],
     rows: usize,
     cols: usize,
     heading: &Heading,
@@ -421,23 +443,15 @@ fn draw_all<DB: DrawingBackend>(
         body
     };
     let areas = body.split_evenly((rows, cols));
-    for (chart, area) in panels.iter().zip(areas.iter()) {
-        let xs = chart.series.iter().flat_map(|s| s.points.iter().map(|p| p.0));
-        let ys = chart.series.iter().flat_map(|s| s.points.iter().map(|p| p.1));
-        let xr = chart.x_range.unwrap_or_else(|| data_range(xs, chart.log_x));
-        let yr = chart.y_range.unwrap_or_else(|| data_range(ys, chart.log_y));
-        draw_panel(area, chart, xr, yr, s)?;
+    for (panel, area) in panels.iter().zip(areas.iter()) {
+        draw_panel(area, panel, s)?;
     }
     Ok(())
 }
 
-fn draw_panel<DB: DrawingBackend>(
-    area: &DrawingArea<DB, Shift>,
-    chart: &Chart,
-    xr: (f64, f64),
-    yr: (f64, f64),
-    s: f64,
-) -> Result<(), String> {
+fn draw_panel<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, panel: &Panel, s: f64) -> Result<(), String> {
+    let Panel { chart, xr, yr, prepared } = panel;
+    let (chart, xr, yr) = (*chart, *xr, *yr);
     let (w, h) = area.dim_in_pixel();
     let (plot_area, legend_area) = match legend_place(chart, f64::from(w), s) {
         LegendPlace::None => (area.clone(), None),
@@ -465,54 +479,21 @@ fn draw_panel<DB: DrawingBackend>(
         axis_ticks(xr, chart.log_x, plot_w, Along::X, chart.series.iter().flat_map(|s| s.points.iter().map(|p| p.0)));
     let geometry = Geometry { title: title_h, x_area, y_area, top, plot_w };
     match (chart.log_x, chart.log_y) {
-        (false, false) => draw_chart(
-            &plot_area,
-            chart,
-            lin(xr, &x_ticks),
-            lin(yr, &y_ticks),
-            (&x_ticks, &y_ticks),
-            &geometry,
-            xr,
-            yr,
-            s,
-        ),
-        (true, false) => draw_chart(
-            &plot_area,
-            chart,
-            logc(xr, &x_ticks),
-            lin(yr, &y_ticks),
-            (&x_ticks, &y_ticks),
-            &geometry,
-            xr,
-            yr,
-            s,
-        ),
-        (false, true) => draw_chart(
-            &plot_area,
-            chart,
-            lin(xr, &x_ticks),
-            logc(yr, &y_ticks),
-            (&x_ticks, &y_ticks),
-            &geometry,
-            xr,
-            yr,
-            s,
-        ),
-        (true, true) => draw_chart(
-            &plot_area,
-            chart,
-            logc(xr, &x_ticks),
-            logc(yr, &y_ticks),
-            (&x_ticks, &y_ticks),
-            &geometry,
-            xr,
-            yr,
-            s,
-        ),
+        (false, false) => {
+            draw_chart(&plot_area, panel, lin(xr, &x_ticks), lin(yr, &y_ticks), (&x_ticks, &y_ticks), &geometry, s)
+        }
+        (true, false) => {
+            draw_chart(&plot_area, panel, logc(xr, &x_ticks), lin(yr, &y_ticks), (&x_ticks, &y_ticks), &geometry, s)
+        }
+        (false, true) => {
+            draw_chart(&plot_area, panel, lin(xr, &x_ticks), logc(yr, &y_ticks), (&x_ticks, &y_ticks), &geometry, s)
+        }
+        (true, true) => {
+            draw_chart(&plot_area, panel, logc(xr, &x_ticks), logc(yr, &y_ticks), (&x_ticks, &y_ticks), &geometry, s)
+        }
     }?;
     if let Some((legend_area, below)) = legend_area {
-        let prepared = prepare(chart, xr, yr);
-        draw_legend(&legend_area, &prepared, below, title_h, s)?;
+        draw_legend(&legend_area, prepared, below, title_h, s)?;
     }
     Ok(())
 }
@@ -576,16 +557,13 @@ fn label_of(t: &Ticks, v: f64) -> String {
         .unwrap_or_default()
 }
 
-#[allow(clippy::too_many_arguments)]
 fn draw_chart<DB, X, Y>(
     area: &DrawingArea<DB, Shift>,
-    chart: &Chart,
+    panel: &Panel,
     x: X,
     y: Y,
     (xt, yt): (&Ticks, &Ticks),
     g: &Geometry,
-    xr: (f64, f64),
-    yr: (f64, f64),
     s: f64,
 ) -> Result<(), String>
 where
@@ -593,6 +571,7 @@ where
     X: Ranged<ValueType = f64, FormatOption = plotters::coord::ranged1d::DefaultFormatting>,
     Y: Ranged<ValueType = f64, FormatOption = plotters::coord::ranged1d::DefaultFormatting>,
 {
+    let (chart, xr, yr) = (panel.chart, panel.xr, panel.yr);
     let e = |e: DrawingAreaErrorKind<DB::ErrorType>| e.to_string();
     let px = |v: f64| (v * s).round() as i32;
     let font = |v: f64| ("sans-serif", v * s);
@@ -648,15 +627,13 @@ where
         let desc_y = y_top - px(10.0 + 1.1 * size::TICK);
         area.draw(&Text::new(top.label.clone(), ((left + right) / 2, desc_y), desc_style)).map_err(e)?;
     }
-    draw_series(&mut cc, chart, xr, yr, g, s)
+    draw_series(&mut cc, panel, g, s)
 }
 
 /// Draws the series: solid lines first, dashed and dotted references over them, markers last.
 fn draw_series<DB, X, Y>(
     cc: &mut ChartContext<DB, Cartesian2d<X, Y>>,
-    chart: &Chart,
-    xr: (f64, f64),
-    yr: (f64, f64),
+    panel: &Panel,
     g: &Geometry,
     s: f64,
 ) -> Result<(), String>
@@ -667,15 +644,10 @@ where
 {
     let e = |e: DrawingAreaErrorKind<DB::ErrorType>| e.to_string();
     let px = |v: f64| (v * s).round() as i32;
-    let prepared = prepare(chart, xr, yr);
+    let (chart, xr) = (panel.chart, panel.xr);
     let columns = g.plot_w * s;
-    let rank = |p: &Prepared| match p.series.style {
-        Style::Line | Style::LineMarkers => 0,
-        Style::Dashed | Style::Dotted => 1,
-        Style::Markers => 2,
-    };
-    let mut order: Vec<&Prepared> = prepared.iter().collect();
-    order.sort_by_key(|p| rank(p));
+    let mut order: Vec<&Prepared> = panel.prepared.iter().collect();
+    order.sort_by_key(|p| p.series.style.class());
     for p in order {
         let c = p.color;
         let stroke = c.stroke_width(px(p.width).max(1) as u32);

@@ -54,18 +54,7 @@ pub(super) fn layout<S: BackendTextStyle>(text: &str, style: &S) -> Line {
     let size = style.size() as f32;
     let font = FONT.as_scaled(PxScale::from(size));
     let mut glyphs = Vec::with_capacity(text.len());
-    let mut pen = 0.0f32;
-    let mut prev: Option<GlyphId> = None;
-    for c in text.chars() {
-        let id = font.glyph_id(c);
-        if let Some(p) = prev {
-            pen += font.kern(p, id);
-        }
-        glyphs.push(Placed { id, x: pen, y: 0.0 });
-        pen += font.h_advance(id);
-        prev = Some(id);
-    }
-    let width = pen;
+    let width = pen_positions(text, size, |id, x| glyphs.push(Placed { id, x, y: 0.0 }));
     let height = size / 1.24;
     let dx = match style.anchor().h_pos {
         HPos::Left => 0.0,
@@ -164,8 +153,9 @@ pub(super) fn units_to_px(scale: f32) -> f32 {
     FONT.as_scaled(PxScale::from(scale)).h_scale_factor()
 }
 
-/// Width of `s` at pixel size `size` [px] (advances and kerning).
-pub(super) fn width(s: &str, size: f32) -> f32 {
+/// Calls `each(glyph, pen position [px])` for the glyphs of `s` at pixel size `size` (advances and
+/// kerning) and returns the width [px].
+fn pen_positions(s: &str, size: f32, mut each: impl FnMut(GlyphId, f32)) -> f32 {
     let font = FONT.as_scaled(PxScale::from(size));
     let mut pen = 0.0;
     let mut prev: Option<GlyphId> = None;
@@ -174,8 +164,14 @@ pub(super) fn width(s: &str, size: f32) -> f32 {
         if let Some(p) = prev {
             pen += font.kern(p, id);
         }
+        each(id, pen);
         pen += font.h_advance(id);
         prev = Some(id);
     }
     pen
+}
+
+/// Width of `s` at pixel size `size` [px] (advances and kerning).
+pub(super) fn width(s: &str, size: f32) -> f32 {
+    pen_positions(s, size, |_, _| {})
 }
