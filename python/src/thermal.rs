@@ -164,6 +164,34 @@ fn terms_dict<'py>(py: Python<'py>, terms: &[ohl::thermal::HeatTerms]) -> PyResu
     Ok(d)
 }
 
+/// The steady solutions of `solve` for each of `inputs` (the case field `input`), as a dict of the heat
+/// terms, `input` and `output`: `solve` gives a solution and the (temperature [K], current [A]) it holds at.
+#[allow(clippy::too_many_arguments)]
+fn steady_solutions<'py, E: std::fmt::Display + Send>(
+    py: Python<'py>,
+    inputs: Vec<f64>,
+    input: &str,
+    output: &str,
+    conductor: &str,
+    weather: &Bound<'py, PyDict>,
+    standard: &str,
+    scalar: bool,
+    solve: impl Fn(&Model, f64) -> Result<(f64, (f64, f64)), E> + Send + Sync,
+) -> PyResult<Bound<'py, PyDict>> {
+    let mut f = toml::Table::new();
+    f.insert(input.into(), floats(&inputs));
+    let c = case(py, conductor, weather, standard, f, |field| scalar_field(field, input, scalar))?;
+    let m = model(py, &c)?;
+    let solved: Result<Vec<_>, E> =
+        py.detach(|| inputs.iter().map(|&x| solve(&m, x).map(|(y, (t, i))| (y, m.terms(t, i)))).collect());
+    let solved = solved.map_err(|e| failed(py, e))?;
+    let terms: Vec<_> = solved.iter().map(|s| s.1).collect();
+    let d = terms_dict(py, &terms)?;
+    d.set_item(input, array1(py, inputs))?;
+    d.set_item(output, array1(py, solved.iter().map(|s| s.0).collect()))?;
+    Ok(d)
+}
+
 /// The steady conductor temperature [K] for each current [A], with the terms there (as `ohl thermal`).
 #[pyfunction]
 #[pyo3(signature = (current_a, conductor, weather, standard = "ieee738", scalar = false))]
@@ -175,22 +203,9 @@ pub fn steady_temperature<'py>(
     standard: &str,
     scalar: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let mut f = toml::Table::new();
-    f.insert("current_a".into(), floats(&current_a));
-    let c = case(py, conductor, weather, standard, f, |field| scalar_field(field, "current_a", scalar))?;
-    let m = model(py, &c)?;
-    let solved: Result<Vec<_>, _> = py.detach(|| {
-        current_a
-            .iter()
-            .map(|&i| steady::temperature(&m, i).map(|s| (s.temperature_k, m.terms(s.temperature_k, i))))
-            .collect()
-    });
-    let solved = solved.map_err(|e| failed(py, e))?;
-    let terms: Vec<_> = solved.iter().map(|s| s.1).collect();
-    let d = terms_dict(py, &terms)?;
-    d.set_item("current_a", array1(py, current_a))?;
-    d.set_item("temperature_k", array1(py, solved.iter().map(|s| s.0).collect()))?;
-    Ok(d)
+    steady_solutions(py, current_a, "current_a", "temperature_k", conductor, weather, standard, scalar, |m, i| {
+        steady::temperature(m, i).map(|s| (s.temperature_k, (s.temperature_k, i)))
+    })
 }
 
 /// The steady ampacity [A] for each maximum conductor temperature [K], with the terms there.
@@ -204,22 +219,17 @@ pub fn ampacity<'py>(
     standard: &str,
     scalar: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let mut f = toml::Table::new();
-    f.insert("max_temperature_k".into(), floats(&max_temperature_k));
-    let c = case(py, conductor, weather, standard, f, |field| scalar_field(field, "max_temperature_k", scalar))?;
-    let m = model(py, &c)?;
-    let solved: Result<Vec<_>, _> = py.detach(|| {
-        max_temperature_k
-            .iter()
-            .map(|&t| steady::ampacity(&m, t).map(|a| (a.current_a, m.terms(t, a.current_a))))
-            .collect()
-    });
-    let solved = solved.map_err(|e| failed(py, e))?;
-    let terms: Vec<_> = solved.iter().map(|s| s.1).collect();
-    let d = terms_dict(py, &terms)?;
-    d.set_item("max_temperature_k", array1(py, max_temperature_k))?;
-    d.set_item("current_a", array1(py, solved.iter().map(|s| s.0).collect()))?;
-    Ok(d)
+    steady_solutions(
+        py,
+        max_temperature_k,
+        "max_temperature_k",
+        "current_a",
+        conductor,
+        weather,
+        standard,
+        scalar,
+        |m, t| steady::ampacity(m, t).map(|a| (a.current_a, (t, a.current_a))),
+    )
 }
 
 /// The conductor temperature after a current schedule (RK4, as `ohl thermal`'s `[transient]`).
