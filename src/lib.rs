@@ -7,6 +7,8 @@
 //! Layers, one folder each (`docs/architecture.md` explains the design):
 //! - [`wire`]: the physics of the line: nodes with constraints, segments with their own material,
 //!   constitutive law, distributed loads;
+//! - [`line`]: a line of several conductors (phases, earth wires, bundles) on shared supports, joined by
+//!   attachments named by handle; [`element`]: the force elements written once over `f64` and dual numbers;
 //! - [`heat`]: heat conduction along the wire (5.1)-(5.4) and thermal expansion (5.5)-(5.6);
 //! - [`scheme`]: the numerical schemes (explicit leapfrog, smoothing, Courant step);
 //! - [`statics`]: the static equilibrium of the same discrete equations (Newton, faer);
@@ -19,9 +21,11 @@
 //! The library holds the model only: the command line `ohl`, the paper cases, the plots, the benchmark
 //! and the progress bar are the applications of the `ohl-app` crate (`app/`).
 
+pub mod element;
 pub mod events;
 pub mod exact;
 pub mod heat;
+pub mod line;
 pub mod output;
 pub mod run;
 pub mod scenario;

@@ -214,6 +214,12 @@ pub struct Explicit {
     /// force of each suspension insulator string on its clamp node `(node, F)` [N], in the order of
     /// `Wire::insulators`, from the last segment pass
     point_force: Vec<(usize, [f64; 3])>,
+    /// point forces `(node, F)` [N] from outside the conductor (the links of a multi-conductor line:
+    /// spacers, strings to shared supports, [`crate::line`]), applied in the node pass like the strings'
+    /// forces, held until changed ([`Explicit::set_point_forces`]); empty for a single conductor
+    external_force: Vec<(usize, [f64; 3])>,
+    /// scratch for the strings' and the external point forces together (no allocation once grown)
+    point_scratch: Vec<(usize, [f64; 3])>,
     /// the supports' nodes at construction (fixed nodes and strings' clamps, in node order): the list
     /// [`Explicit::support_forces`] reports, fixed for the run (a released dead-end reports zero)
     supports: Vec<usize>,
@@ -242,6 +248,8 @@ impl Explicit {
             fs: z(),
             es: z(),
             point_force: Vec::new(),
+            external_force: Vec::new(),
+            point_scratch: Vec::new(),
             supports,
             avx2: avx2_available(),
         }
@@ -272,7 +280,15 @@ impl Explicit {
         let none = [const { Vec::new() }; 3];
         let f = extra.as_ref().unwrap_or(&none);
         let points = std::mem::take(&mut self.point_force);
-        let p = &points[..];
+        let mut all = std::mem::take(&mut self.point_scratch);
+        let p = if self.external_force.is_empty() {
+            &points[..]
+        } else {
+            all.clear();
+            all.extend_from_slice(&points);
+            all.extend_from_slice(&self.external_force);
+            &all[..]
+        };
         let ok = match (extra.is_some(), damp, smooth) {
             (false, false, false) => self.node_pass::<false, false, false>(kick, dt, f, p),
             (false, true, false) => self.node_pass::<false, true, false>(kick, dt, f, p),
@@ -287,6 +303,7 @@ impl Explicit {
             self.advance_crossarms(&points, kick, dt);
         }
         self.point_force = points;
+        self.point_scratch = all;
         self.nodal_force = extra;
         // Locate a failure before ground contact, which may change the offending velocity.
         let failure = if ok { None } else { Some(self.locate_instability()) };
@@ -374,6 +391,31 @@ impl Explicit {
     pub fn set_nodal_force(&mut self, f: Option<[Vec<f64>; 3]>) {
         self.fresh = false;
         self.nodal_force = f;
+    }
+
+    /// Point forces `(node, F)` [N] acting on the conductor from outside it (the links of a multi-conductor
+    /// line, [`crate::line`]), added to the node's force from now on (copied; no allocation once the list
+    /// has grown to its size). They enter the node pass as the strings' forces do (after the node loop,
+    /// so the loop over all nodes is untouched and a conductor without them steps bitwise as before), the
+    /// support forces of fixed nodes, and the diagnostics. The segment pass does not depend on them, so
+    /// forces evaluated at this level stay valid.
+    pub fn set_point_forces(&mut self, forces: &[(usize, [f64; 3])]) {
+        debug_assert!(forces.iter().all(|&(i, _)| i < self.wire.nodes()));
+        self.external_force.clear();
+        self.external_force.extend_from_slice(forces);
+    }
+
+    /// The external point forces `(node, F)` [N] in force ([`Explicit::set_point_forces`]).
+    pub fn point_forces(&self) -> &[(usize, [f64; 3])] {
+        &self.external_force
+    }
+
+    /// Evaluate the segment pass unless the forces of this level are already evaluated
+    /// ([`Explicit::evaluate_forces`] without repeating work).
+    pub fn ensure_forces(&mut self) {
+        if !self.fresh {
+            self.evaluate_forces();
+        }
     }
 
     /// Evaluate the segment pass (tension and distributed loads) of the current state, so that what is
@@ -840,7 +882,7 @@ impl Explicit {
         if let Some(x) = &self.nodal_force {
             f += x[k][i];
         }
-        for &(node, p) in &self.point_force {
+        for &(node, p) in self.point_force.iter().chain(&self.external_force) {
             if node == i {
                 f += p[k];
             }

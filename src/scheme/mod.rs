@@ -5,7 +5,9 @@ pub mod configs;
 pub mod contact;
 pub mod courant;
 pub mod explicit;
+pub mod line;
 pub mod smoothing;
 
 pub use contact::Ground;
+pub use line::{LineError, LineExplicit, LineInstability};
 pub use explicit::{Diagnostics, Explicit, Instability, InstabilityReason, Loads, StepParams, WindGate, WindLoad};

@@ -1,0 +1,70 @@
+//! The number type of a force element: `f64` for the explicit kernel and the diagnostics, forward-mode
+//! dual numbers ([`crate::statics::dual::Dual`]) for the exact Jacobian of the static solver. A force
+//! element written once over [`Scalar`] serves all three, so they cannot drift apart.
+
+use crate::statics::dual::Dual;
+use std::ops::{Add, Div, Mul, Neg, Sub};
+
+/// A real number with the operations the force elements need.
+pub trait Scalar:
+    Copy + Add<Output = Self> + Sub<Output = Self> + Mul<Output = Self> + Div<Output = Self> + Neg<Output = Self>
+{
+    /// a constant (no derivative)
+    fn c(v: f64) -> Self;
+    /// the value
+    fn value(self) -> f64;
+    /// square root
+    fn sqrt(self) -> Self;
+    /// `max(self, 0)` (derivative 0 where the value is not positive)
+    fn positive_part(self) -> Self;
+}
+
+impl Scalar for f64 {
+    #[inline(always)]
+    fn c(v: f64) -> Self {
+        v
+    }
+    #[inline(always)]
+    fn value(self) -> f64 {
+        self
+    }
+    #[inline(always)]
+    fn sqrt(self) -> Self {
+        f64::sqrt(self)
+    }
+    #[inline(always)]
+    fn positive_part(self) -> Self {
+        self.max(0.0)
+    }
+}
+
+impl<const S: usize> Scalar for Dual<S> {
+    #[inline(always)]
+    fn c(v: f64) -> Self {
+        Dual::c(v)
+    }
+    #[inline(always)]
+    fn value(self) -> f64 {
+        self.v
+    }
+    #[inline(always)]
+    fn sqrt(self) -> Self {
+        Dual::sqrt(self)
+    }
+    #[inline(always)]
+    fn positive_part(self) -> Self {
+        if self.v > 0.0 { self } else { Dual::c(0.0) }
+    }
+}
+
+/// `a - b` componentwise.
+#[inline(always)]
+pub fn sub3<S: Scalar>(a: [S; 3], b: [S; 3]) -> [S; 3] {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+
+/// `a . b`.
+#[inline(always)]
+pub fn dot3<S: Scalar>(a: [S; 3], b: [S; 3]) -> S {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}

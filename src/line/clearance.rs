@@ -1,0 +1,276 @@
+//! Clearances: the least distance between two conductors (phase to phase, phase to earth wire, bundle to
+//! bundle), at every time level, with where and when its minimum occurs.
+//!
+//! Each conductor is the polyline of its nodes (its intact segments); the least distance of two
+//! polylines is the least of the segment-to-segment distances ([`crate::element::pair::closest_points`]).
+//! The polyline is the scheme's own picture of the conductor: it converges to the continuous curve at
+//! `O(ds^2)` (chords of a smooth curve deviate from it by `ds^2 kappa / 8`), so the clearance does too.
+//!
+//! Cost. Not all `N_a N_b` pairs: the segments of `b` are sorted by their projection on the horizontal
+//! direction of `a`'s chord, and a segment of `a` is compared only with the segments of `b` whose
+//! projection lies within the best distance found so far (a distance can only be smaller than `best` if
+//! its projection on any unit vector is). Starting from the distance of a few corresponding nodes, the
+//! window holds a few segments for conductors along the same span: `O(N log N)` per pair and level.
+
+use crate::element::pair::closest_points;
+use crate::wire::Wire;
+
+/// The closest points of two conductors at one time level.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Closest {
+    /// the least distance [m]
+    pub distance_m: f64,
+    /// segment of the first conductor that holds its closest point
+    pub segment_a: usize,
+    /// fraction along that segment [-]
+    pub fraction_a: f64,
+    /// segment of the second conductor
+    pub segment_b: usize,
+    /// fraction along it [-]
+    pub fraction_b: f64,
+    /// the closest point of the first conductor [m]
+    pub point_a_m: [f64; 3],
+    /// the closest point of the second conductor [m]
+    pub point_b_m: [f64; 3],
+}
+
+impl Closest {
+    /// Lagrangian coordinate of the closest point of the first conductor, as a fraction of its
+    /// unstretched length from its first node [-].
+    pub fn arc_fraction_a(&self, a: &Wire) -> f64 {
+        arc_fraction(a, self.segment_a, self.fraction_a)
+    }
+    /// The same for the second conductor [-].
+    pub fn arc_fraction_b(&self, b: &Wire) -> f64 {
+        arc_fraction(b, self.segment_b, self.fraction_b)
+    }
+}
+
+fn arc_fraction(w: &Wire, j: usize, f: f64) -> f64 {
+    let before: f64 = w.reference_length[..j].iter().sum();
+    (before + f * w.reference_length[j]) / w.reference_length.iter().sum::<f64>()
+}
+
+/// Reusable buffers of [`least_distance`] (no allocation once grown).
+#[derive(Clone, Debug, Default)]
+pub struct Scratch {
+    order: Vec<usize>,
+    lo: Vec<f64>,
+    hi: Vec<f64>,
+}
+
+/// The least distance between the intact segments of conductors `a` and `b`; `None` if either has none.
+pub fn least_distance(a: &Wire, b: &Wire, scratch: &mut Scratch) -> Option<Closest> {
+    let (na, nb) = (a.segments(), b.segments());
+    // Horizontal direction of a's chord (x2 if the chord is vertical).
+    let (pa, pz) = (a.position(0), a.position(na));
+    let h = [pz[0] - pa[0], pz[1] - pa[1]];
+    let hn = (h[0] * h[0] + h[1] * h[1]).sqrt();
+    let e = if hn > 0.0 { [h[0] / hn, h[1] / hn] } else { [0.0, 1.0] };
+    let proj = |w: &Wire, i: usize| e[0] * w.x[0][i] + e[1] * w.x[1][i];
+    let Scratch { order, lo, hi } = scratch;
+    lo.clear();
+    hi.clear();
+    let mut ext_b = 0.0_f64;
+    for j in 0..nb {
+        let (p, q) = (proj(b, j), proj(b, j + 1));
+        lo.push(p.min(q));
+        hi.push(p.max(q));
+        ext_b = ext_b.max((p - q).abs());
+    }
+    order.clear();
+    order.extend((0..nb).filter(|&j| b.intact[j] > 0.0));
+    order.sort_unstable_by(|&i, &j| lo[i].total_cmp(&lo[j]));
+    if order.is_empty() || a.intact.iter().all(|&x| x <= 0.0) {
+        return None;
+    }
+    // Upper bound: the distance between a few corresponding nodes.
+    let mut best2 = f64::INFINITY;
+    let mut found: Option<Closest> = None;
+    let dist2 = |p: [f64; 3], q: [f64; 3]| (p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2) + (p[2] - q[2]).powi(2);
+    for k in 0..=8 {
+        let (i, j) = (k * na / 8, k * nb / 8);
+        best2 = best2.min(dist2(a.position(i), b.position(j)));
+    }
+    // Slightly above the bound so that the pair that attains it is visited.
+    let mut best = best2.sqrt() * (1.0 + 1e-12) + 1e-300;
+    for i in 0..na {
+        if a.intact[i] <= 0.0 {
+            continue;
+        }
+        let (p, q) = (proj(a, i), proj(a, i + 1));
+        let (alo, ahi) = (p.min(q), p.max(q));
+        let first = order.partition_point(|&j| lo[j] < alo - best - ext_b);
+        let last = order.partition_point(|&j| lo[j] <= ahi + best);
+        for &j in &order[first..last.max(first)] {
+            if lo[j] > ahi + best || hi[j] < alo - best {
+                continue;
+            }
+            let (p0, p1, q0, q1) = (a.position(i), a.position(i + 1), b.position(j), b.position(j + 1));
+            let (d2, s, u) = closest_points(p0, p1, q0, q1);
+            if found.is_none() || d2 < best2 {
+                best2 = d2;
+                best = d2.sqrt();
+                let at = |x: [f64; 3], y: [f64; 3], f: f64| [0, 1, 2].map(|k| x[k] + f * (y[k] - x[k]));
+                found = Some(Closest {
+                    distance_m: best,
+                    segment_a: i,
+                    fraction_a: s,
+                    segment_b: j,
+                    fraction_b: u,
+                    point_a_m: at(p0, p1, s),
+                    point_b_m: at(q0, q1, u),
+                });
+            }
+        }
+    }
+    found
+}
+
+/// The least distance of a pair of conductor groups over a run: its value, when and where.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LeastClearance {
+    /// the conductors of the pair at the least distance (one of each group)
+    pub conductors: (usize, usize),
+    /// the closest points then
+    pub closest: Closest,
+    /// time of the least distance [s]
+    pub time_s: f64,
+}
+
+/// Tracks the clearance between every pair of conductor groups at every level. A group is a phase or an
+/// earth wire (one conductor) or a bundle (its sub-conductors); the clearance of two groups is the least
+/// distance between any of their conductors.
+#[derive(Clone, Debug)]
+pub struct ClearanceTracker {
+    /// the conductors of each group
+    groups: Vec<Vec<usize>>,
+    /// the group pairs `(g, h)`, `g < h`
+    pairs: Vec<(usize, usize)>,
+    /// the clearance of each pair at the last level observed
+    current: Vec<Option<LeastClearance>>,
+    /// the least clearance of each pair so far
+    least: Vec<Option<LeastClearance>>,
+    scratch: Scratch,
+}
+
+impl ClearanceTracker {
+    /// A tracker for the given groups of conductors (indices into the model's conductors).
+    pub fn new(groups: Vec<Vec<usize>>) -> Self {
+        let g = groups.len();
+        let pairs: Vec<(usize, usize)> = (0..g).flat_map(|a| (a + 1..g).map(move |b| (a, b))).collect();
+        let n = pairs.len();
+        ClearanceTracker { groups, pairs, current: vec![None; n], least: vec![None; n], scratch: Scratch::default() }
+    }
+
+    /// The groups.
+    pub fn groups(&self) -> &[Vec<usize>] {
+        &self.groups
+    }
+
+    /// The group pairs, in the order of [`ClearanceTracker::current`] and [`ClearanceTracker::least`].
+    pub fn pairs(&self) -> &[(usize, usize)] {
+        &self.pairs
+    }
+
+    /// Measure every pair at time `t_s` [s] for the conductors' wires.
+    pub fn observe(&mut self, wires: &[&Wire], t_s: f64) {
+        for (p, &(g, h)) in self.pairs.iter().enumerate() {
+            let mut best: Option<LeastClearance> = None;
+            for &a in &self.groups[g] {
+                for &b in &self.groups[h] {
+                    if let Some(c) = least_distance(wires[a], wires[b], &mut self.scratch)
+                        && best.is_none_or(|x| c.distance_m < x.closest.distance_m)
+                    {
+                        best = Some(LeastClearance { conductors: (a, b), closest: c, time_s: t_s });
+                    }
+                }
+            }
+            self.current[p] = best;
+            if let Some(c) = best
+                && self.least[p].is_none_or(|x| c.closest.distance_m < x.closest.distance_m)
+            {
+                self.least[p] = Some(c);
+            }
+        }
+    }
+
+    /// Each pair's clearance at the last level observed.
+    pub fn current(&self) -> &[Option<LeastClearance>] {
+        &self.current
+    }
+
+    /// Each pair's least clearance so far (every level observed, not samples).
+    pub fn least(&self) -> &[Option<LeastClearance>] {
+        &self.least
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::wire::{Conductor, tension::LawKind};
+
+    fn straight(x1: f64, x3: f64, n: usize, len: f64, shift: f64) -> Wire {
+        let xs = [
+            vec![x1; n + 1],
+            (0..=n).map(|i| shift + len * i as f64 / n as f64).collect(),
+            vec![x3; n + 1],
+        ];
+        let c = Conductor { axial_stiffness_n: 1e6, internal_friction_n_s: 0.0, law: LawKind::TensionOnly };
+        Wire::new(c, xs, vec![len / n as f64; n], 1.0)
+    }
+
+    /// Every pair of segments, for comparison.
+    fn brute(a: &Wire, b: &Wire) -> f64 {
+        let mut best = f64::INFINITY;
+        for i in 0..a.segments() {
+            for j in 0..b.segments() {
+                let (d2, _, _) = closest_points(a.position(i), a.position(i + 1), b.position(j), b.position(j + 1));
+                best = best.min(d2.sqrt());
+            }
+        }
+        best
+    }
+
+    #[test]
+    fn pruned_search_equals_all_pairs() {
+        let mut scratch = Scratch::default();
+        // Parallel, offset and with different segment counts; then one sagging and swinging.
+        let a = straight(0.0, 10.0, 40, 300.0, 0.0);
+        let mut b = straight(6.0, 12.0, 33, 300.0, 5.0);
+        let c = least_distance(&a, &b, &mut scratch).unwrap();
+        assert!((c.distance_m - brute(&a, &b)).abs() < 1e-12);
+        for i in 0..=33 {
+            let s = i as f64 / 33.0;
+            b.x[2][i] -= 9.0 * 4.0 * s * (1.0 - s);
+            b.x[0][i] -= 5.5 * 4.0 * s * (1.0 - s) + 0.3 * (7.0 * s).sin();
+        }
+        let c = least_distance(&a, &b, &mut scratch).unwrap();
+        assert!((c.distance_m - brute(&a, &b)).abs() < 1e-12, "{} vs {}", c.distance_m, brute(&a, &b));
+        let (pa, pb) = (c.point_a_m, c.point_b_m);
+        let d = ((pa[0] - pb[0]).powi(2) + (pa[1] - pb[1]).powi(2) + (pa[2] - pb[2]).powi(2)).sqrt();
+        assert!((d - c.distance_m).abs() < 1e-12);
+        // A broken segment is no longer part of the conductor.
+        b.break_segment(c.segment_b);
+        let c2 = least_distance(&a, &b, &mut scratch).unwrap();
+        assert!(c2.distance_m >= c.distance_m);
+    }
+
+    #[test]
+    fn tracker_keeps_the_least_and_its_time() {
+        let a = straight(0.0, 10.0, 20, 200.0, 0.0);
+        let mut b = straight(3.0, 10.0, 20, 200.0, 0.0);
+        let mut t = ClearanceTracker::new(vec![vec![0], vec![1]]);
+        t.observe(&[&a, &b], 0.0);
+        b.x[0][10] = 1.0;
+        t.observe(&[&a, &b], 0.5);
+        b.x[0][10] = 2.0;
+        t.observe(&[&a, &b], 1.0);
+        let least = t.least()[0].unwrap();
+        assert_eq!(least.time_s, 0.5);
+        assert!((least.closest.distance_m - 1.0).abs() < 1e-12);
+        assert!((least.closest.arc_fraction_a(&a) - 0.5).abs() < 1e-12);
+        assert!((t.current()[0].unwrap().closest.distance_m - 2.0).abs() < 1e-12);
+    }
+}

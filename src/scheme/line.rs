@@ -1,0 +1,479 @@
+//! The explicit scheme (3.1), (3.6) for a line of several conductors ([`crate::line::Model`]).
+//!
+//! Each conductor is advanced by its own kernel ([`Explicit`]: its segment pass with its own material and
+//! loads, then its node pass); the attachments between conductors and supports act on the conductor nodes
+//! as point forces, one net-force sum per node (MoorDyn's picture: lines attach to shared points). One
+//! step from level `n` to `n + 1`:
+//!
+//! ```text
+//! 1. every conductor: segment pass at level n (tension (3.4), distributed loads (2.5)-(2.6))
+//! 2. every link l between ends a, b: F_l = force_on_b(r_a^n, r_b^n, v_a^{n-1/2}, v_b^{n-1/2})   (element::link)
+//!    node ends receive F_l (end b) and -F_l (end a) as point forces; support ends add them to the
+//!    support's load S_s^n
+//! 3. every conductor: node pass (kick with its own forces plus the point forces, smoothing, drift)
+//! 4. every elastic support: u^{n+1/2} = u^{n-1/2} + (dt_{n-1/2} + dt_{n+1/2}) / 2 (K(p^n) - c u^{n-1/2} + S^n) / M,
+//!    p^{n+1} = p^n + dt_{n+1/2} u^{n+1/2}   (horizontal only; rigid supports stay)
+//! ```
+//!
+//! the same kick-drift leapfrog as the conductors', so the coupled scheme stays second order in time.
+//! A conductor without attachments steps exactly as a single-conductor run (the point forces enter its
+//! node pass after the loop over all nodes, as a single section's strings do), so a line of uncoupled
+//! conductors reproduces the single-conductor runs bit for bit (test `uncoupled_conductors_are_bitwise_single_runs`).
+//!
+//! Time step. Every node and support must satisfy the leapfrog's bound with explicit damping,
+//! `K dt^2 / (2 M) + C dt / M <= 1`, where `K` is the sum of the axial stiffnesses joined to it (`EA / l0`
+//! of its segments, `EA / L0` of its links, a support's larger spring), `C` the sum of the dampers (`eta /
+//! l0`, `BA / L0`, `c_d`) and `M` its mass: Gershgorin's bound `omega^2 <= 2 K / M` on the stiffness
+//! with the damped-leapfrog condition `C^2 + 2 z C <= 1` of [`super::courant`]. For a conductor's own
+//! interior node this is exactly its Courant limit `C <= sqrt(1 + z^2) - z`; links and point masses can
+//! only lower it. [`LineExplicit::new`] refuses a step above it, naming the node.
+
+use super::explicit::{Explicit, Instability, StepParams};
+use crate::line::handle::Endpoint;
+use crate::line::model::{DeadEnd, Link, Model, ModelError, Role};
+use crate::line::support::Support;
+use crate::wire::Wire;
+
+/// Why a line solver could not be built.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum LineError {
+    /// the model is inconsistent
+    #[error(transparent)]
+    Model(#[from] ModelError),
+    /// the time step is above the stable step of some node or support
+    #[error("time step {dt_s:.4e} s is above the stable step {limit_s:.4e} s of {at} (stiffness {stiffness_n_per_m:.4e} N/m, damping {damping_n_s_per_m:.4e} N s/m, mass {mass_kg:.4e} kg)")]
+    Step {
+        /// the step asked for [s]
+        dt_s: f64,
+        /// the stable step there [s]
+        limit_s: f64,
+        /// where: a conductor's node or a support
+        at: String,
+        /// the stiffness joined there `K` [N/m]
+        stiffness_n_per_m: f64,
+        /// the damping there `C` [N s/m]
+        damping_n_s_per_m: f64,
+        /// the mass there `M` [kg]
+        mass_kg: f64,
+    },
+}
+
+/// A conductor of the line went unstable.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[error("conductor {conductor} ('{name}'): {source}")]
+pub struct LineInstability {
+    /// the conductor's index
+    pub conductor: usize,
+    /// its name
+    pub name: String,
+    /// what happened, when and where
+    pub source: Instability,
+}
+
+/// The state of a support during a run.
+#[derive(Clone, Debug)]
+struct SupportState {
+    spec: Support,
+    /// position of the reference point `p` [m]
+    position_m: [f64; 3],
+    /// velocity `u` [m/s] at the last half step
+    velocity_m_per_s: [f64; 3],
+}
+
+/// Energies of the line at a time level [J].
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct LineEnergies {
+    /// kinetic energy of the conductors and the supports [J]
+    pub kinetic_j: f64,
+    /// elastic energy of the conductors, links and support springs [J]
+    pub elastic_j: f64,
+    /// potential energy of gravity and uniform loads [J]
+    pub potential_j: f64,
+}
+
+/// The explicit solver of a line: one kernel per conductor, the links and the supports.
+#[derive(Clone, Debug)]
+pub struct LineExplicit {
+    conductors: Vec<Explicit>,
+    names: Vec<String>,
+    roles: Vec<Role>,
+    supports: Vec<SupportState>,
+    links: Vec<Link>,
+    dead_ends: Vec<DeadEnd>,
+    params: StepParams,
+    time_s: f64,
+    steps: u64,
+    dt_prev: f64,
+    /// the link forces of the current level are evaluated and set on the conductors
+    fresh: bool,
+    /// force on end `b` of each link at the current level [N]
+    link_force: Vec<[f64; 3]>,
+    /// point forces per conductor (scratch)
+    points: Vec<Vec<(usize, [f64; 3])>>,
+    /// sum of the link forces on each support at the current level [N]
+    support_load: Vec<[f64; 3]>,
+}
+
+impl LineExplicit {
+    /// A solver at `t = 0` for the model (copied: the solver does not own the model), every conductor with
+    /// the same step parameters. Point masses are lumped into their nodes. Refuses an inconsistent model
+    /// and a step above the stable step of any node or support.
+    pub fn new(model: &Model, params: StepParams) -> Result<Self, LineError> {
+        model.check()?;
+        let mut wires: Vec<Wire> = model.conductors.iter().map(|c| c.wire.clone()).collect();
+        let mut touched = vec![false; wires.len()];
+        for p in &model.point_masses {
+            wires[p.node.conductor].point_mass_kg[p.node.node] += p.mass_kg;
+            touched[p.node.conductor] = true;
+        }
+        for (w, t) in wires.iter_mut().zip(&touched) {
+            if *t {
+                w.update_node_masses();
+            }
+        }
+        let supports: Vec<SupportState> = model
+            .supports
+            .iter()
+            .map(|s| SupportState { spec: s.clone(), position_m: s.position_m, velocity_m_per_s: [0.0; 3] })
+            .collect();
+        check_step(model, &wires, params.dt_s)?;
+        let conductors: Vec<Explicit> = wires
+            .into_iter()
+            .zip(&model.conductors)
+            .map(|(w, c)| Explicit::new(w, c.loads, params))
+            .collect();
+        let n = conductors.len();
+        Ok(LineExplicit {
+            conductors,
+            names: model.conductors.iter().map(|c| c.name.clone()).collect(),
+            roles: model.conductors.iter().map(|c| c.role).collect(),
+            supports,
+            links: model.links.clone(),
+            dead_ends: model.dead_ends.clone(),
+            params,
+            time_s: 0.0,
+            steps: 0,
+            dt_prev: 0.0,
+            fresh: false,
+            link_force: vec![[0.0; 3]; model.links.len()],
+            points: vec![Vec::new(); n],
+            support_load: vec![[0.0; 3]; model.supports.len()],
+        })
+    }
+
+    /// Advance every conductor and support by one step of length `dt` [s] (at most the nominal step).
+    /// Every conductor is stepped even if one fails, so the state stays at one time level; the first
+    /// failure is returned.
+    pub fn step(&mut self, dt: f64) -> Result<(), LineInstability> {
+        self.evaluate_forces();
+        let kick = 0.5 * (self.dt_prev + dt);
+        let mut failure = None;
+        for (i, c) in self.conductors.iter_mut().enumerate() {
+            if let Err(source) = c.step(dt)
+                && failure.is_none()
+            {
+                failure = Some(LineInstability { conductor: i, name: self.names[i].clone(), source });
+            }
+        }
+        for (s, load) in self.supports.iter_mut().zip(&self.support_load) {
+            let Some(e) = s.spec.elastic else { continue };
+            let d = sub(s.position_m, s.spec.position_m);
+            let spring = e.spring_force(d, s.velocity_m_per_s);
+            for k in 0..2 {
+                s.velocity_m_per_s[k] += kick * (spring[k] + load[k]) / e.mass_kg;
+                s.position_m[k] += dt * s.velocity_m_per_s[k];
+            }
+        }
+        self.dt_prev = dt;
+        self.time_s += dt;
+        self.steps += 1;
+        self.fresh = false;
+        match failure {
+            None => Ok(()),
+            Some(f) => Err(f),
+        }
+    }
+
+    /// Evaluate the forces of the current level (each conductor's segment pass, every link), so that the
+    /// observers read them at no cost and the next step does not repeat them.
+    pub fn evaluate_forces(&mut self) {
+        if self.fresh {
+            return;
+        }
+        for c in &mut self.conductors {
+            c.ensure_forces();
+        }
+        for p in &mut self.points {
+            p.clear();
+        }
+        for l in &mut self.support_load {
+            *l = [0.0; 3];
+        }
+        for (k, link) in self.links.iter().enumerate() {
+            let f = if link.intact {
+                let (ra, va) = self.endpoint_state(&link.a);
+                let (rb, vb) = self.endpoint_state(&link.b);
+                link.law.force_on_b(ra, rb, va, vb)
+            } else {
+                [0.0; 3]
+            };
+            self.link_force[k] = f;
+            for (end, sign) in [(&link.a, -1.0), (&link.b, 1.0)] {
+                let g = [sign * f[0], sign * f[1], sign * f[2]];
+                match *end {
+                    Endpoint::Node(n) => self.points[n.conductor].push((n.node, g)),
+                    Endpoint::Support { support, .. } => {
+                        for c in 0..3 {
+                            self.support_load[support][c] += g[c];
+                        }
+                    }
+                }
+            }
+        }
+        for (c, p) in self.conductors.iter_mut().zip(&self.points) {
+            if !(p.is_empty() && c.point_forces().is_empty()) {
+                c.set_point_forces(p);
+            }
+        }
+        self.fresh = true;
+    }
+
+    /// Position [m] and velocity at the last half step [m/s] of an attachment's end.
+    pub fn endpoint_state(&self, e: &Endpoint) -> ([f64; 3], [f64; 3]) {
+        match *e {
+            Endpoint::Node(n) => {
+                let w = self.conductors[n.conductor].wire();
+                (w.position(n.node), [w.v[0][n.node], w.v[1][n.node], w.v[2][n.node]])
+            }
+            Endpoint::Support { support, offset_m } => {
+                let s = &self.supports[support];
+                (add(s.position_m, offset_m), s.velocity_m_per_s)
+            }
+        }
+    }
+
+    /// The conductors' solvers (read their wires, tensions and support forces at an evaluated level).
+    pub fn conductors(&self) -> &[Explicit] {
+        &self.conductors
+    }
+
+    /// Conductor `i`'s solver, to change it (an event: ice, a break, a temperature); the forces of the
+    /// level are evaluated again.
+    pub fn conductor_mut(&mut self, i: usize) -> &mut Explicit {
+        self.fresh = false;
+        &mut self.conductors[i]
+    }
+
+    /// The conductors' wires, in model order.
+    pub fn wires(&self) -> Vec<&Wire> {
+        self.conductors.iter().map(|c| c.wire()).collect()
+    }
+
+    /// The conductors' names.
+    pub fn names(&self) -> &[String] {
+        &self.names
+    }
+
+    /// The conductors' roles.
+    pub fn roles(&self) -> &[Role] {
+        &self.roles
+    }
+
+    /// The attachments.
+    pub fn links(&self) -> &[Link] {
+        &self.links
+    }
+
+    /// Break attachment `l` (a failing string or spacer arm): it carries nothing from now on.
+    pub fn break_link(&mut self, l: usize) {
+        self.links[l].intact = false;
+        self.fresh = false;
+    }
+
+    /// Force of link `l` on its end `b` at the evaluated level [N] (on end `a`: the negative).
+    pub fn link_force_n(&self, l: usize) -> [f64; 3] {
+        assert!(self.fresh, "link_force_n needs evaluate_forces at this time level");
+        self.link_force[l]
+    }
+
+    /// Tension of link `l` at the evaluated level [N] (negative: a spacer arm in compression).
+    pub fn link_tension_n(&self, l: usize) -> f64 {
+        assert!(self.fresh, "link_tension_n needs evaluate_forces at this time level");
+        let link = &self.links[l];
+        if !link.intact {
+            return 0.0;
+        }
+        let (ra, va) = self.endpoint_state(&link.a);
+        let (rb, vb) = self.endpoint_state(&link.b);
+        link.law.tension(sub(rb, ra), sub(vb, va)).0
+    }
+
+    /// Position of support `s`'s reference point [m].
+    pub fn support_position_m(&self, s: usize) -> [f64; 3] {
+        self.supports[s].position_m
+    }
+
+    /// Displacement of support `s` from its rest position [m].
+    pub fn support_displacement_m(&self, s: usize) -> [f64; 3] {
+        sub(self.supports[s].position_m, self.supports[s].spec.position_m)
+    }
+
+    /// The supports (as built).
+    pub fn supports(&self) -> impl Iterator<Item = &Support> {
+        self.supports.iter().map(|s| &s.spec)
+    }
+
+    /// The resultant force of all attachments on support `s` at the evaluated level [N]: its links' pulls
+    /// and the reactions of the conductor nodes fixed on it (the load the tower carries from every phase
+    /// and earth wire).
+    pub fn support_resultant_n(&self, s: usize) -> [f64; 3] {
+        assert!(self.fresh, "support_resultant_n needs evaluate_forces at this time level");
+        let mut f = self.support_load[s];
+        let mut buf = Vec::new();
+        for d in self.dead_ends.iter().filter(|d| d.support == s) {
+            let c = &self.conductors[d.node.conductor];
+            c.support_forces(&mut buf);
+            if let Some(&(_, r)) = buf.iter().find(|(i, _)| *i == d.node.node) {
+                for k in 0..3 {
+                    f[k] += r[k];
+                }
+            }
+        }
+        f
+    }
+
+    /// Energies of the line at the evaluated level: the conductors' ([`Explicit::level_diagnostics`]),
+    /// the links' elastic energy, the supports' springs and motion (velocity synchronised like the nodes').
+    pub fn energies(&self) -> LineEnergies {
+        assert!(self.fresh, "energies needs evaluate_forces at this time level");
+        let mut e = LineEnergies::default();
+        for c in &self.conductors {
+            let d = c.level_diagnostics();
+            e.kinetic_j += d.kinetic_j;
+            e.elastic_j += d.elastic_j;
+            e.potential_j += d.potential_j;
+        }
+        for link in self.links.iter().filter(|l| l.intact) {
+            let (ra, _) = self.endpoint_state(&link.a);
+            let (rb, _) = self.endpoint_state(&link.b);
+            let d = sub(rb, ra);
+            e.elastic_j += link.law.energy_j((d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt());
+        }
+        let half = 0.5 * self.dt_prev;
+        for (s, load) in self.supports.iter().zip(&self.support_load) {
+            let Some(el) = s.spec.elastic else { continue };
+            let d = sub(s.position_m, s.spec.position_m);
+            e.elastic_j += el.spring_energy_j(d);
+            let spring = el.spring_force(d, s.velocity_m_per_s);
+            for k in 0..2 {
+                let u = s.velocity_m_per_s[k] + half * (spring[k] + load[k]) / el.mass_kg;
+                e.kinetic_j += 0.5 * el.mass_kg * u * u;
+            }
+        }
+        e
+    }
+
+    /// Simulated time `t_n` [s].
+    pub fn time_s(&self) -> f64 {
+        self.time_s
+    }
+
+    /// Set the clock after a step shortened to land on `t_s` [s].
+    pub fn land_on(&mut self, t_s: f64) {
+        self.time_s = t_s;
+        for c in &mut self.conductors {
+            c.land_on(t_s);
+        }
+    }
+
+    /// Steps taken.
+    pub fn steps(&self) -> u64 {
+        self.steps
+    }
+
+    /// The step parameters (the same for every conductor).
+    pub fn params(&self) -> &StepParams {
+        &self.params
+    }
+}
+
+/// Refuse a step above the stable step of any node or support (module doc).
+fn check_step(model: &Model, wires: &[Wire], dt: f64) -> Result<(), LineError> {
+    // K [N/m] and C [N s/m] joined to every node, from its segments, then from the links.
+    let mut k: Vec<Vec<f64>> = wires.iter().map(|w| vec![0.0; w.nodes()]).collect();
+    let mut c: Vec<Vec<f64>> = wires.iter().map(|w| vec![0.0; w.nodes()]).collect();
+    for (i, w) in wires.iter().enumerate() {
+        for j in 0..w.segments() {
+            let (ks, cs) = (w.axial_stiffness_n[j] / w.rest_length[j], w.internal_friction_n_s[j] / w.rest_length[j]);
+            for node in [j, j + 1] {
+                k[i][node] += ks;
+                c[i][node] += cs;
+            }
+        }
+    }
+    let mut ks = vec![0.0; model.supports.len()];
+    let mut cs = vec![0.0; model.supports.len()];
+    for l in &model.links {
+        let (kl, cl) = (l.law.stiffness_n_per_m(), l.law.damping_n_s_per_m());
+        for e in [&l.a, &l.b] {
+            match *e {
+                Endpoint::Node(n) => {
+                    k[n.conductor][n.node] += kl;
+                    c[n.conductor][n.node] += cl;
+                }
+                Endpoint::Support { support, .. } => {
+                    ks[support] += kl;
+                    cs[support] += cl;
+                }
+            }
+        }
+    }
+    let limit = |k: f64, c: f64, m: f64| {
+        let (a, b) = (k / (2.0 * m), c / m);
+        2.0 / (b + (b * b + 4.0 * a).sqrt())
+    };
+    // A rounding slack so that a conductor run at exactly its Courant limit is not refused.
+    let slack = 1.0 + 1e-9;
+    for (i, w) in wires.iter().enumerate() {
+        for node in 0..w.nodes() {
+            if w.free[node] <= 0.0 {
+                continue;
+            }
+            let lim = limit(k[i][node], c[i][node], w.mass[node]);
+            if dt > lim * slack {
+                return Err(LineError::Step {
+                    dt_s: dt,
+                    limit_s: lim,
+                    at: format!("conductor '{}' node {node}", model.conductors[i].name),
+                    stiffness_n_per_m: k[i][node],
+                    damping_n_s_per_m: c[i][node],
+                    mass_kg: w.mass[node],
+                });
+            }
+        }
+    }
+    for (s, sup) in model.supports.iter().enumerate() {
+        let Some(e) = sup.elastic else { continue };
+        let (kk, cc) = (ks[s] + e.along_n_per_m.max(e.across_n_per_m), cs[s] + e.damping_n_s_per_m);
+        let lim = limit(kk, cc, e.mass_kg);
+        if dt > lim * slack {
+            return Err(LineError::Step {
+                dt_s: dt,
+                limit_s: lim,
+                at: format!("support '{}'", sup.name),
+                stiffness_n_per_m: kk,
+                damping_n_s_per_m: cc,
+                mass_kg: e.mass_kg,
+            });
+        }
+    }
+    Ok(())
+}
+
+fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+
+fn add(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [a[0] + b[0], a[1] + b[1], a[2] + b[2]]
+}
