@@ -144,7 +144,11 @@ mod tests {
         for slot in 0..6 {
             let shifted = |sign: f64| {
                 let (mut a, mut b) = (ra, rb);
-                if slot < 3 { a[slot] += sign * h } else { b[slot - 3] += sign * h }
+                if slot < 3 {
+                    a[slot] += sign * h
+                } else {
+                    b[slot - 3] += sign * h
+                }
                 law.force_on_b(a, b, [0.0; 3], [0.0; 3])
             };
             let (p, m) = (shifted(1.0), shifted(-1.0));
@@ -161,9 +165,7 @@ mod tests {
         let (l1, l2) = (3.5005, 3.502);
         let n = 2000;
         let h = (l2 - l1) / n as f64;
-        let work: f64 = (0..n)
-            .map(|k| st.tension([0.0, 0.0, l1 + (k as f64 + 0.5) * h], [0.0; 3]).0 * h)
-            .sum();
+        let work: f64 = (0..n).map(|k| st.tension([0.0, 0.0, l1 + (k as f64 + 0.5) * h], [0.0; 3]).0 * h).sum();
         let de = st.energy_j(l2) - st.energy_j(l1);
         assert!((work - de).abs() < 1e-9 * de, "{work} vs {de}");
     }

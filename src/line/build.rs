@@ -8,7 +8,7 @@
 //! section's: each span's elastic catenary between plumb clamps.
 
 use super::handle::{Endpoint, NodeRef};
-use super::model::{DeadEnd, Link, LinkKind, LineConductor, Model, ModelError, PointMass, Role};
+use super::model::{DeadEnd, LineConductor, Link, LinkKind, Model, ModelError, PointMass, Role};
 use crate::element::LinkLaw;
 use crate::scheme::Loads;
 use crate::wire::section::{self, Layout, Section, SectionError, Support as SectionSupport};
@@ -123,7 +123,10 @@ pub fn add_section_conductor(
                     masses.push(PointMass { node, mass_kg });
                 }
             }
-            (Attach::String { support, damping_n_s }, SectionSupport::Suspension { pivot_m, length_m, stiffness_n, .. }) => {
+            (
+                Attach::String { support, damping_n_s },
+                SectionSupport::Suspension { pivot_m, length_m, stiffness_n, .. },
+            ) => {
                 links.push(Link {
                     kind: LinkKind::SuspensionString,
                     a: Endpoint::Support { support, offset_m: offset(model, support, pivot_m)? },
@@ -228,11 +231,16 @@ pub fn add_bundle(
         members.push(c);
         layout = Some(l);
     }
-    let layout = layout.ok_or_else(|| ModelError::Handle { what: format!("bundle '{name}'"), detail: "no sub-conductors".into() })?;
+    let layout = layout
+        .ok_or_else(|| ModelError::Handle { what: format!("bundle '{name}'"), detail: "no sub-conductors".into() })?;
     let n = members.len();
     for &(span, f) in &spec.spacers {
         if span + 1 >= layout.first_node.len() {
-            return Err(ModelError::Handle { what: format!("bundle '{name}' spacer"), detail: format!("span {span} does not exist") }.into());
+            return Err(ModelError::Handle {
+                what: format!("bundle '{name}' spacer"),
+                detail: format!("span {span} does not exist"),
+            }
+            .into());
         }
         let node = layout.node_at(span, f);
         for i in 0..n {

@@ -212,11 +212,7 @@ mod tests {
     use crate::wire::{Conductor, tension::LawKind};
 
     fn straight(x1: f64, x3: f64, n: usize, len: f64, shift: f64) -> Wire {
-        let xs = [
-            vec![x1; n + 1],
-            (0..=n).map(|i| shift + len * i as f64 / n as f64).collect(),
-            vec![x3; n + 1],
-        ];
+        let xs = [vec![x1; n + 1], (0..=n).map(|i| shift + len * i as f64 / n as f64).collect(), vec![x3; n + 1]];
         let c = Conductor { axial_stiffness_n: 1e6, internal_friction_n_s: 0.0, law: LawKind::TensionOnly };
         Wire::new(c, xs, vec![len / n as f64; n], 1.0)
     }

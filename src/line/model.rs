@@ -185,7 +185,12 @@ impl Model {
             if n.node >= c.wire.nodes() {
                 return Err(ModelError::Handle {
                     what: what.into(),
-                    detail: format!("node {} of conductor '{}' does not exist ({} nodes)", n.node, c.name, c.wire.nodes()),
+                    detail: format!(
+                        "node {} of conductor '{}' does not exist ({} nodes)",
+                        n.node,
+                        c.name,
+                        c.wire.nodes()
+                    ),
                 });
             }
             Ok(())
@@ -254,7 +259,8 @@ impl Model {
             if self.supports[d.support].elastic.is_some() {
                 return Err(ModelError::Handle {
                     what,
-                    detail: "an elastic support holds conductors through strings (a fixed node cannot move with it)".into(),
+                    detail: "an elastic support holds conductors through strings (a fixed node cannot move with it)"
+                        .into(),
                 });
             }
         }

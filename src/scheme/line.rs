@@ -21,12 +21,15 @@
 //! conductors reproduces the single-conductor runs bit for bit (test `uncoupled_conductors_are_bitwise_single_runs`).
 //!
 //! Time step. Every node and support must satisfy the leapfrog's bound with explicit damping,
-//! `K dt^2 / (2 M) + C dt / M <= 1`, where `K` is the sum of the axial stiffnesses joined to it (`EA / l0`
-//! of its segments, `EA / L0` of its links, a support's larger spring), `C` the sum of the dampers (`eta /
-//! l0`, `BA / L0`, `c_d`) and `M` its mass: Gershgorin's bound `omega^2 <= 2 K / M` on the stiffness
-//! with the damped-leapfrog condition `C^2 + 2 z C <= 1` of [`super::courant`]. For a conductor's own
-//! interior node this is exactly its Courant limit `C <= sqrt(1 + z^2) - z`; links and point masses can
-//! only lower it. [`LineExplicit::new`] refuses a step above it, naming the node.
+//! `W dt^2 / 4 + D dt / 2 <= 1`, where `W = (K + sum_j k_j sqrt(M / m_j)) / M` is Gershgorin's bound on
+//! `omega^2` for the node's row of `M^-1/2 K M^-1/2` (`K` the sum of the axial stiffnesses joined to the
+//! node: `EA / l0` of its segments, `EA / L0` of its links, a support's larger spring; the sum over those
+//! whose other end `j` moves, of mass `m_j`; `M` the node's mass) and `D` the same bound on the damping
+//! rate (`eta / l0`, `BA / L0`, `c_d`): the
+//! damped-leapfrog condition `C^2 + 2 z C <= 1` of [`super::courant`] for each mode. For a conductor's own
+//! interior node this is exactly its Courant limit `C <= sqrt(1 + z^2) - z`; for a clamp it is the bound of
+//! [`crate::wire::insulator::clamp_stable_step_s`]; links and point masses can only lower it.
+//! [`LineExplicit::new`] refuses a step above it, naming the node.
 
 use super::explicit::{Explicit, Instability, StepParams};
 use crate::line::handle::Endpoint;
@@ -41,7 +44,9 @@ pub enum LineError {
     #[error(transparent)]
     Model(#[from] ModelError),
     /// the time step is above the stable step of some node or support
-    #[error("time step {dt_s:.4e} s is above the stable step {limit_s:.4e} s of {at} (stiffness {stiffness_n_per_m:.4e} N/m, damping {damping_n_s_per_m:.4e} N s/m, mass {mass_kg:.4e} kg)")]
+    #[error(
+        "time step {dt_s:.4e} s is above the stable step {limit_s:.4e} s of {at} (stiffness {stiffness_n_per_m:.4e} N/m, damping {damping_n_s_per_m:.4e} N s/m, mass {mass_kg:.4e} kg)"
+    )]
     Step {
         /// the step asked for [s]
         dt_s: f64,
@@ -137,11 +142,8 @@ impl LineExplicit {
             .map(|s| SupportState { spec: s.clone(), position_m: s.position_m, velocity_m_per_s: [0.0; 3] })
             .collect();
         check_step(model, &wires, params.dt_s)?;
-        let conductors: Vec<Explicit> = wires
-            .into_iter()
-            .zip(&model.conductors)
-            .map(|(w, c)| Explicit::new(w, c.loads, params))
-            .collect();
+        let conductors: Vec<Explicit> =
+            wires.into_iter().zip(&model.conductors).map(|(w, c)| Explicit::new(w, c.loads, params)).collect();
         let n = conductors.len();
         Ok(LineExplicit {
             conductors,
@@ -399,38 +401,69 @@ impl LineExplicit {
 
 /// Refuse a step above the stable step of any node or support (module doc).
 fn check_step(model: &Model, wires: &[Wire], dt: f64) -> Result<(), LineError> {
-    // K [N/m] and C [N s/m] joined to every node, from its segments, then from the links.
-    let mut k: Vec<Vec<f64>> = wires.iter().map(|w| vec![0.0; w.nodes()]).collect();
-    let mut c: Vec<Vec<f64>> = wires.iter().map(|w| vec![0.0; w.nodes()]).collect();
+    // Gershgorin rows of M^-1/2 K M^-1/2 (and of C), times the node's mass: per node (and support) the
+    // springs and dampers joined to it (the diagonal) plus, for those whose other end moves, the spring
+    // times sqrt(m_i / m_j) (the off-diagonal); an end held fixed adds none.
+    #[derive(Clone, Copy, Default)]
+    struct Row {
+        k: f64,
+        k_row: f64,
+        c: f64,
+        c_row: f64,
+    }
+    // The mass of an end that moves, `None` for a held one.
+    let moving_mass = |e: &Endpoint| match *e {
+        Endpoint::Node(n) => {
+            let w = &wires[n.conductor];
+            (w.free[n.node] > 0.0).then_some(w.mass[n.node])
+        }
+        Endpoint::Support { support, .. } => model.supports[support].elastic.map(|e| e.mass_kg),
+    };
+    let mass = |e: &Endpoint| match *e {
+        Endpoint::Node(n) => wires[n.conductor].mass[n.node],
+        Endpoint::Support { support, .. } => model.supports[support].elastic.map_or(f64::INFINITY, |e| e.mass_kg),
+    };
+    let mut rows: Vec<Vec<Row>> = wires.iter().map(|w| vec![Row::default(); w.nodes()]).collect();
+    let mut srows = vec![Row::default(); model.supports.len()];
     for (i, w) in wires.iter().enumerate() {
         for j in 0..w.segments() {
-            let (ks, cs) = (w.axial_stiffness_n[j] / w.rest_length[j], w.internal_friction_n_s[j] / w.rest_length[j]);
-            for node in [j, j + 1] {
-                k[i][node] += ks;
-                c[i][node] += cs;
+            let (k, c) = (w.axial_stiffness_n[j] / w.rest_length[j], w.internal_friction_n_s[j] / w.rest_length[j]);
+            for (node, other) in [(j, j + 1), (j + 1, j)] {
+                let r = &mut rows[i][node];
+                let off = if w.free[other] > 0.0 { (w.mass[node] / w.mass[other]).sqrt() } else { 0.0 };
+                r.k += k;
+                r.c += c;
+                r.k_row += k * (1.0 + off);
+                r.c_row += c * (1.0 + off);
             }
         }
     }
-    let mut ks = vec![0.0; model.supports.len()];
-    let mut cs = vec![0.0; model.supports.len()];
     for l in &model.links {
-        let (kl, cl) = (l.law.stiffness_n_per_m(), l.law.damping_n_s_per_m());
-        for e in [&l.a, &l.b] {
-            match *e {
-                Endpoint::Node(n) => {
-                    k[n.conductor][n.node] += kl;
-                    c[n.conductor][n.node] += cl;
-                }
-                Endpoint::Support { support, .. } => {
-                    ks[support] += kl;
-                    cs[support] += cl;
-                }
-            }
+        let (k, c) = (l.law.stiffness_n_per_m(), l.law.damping_n_s_per_m());
+        for (end, other) in [(&l.a, &l.b), (&l.b, &l.a)] {
+            let off = moving_mass(other).map_or(0.0, |m| (mass(end) / m).sqrt());
+            let r = match *end {
+                Endpoint::Node(n) => &mut rows[n.conductor][n.node],
+                Endpoint::Support { support, .. } => &mut srows[support],
+            };
+            r.k += k;
+            r.c += c;
+            r.k_row += k * (1.0 + off);
+            r.c_row += c * (1.0 + off);
         }
     }
-    let limit = |k: f64, c: f64, m: f64| {
-        let (a, b) = (k / (2.0 * m), c / m);
+    // W dt^2 / 4 + D dt / 2 <= 1 with W = k_row / M >= omega^2 and D = c_row / M >= the modal damping rate.
+    let limit = |r: &Row, m: f64| {
+        let (a, b) = (r.k_row / (4.0 * m), r.c_row / (2.0 * m));
         2.0 / (b + (b * b + 4.0 * a).sqrt())
+    };
+    let refuse = |lim: f64, at: String, r: &Row, m: f64| LineError::Step {
+        dt_s: dt,
+        limit_s: lim,
+        at,
+        stiffness_n_per_m: r.k,
+        damping_n_s_per_m: r.c,
+        mass_kg: m,
     };
     // A rounding slack so that a conductor run at exactly its Courant limit is not refused.
     let slack = 1.0 + 1e-9;
@@ -439,32 +472,25 @@ fn check_step(model: &Model, wires: &[Wire], dt: f64) -> Result<(), LineError> {
             if w.free[node] <= 0.0 {
                 continue;
             }
-            let lim = limit(k[i][node], c[i][node], w.mass[node]);
+            let lim = limit(&rows[i][node], w.mass[node]);
             if dt > lim * slack {
-                return Err(LineError::Step {
-                    dt_s: dt,
-                    limit_s: lim,
-                    at: format!("conductor '{}' node {node}", model.conductors[i].name),
-                    stiffness_n_per_m: k[i][node],
-                    damping_n_s_per_m: c[i][node],
-                    mass_kg: w.mass[node],
-                });
+                let at = format!("conductor '{}' node {node}", model.conductors[i].name);
+                return Err(refuse(lim, at, &rows[i][node], w.mass[node]));
             }
         }
     }
     for (s, sup) in model.supports.iter().enumerate() {
         let Some(e) = sup.elastic else { continue };
-        let (kk, cc) = (ks[s] + e.along_n_per_m.max(e.across_n_per_m), cs[s] + e.damping_n_s_per_m);
-        let lim = limit(kk, cc, e.mass_kg);
+        let spring = e.along_n_per_m.max(e.across_n_per_m);
+        let r = Row {
+            k: srows[s].k + spring,
+            k_row: srows[s].k_row + spring,
+            c: srows[s].c + e.damping_n_s_per_m,
+            c_row: srows[s].c_row + e.damping_n_s_per_m,
+        };
+        let lim = limit(&r, e.mass_kg);
         if dt > lim * slack {
-            return Err(LineError::Step {
-                dt_s: dt,
-                limit_s: lim,
-                at: format!("support '{}'", sup.name),
-                stiffness_n_per_m: kk,
-                damping_n_s_per_m: cc,
-                mass_kg: e.mass_kg,
-            });
+            return Err(refuse(lim, format!("support '{}'", sup.name), &r, e.mass_kg));
         }
     }
     Ok(())

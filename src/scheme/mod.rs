@@ -9,5 +9,5 @@ pub mod line;
 pub mod smoothing;
 
 pub use contact::Ground;
-pub use line::{LineError, LineExplicit, LineInstability};
 pub use explicit::{Diagnostics, Explicit, Instability, InstabilityReason, Loads, StepParams, WindGate, WindLoad};
+pub use line::{LineError, LineExplicit, LineInstability};

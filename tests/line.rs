@@ -1,0 +1,425 @@
+//! A line of several conductors (`ohl::line`, `ohl::scheme::line`): phases, an earth wire and bundles on
+//! shared supports.
+//!
+//! Checks, each against an independent expectation:
+//! - uncoupled: three Drake phases and a steel earth wire, each a two-span section on its own strings, in
+//!   a cross wind with each conductor's own drag, give bit for bit the results of four single-conductor
+//!   runs; hung from one shared rigid tower top (offsets), they agree to rounding;
+//! - the least distance between two conductors (an iced phase above a bare one) converges to the exact
+//!   distance of their elastic catenaries at observed order 2;
+//! - a symmetric twin bundle: the spacer arms carry exactly nothing and each sub-conductor is bit for bit
+//!   an independent conductor;
+//! - undamped, with spacers, strings and a shared elastic tower top: the total energy is conserved to the
+//!   leapfrog's `O(dt^2)` (its drift falls by about 4 when the step is halved);
+//! - a step above the stable step of a stiff attachment is refused, naming the node.
+//!
+//! Data: ACSR Drake 795 kcmil 26/7 (28.1 mm, 1.628 kg/m, EA = 2.9e7 N, RTS 140 kN: the catalogue
+//! `data/conductors.toml`); the earth wire a 3/8 in. extra-high-strength galvanised steel strand, 7 x
+//! 3.05 mm (9.5 mm, 0.407 kg/m, RTS 68.5 kN, EA = 186 GPa x 51.1 mm^2 = 9.5e6 N: ASTM A475 table values
+//! as we know them, not checked against a copy); strings 3.5 m, 100 kg, EA 5e7 N (as `tests/section.rs`);
+//! the earth wire's suspension clamp a 0.3 m link of 1.7e7 N/m (100 kg with its hardware); spacer arms 1e6 N/m (a rigid spacer frame of the order of 1e6-1e7 N/m; the static results do not
+//! depend on it beyond millimetres).
+
+use ohl::element::LinkLaw;
+use ohl::line::build::{Attach, BundleSpec, add_bundle, add_section_conductor};
+use ohl::line::clearance::{Scratch, least_distance};
+use ohl::line::{ElasticSupport, Endpoint, Link, LinkKind, Model, NodeRef, Role, Support};
+use ohl::scheme::{Explicit, LineError, LineExplicit, Loads, StepParams, WindGate, WindLoad};
+use ohl::statics::{self, StaticOptions};
+use ohl::wire::Conductor;
+use ohl::wire::aero::Aerodynamic;
+use ohl::wire::section::{self, Section, Span, Stringing, Support as SectionSupport};
+use ohl::wire::tension::LawKind;
+
+const G: f64 = 9.81;
+
+#[derive(Clone, Copy)]
+struct Material {
+    ea: f64,
+    rho: f64,
+    diameter: f64,
+}
+
+const DRAKE: Material = Material { ea: 2.9e7, rho: 1.628, diameter: 0.0281 };
+const EHS_38: Material = Material { ea: 9.5e6, rho: 0.407, diameter: 0.0095 };
+/// Suspension string of a phase: length [m], axial stiffness EA [N].
+const STRING: (f64, f64) = (3.5, 5.0e7);
+/// The earth wire's suspension clamp: a short link (0.3 m, EA 5e6 N: 1.7e7 N/m).
+const EW_CLAMP: (f64, f64) = (0.3, 5.0e6);
+
+fn loads(m: Material, wind_m_per_s: f64) -> Loads {
+    // q d c_n with c_n = 1.0, c_tau = 0 (the codes' drag, docs/examples.md), air 1.225 kg/m^3.
+    let q = 0.5 * 1.225 * wind_m_per_s * wind_m_per_s;
+    let wind = (wind_m_per_s > 0.0).then_some(WindLoad::Aerodynamic(Aerodynamic {
+        direction: [1.0, 0.0, 0.0],
+        qd_cn: q * m.diameter,
+        qd_ct: 0.0,
+        mu_over_u: 1.0 / wind_m_per_s,
+    }));
+    Loads { gravity_m_per_s2: G, uniform_load_n_per_m: [0.0; 3], wind, wind_scale: 1.0, wind_gate: WindGate::Always }
+}
+
+/// A two-span section along +x2 at across-position `x1`: dead-ends at heights `z`, a suspension string
+/// (length `string_m`) in the middle from a pivot at `z + 4`, strung at `h0` [N].
+fn two_spans(m: Material, x1: f64, z: f64, h0: f64, segments: usize, string: (f64, f64)) -> Section {
+    let span = Span {
+        conductor: Conductor { axial_stiffness_n: m.ea, internal_friction_n_s: 0.0, law: LawKind::TensionOnly },
+        linear_density_kg_per_m: m.rho,
+        segments,
+        stringing: Stringing::HorizontalTension(h0),
+    };
+    Section {
+        supports: vec![
+            SectionSupport::DeadEnd { point_m: [x1, 0.0, z] },
+            SectionSupport::Suspension {
+                pivot_m: [x1, 380.0, z + 4.0],
+                length_m: string.0,
+                mass_kg: 100.0,
+                stiffness_n: string.1,
+                crossarm: None,
+            },
+            SectionSupport::DeadEnd { point_m: [x1, 800.0, z + 2.0] },
+        ],
+        spans: vec![span; 2],
+        gravity_m_per_s2: G,
+    }
+}
+
+fn params(dt_s: f64, smoothing: f64, damping: f64) -> StepParams {
+    StepParams { dt_s, smoothing, mass_damping_per_s: damping, max_speed_m_per_s: 4.0e3 }
+}
+
+/// Courant step of `m` on segments of `ds` [m] [s].
+fn courant_step(m: Material, ds: f64, c: f64) -> f64 {
+    c * ds / (m.ea / m.rho).sqrt()
+}
+
+/// The horizontal configuration: three Drake phases 7 m apart and the earth wire 8 m above the middle one.
+fn horizontal(segments: usize) -> Vec<(Material, Section)> {
+    vec![
+        (DRAKE, two_spans(DRAKE, -7.0, 20.0, 28_000.0, segments, STRING)),
+        (DRAKE, two_spans(DRAKE, 0.0, 20.0, 28_000.0, segments, STRING)),
+        (DRAKE, two_spans(DRAKE, 7.0, 20.0, 28_000.0, segments, STRING)),
+        (EHS_38, two_spans(EHS_38, 0.0, 28.0, 13_700.0, segments, EW_CLAMP)),
+    ]
+}
+
+/// Add each section as a conductor; every support point its own rigid support at that point (offset 0),
+/// or, with `shared`, the suspension strings of all four on one rigid tower top at the middle phase's pivot.
+fn line_of(sections: &[(Material, Section)], wind: f64, shared: bool) -> Model {
+    let mut model = Model::new();
+    let tower = shared.then(|| {
+        let SectionSupport::Suspension { pivot_m, .. } = sections[1].1.supports[1] else { unreachable!() };
+        model.add_support(Support::rigid("tower 1", pivot_m))
+    });
+    for (i, (m, sec)) in sections.iter().enumerate() {
+        let attach: Vec<Attach> = sec
+            .supports
+            .iter()
+            .enumerate()
+            .map(|(k, s)| match *s {
+                SectionSupport::DeadEnd { point_m } => {
+                    Attach::Fixed { support: model.add_support(Support::rigid(format!("c{i} s{k}"), point_m)) }
+                }
+                SectionSupport::Suspension { pivot_m, .. } => {
+                    let support =
+                        tower.unwrap_or_else(|| model.add_support(Support::rigid(format!("c{i} s{k}"), pivot_m)));
+                    Attach::String { support, damping_n_s: 0.0 }
+                }
+            })
+            .collect();
+        let role = if i == 3 { Role::EarthWire } else { Role::Phase };
+        add_section_conductor(&mut model, format!("c{i}"), role, sec, &attach, loads(*m, wind)).unwrap();
+    }
+    model
+}
+
+/// The step every conductor can take at Courant 0.8 (the shortest of their Courant steps).
+fn common_step(sections: &[(Material, Section)], segments: usize) -> f64 {
+    sections.iter().map(|(m, _)| courant_step(*m, 380.0 / segments as f64, 0.8)).fold(f64::INFINITY, f64::min)
+}
+
+#[test]
+fn uncoupled_conductors_are_bitwise_single_runs() {
+    let n = 24;
+    let sections = horizontal(n);
+    let dt = common_step(&sections, n);
+    let p = params(dt, 0.02, 0.0);
+    let mut line = LineExplicit::new(&line_of(&sections, 25.0, false), p).unwrap();
+    let mut singles: Vec<Explicit> =
+        sections.iter().map(|(m, sec)| Explicit::new(section::build(sec).unwrap().0, loads(*m, 25.0), p)).collect();
+    for step in 0..600 {
+        let h = if step % 9 == 4 { 0.43 * dt } else { dt };
+        line.step(h).unwrap();
+        for s in &mut singles {
+            s.step(h).unwrap();
+        }
+    }
+    for (i, s) in singles.iter().enumerate() {
+        let (a, b) = (line.conductors()[i].wire(), s.wire());
+        for k in 0..3 {
+            for j in 0..a.nodes() {
+                assert_eq!(a.x[k][j].to_bits(), b.x[k][j].to_bits(), "conductor {i} x{k}[{j}]");
+                assert_eq!(a.v[k][j].to_bits(), b.v[k][j].to_bits(), "conductor {i} v{k}[{j}]");
+            }
+        }
+    }
+    // The wind moved them (the comparison is not of resting wires): the phases swung by metres.
+    let mid = line.conductors()[0].wire().position(n / 2);
+    assert!(mid[0] > -7.0 + 0.05, "phase 0 mid-span x1 = {}", mid[0]);
+
+    // The same conductors on one shared rigid tower top (their pivots as offsets from its reference
+    // point): the same run up to the rounding of (pivot - p) + p, amplified by the undamped dynamics.
+    let mut shared = LineExplicit::new(&line_of(&sections, 25.0, true), p).unwrap();
+    let mut line = LineExplicit::new(&line_of(&sections, 25.0, false), p).unwrap();
+    for _ in 0..600 {
+        shared.step(dt).unwrap();
+        line.step(dt).unwrap();
+    }
+    let mut worst = 0.0_f64;
+    for i in 0..4 {
+        let (a, b) = (shared.conductors()[i].wire(), line.conductors()[i].wire());
+        for k in 0..3 {
+            for j in 0..a.nodes() {
+                worst = worst.max((a.x[k][j] - b.x[k][j]).abs());
+            }
+        }
+    }
+    assert!(worst < 1e-9, "shared tower top vs separate supports: {worst:e} m");
+    // The tower top carries the four strings: its resultant is the sum of their forces.
+    shared.evaluate_forces();
+    let r = shared.support_resultant_n(0);
+    let mut sum = [0.0; 3];
+    for (l, link) in shared.links().iter().enumerate() {
+        if matches!(link.a, Endpoint::Support { support: 0, .. }) {
+            let f = shared.link_force_n(l);
+            for k in 0..3 {
+                sum[k] -= f[k];
+            }
+        }
+    }
+    assert_eq!(r, sum);
+    assert!(r[2] < -4.0 * 100.0 * G, "the tower top is pulled down by four strings: {r:?}");
+}
+
+#[test]
+fn symmetric_twin_bundle_is_two_independent_conductors() {
+    let n = 20;
+    let sec = two_spans(DRAKE, 0.0, 20.0, 28_000.0, n, STRING);
+    let mut model = Model::new();
+    let attach: Vec<Attach> = sec
+        .supports
+        .iter()
+        .enumerate()
+        .map(|(k, _)| {
+            let s = model.add_support(Support::rigid(format!("s{k}"), [0.0, 400.0 * k as f64, 24.0]));
+            if k == 1 { Attach::String { support: s, damping_n_s: 0.0 } } else { Attach::Fixed { support: s } }
+        })
+        .collect();
+    let spec = BundleSpec::regular(2, 0.4, vec![(0, 0.3), (0, 0.7), (1, 0.25), (1, 0.5), (1, 0.75)], 1.0e6);
+    let (members, _) = add_bundle(&mut model, "A", 0, &sec, &attach, loads(DRAKE, 0.0), &spec).unwrap();
+    assert_eq!(members.len(), 2);
+    let dt = courant_step(DRAKE, 380.0 / n as f64, 0.8);
+    let p = params(dt, 0.0, 0.0);
+    let mut line = LineExplicit::new(&model, p).unwrap();
+    // The independent conductor: the sub-conductor's own section, alone.
+    let shifted = |dx: f64| {
+        let mut s = sec.clone();
+        for sup in &mut s.supports {
+            match sup {
+                SectionSupport::DeadEnd { point_m } => point_m[0] += dx,
+                SectionSupport::Suspension { pivot_m, .. } => pivot_m[0] += dx,
+            }
+        }
+        s
+    };
+    let mut alone: Vec<Explicit> =
+        [-0.2, 0.2].map(|dx| Explicit::new(section::build(&shifted(dx)).unwrap().0, loads(DRAKE, 0.0), p)).into();
+    for _ in 0..800 {
+        line.step(dt).unwrap();
+        for a in &mut alone {
+            a.step(dt).unwrap();
+        }
+    }
+    line.evaluate_forces();
+    for (l, link) in line.links().iter().enumerate() {
+        if link.kind == LinkKind::Spacer {
+            assert_eq!(line.link_tension_n(l), 0.0, "spacer arm {l}");
+        }
+    }
+    // Which sub-conductor is at x1 = -0.2: e_t = e3 x e_l = -x1 for a line along +x2, so offset +0.2
+    // (index 0) is at x1 = -0.2.
+    for (i, a) in alone.iter().enumerate() {
+        let w = line.conductors()[members[i]].wire();
+        for k in 0..3 {
+            for j in 0..w.nodes() {
+                assert_eq!(w.x[k][j].to_bits(), a.wire().x[k][j].to_bits(), "sub-conductor {i} x{k}[{j}]");
+            }
+        }
+    }
+}
+
+/// The least distance between an iced phase above a bare one (vertical configuration, 1 m apart across),
+/// from the discrete equilibria (the library's Newton per conductor), against the exact elastic
+/// catenaries: the iced upper conductor sags more, so the least distance is at mid-span, between the two
+/// curves' mid-span points. Error fitted over N = 32, 64, 128: order 2 +- 0.1.
+#[test]
+fn clearance_converges_at_order_two_to_the_exact_catenaries() {
+    let ice = 1.5; // kg/m of glaze on the upper conductor
+    let (lo_a, lo_b) = ([0.0, 0.0, 20.0], [0.0, 400.0, 20.0]);
+    let (up_a, up_b) = ([1.0, 0.0, 27.0], [1.0, 400.0, 27.0]);
+    let l0 = section::length_for_tension(lo_a, lo_b, 28_000.0, DRAKE.rho * G, DRAKE.ea).unwrap();
+    let exact = |a: [f64; 3], b: [f64; 3], rho: f64| {
+        ohl::exact::catenary::ElasticCatenary::solve(a, b, l0, [0.0, 0.0, -rho * G], DRAKE.ea)
+            .unwrap()
+            .position(0.5 * l0)
+    };
+    let (pl, pu) = (exact(lo_a, lo_b, DRAKE.rho), exact(up_a, up_b, DRAKE.rho + ice));
+    let d_exact = ((pu[0] - pl[0]).powi(2) + (pu[1] - pl[1]).powi(2) + (pu[2] - pl[2]).powi(2)).sqrt();
+    assert!(d_exact < 7.0 - 0.5, "the iced conductor comes closer at mid-span: {d_exact}");
+    let mut errors = Vec::new();
+    let ns = [16, 32, 64, 128];
+    for &n in &ns {
+        let settled = |a: [f64; 3], b: [f64; 3], rho: f64| {
+            let xs: [Vec<f64>; 3] =
+                std::array::from_fn(|k| (0..=n).map(|i| a[k] + (b[k] - a[k]) * i as f64 / n as f64).collect());
+            let c = Conductor { axial_stiffness_n: DRAKE.ea, internal_friction_n_s: 0.0, law: LawKind::TensionOnly };
+            let w = ohl::wire::Wire::new(c, xs, vec![l0 / n as f64; n], rho);
+            let mut s = Explicit::new(w, loads(DRAKE, 0.0), params(1e-3, 0.0, 0.0));
+            statics::solve(&mut s, &StaticOptions::default()).unwrap();
+            s.wire().clone()
+        };
+        let (wl, wu) = (settled(lo_a, lo_b, DRAKE.rho), settled(up_a, up_b, DRAKE.rho + ice));
+        let c = least_distance(&wl, &wu, &mut Scratch::default()).unwrap();
+        assert!((c.arc_fraction_a(&wl) - 0.5).abs() < 1.0 / n as f64, "closest point at mid-span");
+        errors.push((c.distance_m - d_exact).abs());
+    }
+    let order = fitted_order(&ns[1..].iter().map(|&n| n as f64).collect::<Vec<_>>(), &errors[1..]);
+    eprintln!("clearance: exact {d_exact:.9} m, errors {errors:?}, fitted order {order:.3}");
+    assert!((order - 2.0).abs() < 0.1, "order {order}, errors {errors:?}");
+}
+
+/// Least-squares slope of log(error) against log(1/N) [-].
+fn fitted_order(ns: &[f64], errors: &[f64]) -> f64 {
+    let xs: Vec<f64> = ns.iter().map(|n| -n.ln()).collect();
+    let ys: Vec<f64> = errors.iter().map(|e| e.ln()).collect();
+    let (mx, my) = (xs.iter().sum::<f64>() / xs.len() as f64, ys.iter().sum::<f64>() / ys.len() as f64);
+    let num: f64 = xs.iter().zip(&ys).map(|(x, y)| (x - mx) * (y - my)).sum();
+    let den: f64 = xs.iter().map(|x| (x - mx).powi(2)).sum();
+    num / den
+}
+
+/// Two Drake phases and a twin bundle on one elastic tower top, plus an interphase spacer, released from
+/// their strung (not equilibrium) shapes with the tower top moved aside: undamped, the total energy
+/// (conductors, strings, spacers, tower springs and motion) is conserved to O(dt^2): the relative drift
+/// stays small and falls by about 4 when the step is halved (3.0 to 5.0 accepted: the energy error of
+/// leapfrog oscillates, so its maximum over a window is only approximately proportional to dt^2).
+#[test]
+fn energy_is_conserved_with_spacers_strings_and_an_elastic_tower() {
+    let drift = |n: usize, courant: f64| {
+        let mut model = Model::new();
+        let tower = model.add_support(Support {
+            name: "tower".into(),
+            position_m: [0.0, 380.0, 24.0],
+            elastic: Some(ElasticSupport {
+                along: [0.0, 1.0, 0.0],
+                along_n_per_m: 4.0e5,
+                across_n_per_m: 2.0e5,
+                mass_kg: 800.0,
+                damping_n_s_per_m: 0.0,
+            }),
+        });
+        let mut conductors = Vec::new();
+        for (x1, bundle) in [(-6.0, false), (6.0, true)] {
+            let sec = two_spans(DRAKE, x1, 20.0, 28_000.0, n, STRING);
+            let attach: Vec<Attach> = (0..3)
+                .map(|k| {
+                    if k == 1 {
+                        Attach::String { support: tower, damping_n_s: 0.0 }
+                    } else {
+                        let p = [x1, 400.0 * k as f64, 20.0 + k as f64];
+                        Attach::Fixed { support: model.add_support(Support::rigid("dead-end", p)) }
+                    }
+                })
+                .collect();
+            if bundle {
+                let spec = BundleSpec::regular(2, 0.45, vec![(0, 0.5), (1, 0.5)], 1.0e6);
+                let (m, _) = add_bundle(&mut model, "B", 0, &sec, &attach, loads(DRAKE, 0.0), &spec).unwrap();
+                conductors.push(m[0]);
+            } else {
+                conductors.push(
+                    add_section_conductor(&mut model, "A", Role::Phase, &sec, &attach, loads(DRAKE, 0.0)).unwrap().0,
+                );
+            }
+        }
+        // Move the tower top (and the pivots with it) 2 cm along and 1 cm across the line: the strings are
+        // no longer plumb and pull it back (small enough that no string goes slack: a tension-only law
+        // switching off is not smooth, and leapfrog's energy error at such an event is O(dt), not O(dt^2)).
+        model.supports[tower].position_m[0] += 0.01;
+        model.supports[tower].position_m[1] += 0.02;
+        // An interphase spacer at mid-span of the first spans, stretched by 1 cm (2 kN).
+        let node = n / 2;
+        let (pa, pb) =
+            (model.conductors[conductors[0]].wire.position(node), model.conductors[conductors[1]].wire.position(node));
+        let spacing = ((pa[0] - pb[0]).powi(2) + (pa[1] - pb[1]).powi(2) + (pa[2] - pb[2]).powi(2)).sqrt();
+        model.add_link(Link {
+            kind: LinkKind::InterphaseSpacer,
+            a: Endpoint::Node(NodeRef::new(conductors[0], node)),
+            b: Endpoint::Node(NodeRef::new(conductors[1], node)),
+            law: LinkLaw::spring(spacing - 0.01, 2.0e5, 0.0),
+            intact: true,
+        });
+        let dt = courant_step(DRAKE, 380.0 / n as f64, courant);
+        let mut line = LineExplicit::new(&model, params(dt, 0.0, 0.0)).unwrap();
+        line.evaluate_forces();
+        let e0 = line.energies();
+        let total = |e: ohl::scheme::line::LineEnergies| e.kinetic_j + e.elastic_j + e.potential_j;
+        let (t0, scale) = (total(e0), e0.elastic_j.abs() + e0.potential_j.abs());
+        let steps = (3.0 / dt) as usize;
+        let mut worst = 0.0_f64;
+        for _ in 0..steps {
+            line.step(dt).unwrap();
+            line.evaluate_forces();
+            worst = worst.max((total(line.energies()) - t0).abs());
+        }
+        // The tower moved: the comparison is of a coupled motion.
+        assert!(line.support_displacement_m(tower)[1].abs() > 1e-4);
+        worst / scale
+    };
+    // Measured: 2.41e-7, 5.79e-8, 1.51e-8, 3.79e-9 at Courant 0.4, 0.2, 0.1, 0.05 (ratios 4.17, 3.83, 3.99).
+    let (d1, d2) = (drift(16, 0.4), drift(16, 0.2));
+    eprintln!("energy drift: {d1:.3e} at Courant 0.4, {d2:.3e} at 0.2, ratio {:.2}", d1 / d2);
+    assert!(d1 < 1e-5, "{d1}");
+    assert!((3.0..=5.0).contains(&(d1 / d2)), "ratio {}", d1 / d2);
+}
+
+#[test]
+fn a_step_above_a_stiff_spacer_limit_is_refused_naming_the_node() {
+    let n = 20;
+    let sec = two_spans(DRAKE, 0.0, 20.0, 28_000.0, n, STRING);
+    let mut model = Model::new();
+    let attach: Vec<Attach> = (0..3)
+        .map(|k| {
+            let s = model.add_support(Support::rigid(format!("s{k}"), [0.0, 400.0 * k as f64, 24.0]));
+            if k == 1 { Attach::String { support: s, damping_n_s: 0.0 } } else { Attach::Fixed { support: s } }
+        })
+        .collect();
+    let spec = BundleSpec::regular(2, 0.4, vec![(0, 0.5)], 1.0e10);
+    add_bundle(&mut model, "A", 0, &sec, &attach, loads(DRAKE, 0.0), &spec).unwrap();
+    let dt = courant_step(DRAKE, 380.0 / n as f64, 0.8);
+    match LineExplicit::new(&model, params(dt, 0.0, 0.0)) {
+        Err(LineError::Step { at, limit_s, .. }) => {
+            assert!(at.contains("node 10"), "{at}");
+            assert!(limit_s < dt);
+        }
+        other => panic!("expected a refusal, got {:?}", other.map(|_| ())),
+    }
+    // The same bundle with a spacer of 1e6 N/m runs.
+    let mut model2 = Model::new();
+    for k in 0..3 {
+        model2.add_support(Support::rigid(format!("s{k}"), [0.0, 400.0 * k as f64, 24.0]));
+    }
+    let spec = BundleSpec::regular(2, 0.4, vec![(0, 0.5)], 1.0e6);
+    add_bundle(&mut model2, "A", 0, &sec, &attach, loads(DRAKE, 0.0), &spec).unwrap();
+    assert!(LineExplicit::new(&model2, params(dt, 0.0, 0.0)).is_ok());
+}
