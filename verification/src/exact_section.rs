@@ -212,11 +212,11 @@ const MAX_SWING_STEP_RAD: f64 = 0.5;
 
 /// The closed-form elastic catenary of one span (see the module doc).
 #[derive(Debug, Clone, Copy)]
-struct Catenary {
+pub(crate) struct Catenary {
     /// axial stiffness \[N\]
-    ea: f64,
+    pub(crate) ea: f64,
     /// weight per unstretched length \[N/m\]
-    w: f64,
+    pub(crate) w: f64,
 }
 
 impl Catenary {
@@ -226,7 +226,7 @@ impl Catenary {
 
     /// Offset `[x(s), z(s)]` \[m\] of the point `s` from the left end, for horizontal tension `h` and upward
     /// left-end force `v`.
-    fn offset(self, h: f64, v: f64, s: f64) -> [f64; 2] {
+    pub(crate) fn offset(self, h: f64, v: f64, s: f64) -> [f64; 2] {
         let w = self.w;
         let a = v / h;
         let b = (v - w * s) / h;
@@ -241,7 +241,7 @@ impl Catenary {
     }
 
     /// Derivatives of `[x(s), z(s)]` with respect to `[h, v, s]`.
-    fn jacobian(self, h: f64, v: f64, s: f64) -> [[f64; 3]; 2] {
+    pub(crate) fn jacobian(self, h: f64, v: f64, s: f64) -> [[f64; 3]; 2] {
         let w = self.w;
         let a = v / h;
         let b = (v - w * s) / h;
@@ -302,15 +302,15 @@ fn gauss_solve(a: &mut [f64], b: &mut [f64]) -> Result<Vec<f64>, String> {
 }
 
 /// Result of [`damped_newton`].
-struct NewtonOutcome {
-    x: Vec<f64>,
-    iterations: usize,
+pub(crate) struct NewtonOutcome {
+    pub(crate) x: Vec<f64>,
+    pub(crate) iterations: usize,
 }
 
 /// Failure of [`damped_newton`]: why, and the last iterate.
-struct NewtonFailure {
-    message: String,
-    x: Vec<f64>,
+pub(crate) struct NewtonFailure {
+    pub(crate) message: String,
+    pub(crate) x: Vec<f64>,
 }
 
 /// Half the sum of squares of `r / tol`, and the largest `|r / tol|`.
@@ -327,7 +327,7 @@ fn merit(r: &[f64], tol: &[f64]) -> (f64, f64) {
 /// is first shortened so that no `|dx_i|` exceeds `max_step_i`, then halved until the Armijo condition on
 /// the merit `sum (r_i/tol_i)^2 / 2` holds. After convergence up to two polishing steps are kept if they
 /// reduce the merit.
-fn damped_newton(
+pub(crate) fn damped_newton(
     mut x: Vec<f64>,
     tol: &[f64],
     max_step: &[f64],
@@ -419,12 +419,12 @@ fn check_point(what: &str, p: [f64; 2]) -> Result<(), String> {
 }
 
 /// Closure tolerance \[m\] for coordinates of magnitude up to `scale_m`.
-fn length_tol(scale_m: f64) -> f64 {
+pub(crate) fn length_tol(scale_m: f64) -> f64 {
     LENGTH_TOL_M.max(16.0 * EPS * scale_m)
 }
 
 /// Force tolerance \[N\] for forces of magnitude up to `scale_n`.
-fn force_tol(scale_n: f64) -> f64 {
+pub(crate) fn force_tol(scale_n: f64) -> f64 {
     FORCE_TOL_N.max(16.0 * EPS * scale_n)
 }
 
@@ -439,7 +439,7 @@ fn starting_estimate(w: f64, length: f64, delta: [f64; 2]) -> (f64, f64) {
 }
 
 /// Solves one span of unstretched length `length` between clamps `delta = P_right - P_left` apart: `(H, V)`.
-fn solve_span(cat: Catenary, length: f64, delta: [f64; 2]) -> Result<(f64, f64), String> {
+pub(crate) fn solve_span(cat: Catenary, length: f64, delta: [f64; 2]) -> Result<(f64, f64), String> {
     let (h0, v0) = starting_estimate(cat.w, length, delta);
     let tol = length_tol(delta[0].abs() + delta[1].abs() + length);
     let out = damped_newton(

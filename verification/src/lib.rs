@@ -8,9 +8,11 @@
 //! Shared machinery: [`setup`] (the paper's test wire and loads), [`convergence`] (least-squares order,
 //! Richardson extrapolation, Grid Convergence Index), [`implicit`] (Newmark integrator on the library's
 //! Jacobian and sparse LU, `ohl::statics`), [`report`].
-//! Independent exact references: [`exact_section`] (static equilibrium of a section on suspension strings).
+//! Independent exact references: [`exact_section`] (static equilibrium of a section on suspension strings),
+//! [`exact_line`] (three-dimensional statics of a bundle with spacers and of phases on a shared elastic tower top).
 
 pub mod convergence;
+pub mod exact_line;
 pub mod exact_section;
 pub mod implicit;
 pub mod report;
