@@ -11,7 +11,7 @@
 //!
 //! The integrators consume a model and own none: [`crate::scheme::line::LineExplicit`] copies it into one
 //! kernel per conductor plus the links and supports. [`build`] strings conductors and bundles from
-//! sections; [`clearance`] measures the least distance between every pair of phases at every level.
+//! sections; [`dof`] numbers the unknowns of the implicit solvers; [`clearance`] measures the least distance between every pair of phases at every level.
 //!
 //! Forces on a conductor node `i` (mass `m_i`, the lumped conductor plus point masses):
 //!
@@ -22,6 +22,7 @@
 
 pub mod build;
 pub mod clearance;
+pub mod dof;
 pub mod handle;
 pub mod model;
 pub mod support;

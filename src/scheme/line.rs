@@ -320,6 +320,32 @@ impl LineExplicit {
         sub(self.supports[s].position_m, self.supports[s].spec.position_m)
     }
 
+    /// Move support `s`'s reference point to `p` [m] (a static solver's iterate, a prescribed motion);
+    /// the forces of the level are evaluated again.
+    pub fn set_support_position(&mut self, s: usize, p: [f64; 3]) {
+        self.supports[s].position_m = p;
+        self.fresh = false;
+    }
+
+    /// The sum of the link forces on support `s` at the evaluated level [N] (without its own springs).
+    pub fn support_link_load_n(&self, s: usize) -> [f64; 3] {
+        assert!(self.fresh, "support_link_load_n needs evaluate_forces at this time level");
+        self.support_load[s]
+    }
+
+    /// Stop every motion: conductor and support velocities set to zero (a static state).
+    pub fn stop(&mut self) {
+        for c in &mut self.conductors {
+            for v in &mut c.wire_mut().v {
+                v.fill(0.0);
+            }
+        }
+        for s in &mut self.supports {
+            s.velocity_m_per_s = [0.0; 3];
+        }
+        self.fresh = false;
+    }
+
     /// The supports (as built).
     pub fn supports(&self) -> impl Iterator<Item = &Support> {
         self.supports.iter().map(|s| &s.spec)

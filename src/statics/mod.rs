@@ -72,10 +72,12 @@
 
 pub mod dual;
 pub mod jacobian;
+pub mod line;
 mod newton;
 pub mod pivots;
 pub mod sparse_lu;
 
+pub use line::solve_line;
 pub use newton::{StaticError, StaticOptions, StaticReport, default_tolerance_n, nodal_loads, rounding_floor_n, solve};
 pub use sparse_lu::{SparseLu, SparseLuError};
 

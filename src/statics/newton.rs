@@ -6,6 +6,7 @@ use super::pivots::Pivots;
 use super::sparse_lu::{SparseLu, SparseLuError};
 use crate::scheme::{Explicit, WindGate, WindLoad};
 use crate::wire::aero::SegmentLoad;
+use faer::sparse::Pair;
 
 /// Options of [`solve`].
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -145,7 +146,7 @@ pub fn nodal_loads(s: &Explicit) -> [Vec<f64>; 3] {
 
 /// Largest external load on a free node `max_i |f_i|` [N] ([`nodal_loads`]) and their sum of magnitudes
 /// over the free nodes `sum_i |f_i|` [N].
-fn load_scales(s: &Explicit) -> (f64, f64) {
+pub(crate) fn load_scales(s: &Explicit) -> (f64, f64) {
     let f = nodal_loads(s);
     let (mut max, mut sum) = (0.0_f64, 0.0);
     for i in 0..s.wire().nodes() {
@@ -265,21 +266,86 @@ pub fn solve(s: &mut Explicit, opts: &StaticOptions) -> Result<StaticReport, Sta
     let n1 = s.wire().nodes();
     let mut pat = pattern(s);
     pivots.pattern(s, &idx, &mut pat);
-    let mut lu = SparseLu::new(n, &pat, faer::Par::Seq).map_err(|e| StaticError::Factorisation(e.to_string()))?;
+    let (f_max, f_sum) = load_scales(s);
+    let tol = opts.tolerance_n.unwrap_or_else(|| (1e-10 * f_max).max(32.0 * rounding_floor_n(s)));
+    let mut eqs = Single { s, idx, pivots, f: [vec![0.0; n1], vec![0.0; n1], vec![0.0; n1]] };
+    // Tension scale of the regularisation: the sum of the nodal loads, the tension of a wire whose sag is
+    // an eighth of its span (`H = w l^2 / (8 f)`); a node load scale for its decay.
+    let scales = Scales { tolerance_n: tol, tension_n: f_sum, load_n: if f_max > 0.0 { f_max } else { 1.0 } };
+    iterate(&mut eqs, n, &pat, scales, opts)
+}
+
+/// The discrete equations of one conductor (its free nodes and its crossarms' pivots).
+struct Single<'a> {
+    s: &'a mut Explicit,
+    idx: Vec<Option<usize>>,
+    pivots: Pivots,
+    f: [Vec<f64>; 3],
+}
+
+impl Equations for Single<'_> {
+    fn residual(&mut self, rhs: &mut [f64]) -> (f64, f64) {
+        residual(self.s, &self.idx, &self.pivots, &mut self.f, rhs)
+    }
+    fn jacobian(&mut self, floor_n: f64, vals: &mut Vec<f64>) {
+        values(self.s, 0.0, 0.0, Some(floor_n), vals);
+        self.pivots.values(self.s, &self.idx, Some(floor_n), vals);
+    }
+    fn gather(&self, x0: &mut [f64]) {
+        for (i, o) in self.idx.iter().enumerate() {
+            if let Some(q) = o {
+                for k in 0..3 {
+                    x0[q + k] = self.s.wire().x[k][i];
+                }
+            }
+        }
+        self.pivots.gather(self.s, x0);
+    }
+    fn place(&mut self, x0: &[f64], dx: &[f64], lambda: f64) {
+        place(self.s, &self.idx, &self.pivots, x0, dx, lambda);
+    }
+}
+
+/// A system of static equations `F(x) = 0` that [`iterate`] solves: its residual, the regularised Jacobian
+/// in the order of a sparsity pattern fixed at the start (faer's symbolic analysis done once), and the
+/// unknowns' values.
+pub(crate) trait Equations {
+    /// `-F` into `rhs`; returns the largest `|F_i|` (NaN if any is not finite) and `|F|` [N].
+    fn residual(&mut self, rhs: &mut [f64]) -> (f64, f64);
+    /// The Jacobian `dF/dx` regularised with the tension floor `floor_n` [N], in the pattern's order.
+    fn jacobian(&mut self, floor_n: f64, vals: &mut Vec<f64>);
+    /// The unknowns into `x0`.
+    fn gather(&self, x0: &mut [f64]);
+    /// Set the unknowns to `x0 + lambda dx`.
+    fn place(&mut self, x0: &[f64], dx: &[f64], lambda: f64);
+}
+
+/// The scales of a solve [N]: its tolerance, the tension scale of the regularisation and the nodal load
+/// scale of its decay (module doc of [`crate::statics`]).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Scales {
+    pub tolerance_n: f64,
+    pub tension_n: f64,
+    pub load_n: f64,
+}
+
+/// Newton's method with the tension-floor regularisation and the line search of the module doc, on any
+/// [`Equations`] of `n` unknowns whose Jacobian has the sparsity pattern `pat`.
+pub(crate) fn iterate<E: Equations>(
+    eqs: &mut E,
+    n: usize,
+    pat: &[Pair<usize, usize>],
+    scales: Scales,
+    opts: &StaticOptions,
+) -> Result<StaticReport, StaticError> {
+    let mut lu = SparseLu::new(n, pat, faer::Par::Seq).map_err(|e| StaticError::Factorisation(e.to_string()))?;
     let mut vals = Vec::with_capacity(pat.len());
-    let mut f = [vec![0.0; n1], vec![0.0; n1], vec![0.0; n1]];
     let mut rhs = vec![0.0; n];
     let mut dx = vec![0.0; n];
     let mut x0 = vec![0.0; n];
+    let Scales { tolerance_n: tol, tension_n: tension_scale, load_n: load_scale } = scales;
 
-    let (f_max, f_sum) = load_scales(s);
-    let tol = opts.tolerance_n.unwrap_or_else(|| (1e-10 * f_max).max(32.0 * rounding_floor_n(s)));
-    // Tension scale of the regularisation: the sum of the nodal loads, the tension of a wire whose sag is
-    // an eighth of its span (`H = w l^2 / (8 f)`); a node load scale for its decay.
-    let tension_scale = f_sum;
-    let load_scale = if f_max > 0.0 { f_max } else { 1.0 };
-
-    let (mut r, mut r2) = residual(s, &idx, &pivots, &mut f, &mut rhs);
+    let (mut r, mut r2) = eqs.residual(&mut rhs);
     let mut report = StaticReport {
         iterations: 0,
         residual_n: r,
@@ -301,8 +367,7 @@ pub fn solve(s: &mut Explicit, opts: &StaticOptions) -> Result<StaticReport, Sta
         // The floor decays with the residual (Levenberg-Marquardt-like), so the last iterations are pure
         // Newton steps where every segment is taut.
         let floor = boost * tension_scale * (r / load_scale).min(1.0);
-        values(s, 0.0, 0.0, Some(floor), &mut vals);
-        pivots.values(s, &idx, Some(floor), &mut vals);
+        eqs.jacobian(floor, &mut vals);
         dx.copy_from_slice(&rhs);
         match lu.solve(&vals, &mut dx) {
             Ok(()) => {}
@@ -320,14 +385,7 @@ pub fn solve(s: &mut Explicit, opts: &StaticOptions) -> Result<StaticReport, Sta
             }
             Err(e) => return Err(StaticError::Factorisation(e.to_string())),
         }
-        for (i, o) in idx.iter().enumerate() {
-            if let Some(q) = o {
-                for k in 0..3 {
-                    x0[q + k] = s.wire().x[k][i];
-                }
-            }
-        }
-        pivots.gather(s, &mut x0);
+        eqs.gather(&mut x0);
         // Line search (module doc): along the step, the work of the residual `g(lambda) = F(x + lambda
         // dx) . dx` is the energy's slope for conservative loads. While `g(0) > 0`, accept the first trial
         // that has not overshot the minimum along the line by much, `g >= -g(0) / 2`, and otherwise jump
@@ -336,8 +394,8 @@ pub fn solve(s: &mut Explicit, opts: &StaticOptions) -> Result<StaticReport, Sta
         let mut lambda = 1.0;
         let mut accepted = false;
         for _ in 0..=MAX_TRIALS {
-            place(s, &idx, &pivots, &x0, &dx, lambda);
-            let (rt, r2t) = residual(s, &idx, &pivots, &mut f, &mut rhs);
+            eqs.place(&x0, &dx, lambda);
+            let (rt, r2t) = eqs.residual(&mut rhs);
             report.residual_evaluations += 1;
             let g = -dot(&rhs, &dx);
             if !r2t.is_finite() {
@@ -361,8 +419,8 @@ pub fn solve(s: &mut Explicit, opts: &StaticOptions) -> Result<StaticReport, Sta
             boost = (boost / 10.0).max(1.0);
         } else {
             // No trial lowered the residual: back to the last iterate, regularise more.
-            place(s, &idx, &pivots, &x0, &dx, 0.0);
-            (r, r2) = residual(s, &idx, &pivots, &mut f, &mut rhs);
+            eqs.place(&x0, &dx, 0.0);
+            (r, r2) = eqs.residual(&mut rhs);
             report.residual_evaluations += 1;
             boost *= 10.0;
             lambda = 0.0;
