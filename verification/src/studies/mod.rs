@@ -3,6 +3,7 @@
 pub mod energy_budget;
 pub mod exact_references;
 pub mod implicit_reference;
+pub mod line_statics;
 pub mod manufactured;
 pub mod section_energy;
 pub mod section_statics;
@@ -44,6 +45,11 @@ pub const STUDIES: &[Study] = &[
         run: implicit_reference::run,
     },
     Study { name: "section_statics", about: "section on strings vs exact statics; limits", run: section_statics::run },
+    Study {
+        name: "line_statics",
+        about: "bundles with spacers and phases on a shared elastic tower vs exact_line",
+        run: line_statics::run,
+    },
     Study {
         name: "energy",
         about: "discrete energy budget of the weight release, term by term",
