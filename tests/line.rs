@@ -13,8 +13,9 @@
 //!   leapfrog's `O(dt^2)` (its drift falls by about 4 when the step is halved);
 //! - a step above the stable step of a stiff attachment is refused, naming the node.
 //!
-//! Data: ACSR Drake 795 kcmil 26/7 (28.1 mm, 1.628 kg/m, EA = 2.9e7 N, RTS 140 kN: the catalogue
-//! `data/conductors.toml`); the earth wire a 3/8 in. extra-high-strength galvanised steel strand, 7 x
+//! Data: ACSR Drake 795 kcmil 26/7 (28.1 mm, 1.628 kg/m: the catalogue `data/conductors.toml`; EA =
+//! 2.9e7 N, E about 70 GPa on 402 mm^2, as `tests/section.rs` and the cases a-d, where the catalogue has
+//! the final modulus's 3.607e7 N); the earth wire a 3/8 in. extra-high-strength galvanised steel strand, 7 x
 //! 3.05 mm (9.5 mm, 0.407 kg/m, RTS 68.5 kN, EA = 186 GPa x 51.1 mm^2 = 9.5e6 N: ASTM A475 table values
 //! as we know them, not checked against a copy); strings 3.5 m, 100 kg, EA 5e7 N (as `tests/section.rs`);
 //! the earth wire's suspension clamp a 0.3 m link of 1.7e7 N/m (100 kg with its hardware); spacer arms 1e6 N/m (a rigid spacer frame of the order of 1e6-1e7 N/m; the static results do not

@@ -137,13 +137,16 @@ pub enum CaseError {
     /// the run failed
     #[error("{0}")]
     Run(#[from] Box<ohl::run::RunError>),
+    /// the run of a line failed
+    #[error("{0}")]
+    LineRun(#[from] Box<ohl::run::line::LineRunError>),
     /// a file could not be read or written
     #[error("{0}")]
     Io(String),
 }
 
 /// The columns of a CSV file by name.
-fn read_columns(path: &Path) -> Result<HashMap<String, Vec<f64>>, CaseError> {
+pub(crate) fn read_columns(path: &Path) -> Result<HashMap<String, Vec<f64>>, CaseError> {
     let io = |e: &dyn std::fmt::Display| CaseError::Io(format!("{}: {e}", path.display()));
     let mut r = csv::Reader::from_path(path).map_err(|e| io(&e))?;
     let names: Vec<String> = r.headers().map_err(|e| io(&e))?.iter().map(String::from).collect();

@@ -14,6 +14,7 @@
 
 pub mod bench;
 pub mod cases;
+pub mod line_cases;
 pub mod paper;
 pub mod plot;
 pub mod progress;

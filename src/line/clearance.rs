@@ -51,12 +51,16 @@ fn arc_fraction(w: &Wire, j: usize, f: f64) -> f64 {
     (before + f * w.reference_length[j]) / w.reference_length.iter().sum::<f64>()
 }
 
-/// Reusable buffers of [`least_distance`] (no allocation once grown).
+/// Reusable buffers of [`least_distance`] for one pair of conductors (no allocation once grown). Kept
+/// from one call to the next, they make the next call cheaper: the segment order of the last call is
+/// re-sorted by insertion (linear when the conductors have moved little), and the closest segment pair of
+/// the last call gives the first bound.
 #[derive(Clone, Debug, Default)]
 pub struct Scratch {
     order: Vec<usize>,
     lo: Vec<f64>,
     hi: Vec<f64>,
+    last: Option<(usize, usize)>,
 }
 
 /// The least distance between the intact segments of conductors `a` and `b`; `None` if either has none.
@@ -68,7 +72,7 @@ pub fn least_distance(a: &Wire, b: &Wire, scratch: &mut Scratch) -> Option<Close
     let hn = (h[0] * h[0] + h[1] * h[1]).sqrt();
     let e = if hn > 0.0 { [h[0] / hn, h[1] / hn] } else { [0.0, 1.0] };
     let proj = |w: &Wire, i: usize| e[0] * w.x[0][i] + e[1] * w.x[1][i];
-    let Scratch { order, lo, hi } = scratch;
+    let Scratch { order, lo, hi, last } = scratch;
     lo.clear();
     hi.clear();
     let mut ext_b = 0.0_f64;
@@ -78,9 +82,22 @@ pub fn least_distance(a: &Wire, b: &Wire, scratch: &mut Scratch) -> Option<Close
         hi.push(p.max(q));
         ext_b = ext_b.max((p - q).abs());
     }
-    order.clear();
-    order.extend((0..nb).filter(|&j| b.intact[j] > 0.0));
-    order.sort_unstable_by(|&i, &j| lo[i].total_cmp(&lo[j]));
+    // The intact segments sorted by `lo`: insertion sort from the last order (nearly sorted after one
+    // step: linear time), rebuilt when the segments changed (a break).
+    let intact = (0..nb).filter(|&j| b.intact[j] > 0.0).count();
+    if order.len() != intact || order.iter().any(|&j| j >= nb || b.intact[j] <= 0.0) {
+        order.clear();
+        order.extend((0..nb).filter(|&j| b.intact[j] > 0.0));
+    }
+    for i in 1..order.len() {
+        let (v, key) = (order[i], lo[order[i]]);
+        let mut k = i;
+        while k > 0 && lo[order[k - 1]].total_cmp(&key).is_gt() {
+            order[k] = order[k - 1];
+            k -= 1;
+        }
+        order[k] = v;
+    }
     if order.is_empty() || a.intact.iter().all(|&x| x <= 0.0) {
         return None;
     }
@@ -91,6 +108,13 @@ pub fn least_distance(a: &Wire, b: &Wire, scratch: &mut Scratch) -> Option<Close
     for k in 0..=8 {
         let (i, j) = (k * na / 8, k * nb / 8);
         best2 = best2.min(dist2(a.position(i), b.position(j)));
+    }
+    if let Some((i, j)) = *last
+        && i < na
+        && j < nb
+    {
+        let (d2, _, _) = closest_points(a.position(i), a.position(i + 1), b.position(j), b.position(j + 1));
+        best2 = best2.min(d2);
     }
     // Slightly above the bound so that the pair that attains it is visited.
     let mut best = best2.sqrt() * (1.0 + 1e-12) + 1e-300;
@@ -124,6 +148,7 @@ pub fn least_distance(a: &Wire, b: &Wire, scratch: &mut Scratch) -> Option<Close
             }
         }
     }
+    *last = found.map(|c| (c.segment_a, c.segment_b));
     found
 }
 
@@ -151,7 +176,14 @@ pub struct ClearanceTracker {
     current: Vec<Option<LeastClearance>>,
     /// the least clearance of each pair so far
     least: Vec<Option<LeastClearance>>,
-    scratch: Scratch,
+    /// one scratch per pair of conductors, kept between levels
+    scratch: std::collections::HashMap<(usize, usize), Scratch>,
+    /// each conductor's node positions at the last exact measurement [m]
+    reference: Vec<[Vec<f64>; 3]>,
+    /// each pair's distance at the last exact measurement [m]
+    measured: Vec<f64>,
+    /// exact measurements made and levels observed [-]
+    pub counts: (u64, u64),
 }
 
 impl ClearanceTracker {
@@ -160,7 +192,18 @@ impl ClearanceTracker {
         let g = groups.len();
         let pairs: Vec<(usize, usize)> = (0..g).flat_map(|a| (a + 1..g).map(move |b| (a, b))).collect();
         let n = pairs.len();
-        ClearanceTracker { groups, pairs, current: vec![None; n], least: vec![None; n], scratch: Scratch::default() }
+        let scratch = Default::default();
+        let (reference, measured) = (Vec::new(), vec![f64::NAN; n]);
+        ClearanceTracker {
+            groups,
+            pairs,
+            current: vec![None; n],
+            least: vec![None; n],
+            scratch,
+            reference,
+            measured,
+            counts: (0, 0),
+        }
     }
 
     /// The groups.
@@ -173,13 +216,58 @@ impl ClearanceTracker {
         &self.pairs
     }
 
+    /// Track every pair at time `t_s` [s] without missing a new least distance, measuring only where one
+    /// is possible: no node of conductor `c` has moved more than `delta_c` since the last measurement
+    /// (the largest distance of a node from its position then, computed over the nodes: `O(N)`), so the
+    /// distance of a pair measured `d` then is at least `d - delta_a - delta_b` now. Every pair is measured
+    /// when that bound of some pair is not above its least so far, or when `force` (a sample, the end);
+    /// otherwise [`ClearanceTracker::current`] keeps the last measurement. The least distances, their
+    /// times and places are those of measuring every level (a level skipped cannot hold a smaller one).
+    pub fn observe_bounded(&mut self, wires: &[&Wire], t_s: f64, force: bool) {
+        self.counts.1 += 1;
+        let moved: Vec<f64> = if self.reference.len() == wires.len() {
+            wires
+                .iter()
+                .zip(&self.reference)
+                .map(|(w, r)| {
+                    let mut m2 = 0.0_f64;
+                    for i in 0..w.nodes() {
+                        let d = [w.x[0][i] - r[0][i], w.x[1][i] - r[1][i], w.x[2][i] - r[2][i]];
+                        m2 = m2.max(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+                    }
+                    m2.sqrt()
+                })
+                .collect()
+        } else {
+            vec![f64::INFINITY; wires.len()]
+        };
+        let group_moved = |g: &[usize]| g.iter().map(|&c| moved[c]).fold(0.0, f64::max);
+        let possible = self.pairs.iter().enumerate().any(|(p, &(g, h))| {
+            let bound = self.measured[p] - group_moved(&self.groups[g]) - group_moved(&self.groups[h]);
+            // NaN (never measured, or a pair without segments) measures.
+            !(bound > self.least[p].map_or(f64::INFINITY, |l| l.closest.distance_m))
+        });
+        if force || possible {
+            self.observe(wires, t_s);
+        }
+    }
+
     /// Measure every pair at time `t_s` [s] for the conductors' wires.
     pub fn observe(&mut self, wires: &[&Wire], t_s: f64) {
+        self.counts.0 += 1;
+        self.reference.resize_with(wires.len(), Default::default);
+        for (r, w) in self.reference.iter_mut().zip(wires) {
+            for k in 0..3 {
+                r[k].clear();
+                r[k].extend_from_slice(&w.x[k]);
+            }
+        }
         for (p, &(g, h)) in self.pairs.iter().enumerate() {
             let mut best: Option<LeastClearance> = None;
             for &a in &self.groups[g] {
                 for &b in &self.groups[h] {
-                    if let Some(c) = least_distance(wires[a], wires[b], &mut self.scratch)
+                    let scratch = self.scratch.entry((a, b)).or_default();
+                    if let Some(c) = least_distance(wires[a], wires[b], scratch)
                         && best.is_none_or(|x| c.distance_m < x.closest.distance_m)
                     {
                         best = Some(LeastClearance { conductors: (a, b), closest: c, time_s: t_s });
@@ -187,6 +275,7 @@ impl ClearanceTracker {
                 }
             }
             self.current[p] = best;
+            self.measured[p] = best.map_or(f64::NAN, |b| b.closest.distance_m);
             if let Some(c) = best
                 && self.least[p].is_none_or(|x| c.closest.distance_m < x.closest.distance_m)
             {
@@ -251,6 +340,32 @@ mod tests {
         b.break_segment(c.segment_b);
         let c2 = least_distance(&a, &b, &mut scratch).unwrap();
         assert!(c2.distance_m >= c.distance_m);
+    }
+
+    /// The bounded tracker finds the same least distance, time and place as measuring every level, over
+    /// an oscillation that comes back near its minimum many times, and measures fewer levels.
+    #[test]
+    fn bounded_tracking_misses_no_minimum() {
+        let a = straight(0.0, 10.0, 30, 300.0, 0.0);
+        let mut b = straight(3.0, 10.0, 30, 300.0, 0.0);
+        let (mut every, mut bounded) =
+            (ClearanceTracker::new(vec![vec![0], vec![1]]), ClearanceTracker::new(vec![vec![0], vec![1]]));
+        for step in 0..4000 {
+            let t = step as f64 * 1e-3;
+            for i in 0..=30 {
+                let s = i as f64 / 30.0;
+                // a swing of slowly decaying amplitude with a faster ripple
+                let amp = (1.0 + 0.5 * (t * 0.7).sin()) * (-(t * 0.2)).exp();
+                b.x[0][i] =
+                    3.0 - 2.0 * amp * (4.0 * s * (1.0 - s)) * (t * 9.0).cos().abs() + 0.01 * (37.0 * t).sin() * s;
+            }
+            every.observe(&[&a, &b], t);
+            bounded.observe_bounded(&[&a, &b], t, step % 500 == 0);
+        }
+        let (e, g) = (every.least()[0].unwrap(), bounded.least()[0].unwrap());
+        assert_eq!(e.time_s, g.time_s);
+        assert_eq!(e.closest, g.closest);
+        assert!(bounded.counts.0 < bounded.counts.1, "measured {} of {} levels", bounded.counts.0, bounded.counts.1);
     }
 
     #[test]

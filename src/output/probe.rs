@@ -86,6 +86,11 @@ impl ProbePoint {
         ProbePoint { name: name.to_string(), at_fraction: f, segment: first + segment, weight, reference_m }
     }
 
+    /// The chord point the displacement is measured from [m].
+    pub fn reference_m(&self) -> [f64; 3] {
+        self.reference_m
+    }
+
     /// Position of the point [m].
     pub fn position(&self, wire: &Wire) -> [f64; 3] {
         let (j, w) = (self.segment, self.weight);

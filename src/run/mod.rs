@@ -10,6 +10,7 @@
 //! is observed ([`crate::events`]). A run until settled stops at the first level where the settle
 //! criterion holds and no event is pending.
 
+pub mod line;
 pub mod observer;
 pub mod settle;
 

@@ -7,6 +7,7 @@
 
 pub mod build;
 pub mod events;
+pub mod line;
 mod locate;
 pub mod rating;
 pub mod schema;
@@ -87,12 +88,20 @@ pub fn parse(text: &str, file: &str) -> Result<Scenario, InputError> {
 fn catalog_defaults(text: &str, file: &str) -> Result<Option<toml::Table>, InputError> {
     let Ok(mut doc) = text.parse::<toml::Table>() else { return Ok(None) };
     let Some(toml::Value::Table(c)) = doc.get_mut("conductor") else { return Ok(None) };
-    let Some(name) = c.get("catalog") else { return Ok(None) };
+    if fill_from_catalog(c, file, "conductor")? { Ok(Some(doc)) } else { Ok(None) }
+}
+
+/// Fill the fields a conductor table `c` (at the dotted path `field`) does not give from the catalogue
+/// conductor it names (`catalog = "..."`): `linear_density_kg_per_m`, `diameter_m`,
+/// `rated_tensile_strength_n`, `thermal_expansion_per_k` and `axial_stiffness_n` (unless
+/// `youngs_modulus_pa` is given). Returns whether it names one.
+pub(crate) fn fill_from_catalog(c: &mut toml::Table, file: &str, field: &str) -> Result<bool, InputError> {
+    let Some(name) = c.get("catalog") else { return Ok(false) };
     let Some(name) = name.as_str() else {
         return Err(InputError::Invalid {
             file: file.into(),
             problems: vec![Problem {
-                field: "conductor.catalog".into(),
+                field: format!("{field}.catalog"),
                 value: name.to_string(),
                 allowed: "must be a conductor's name (a string)".into(),
             }],
@@ -101,7 +110,7 @@ fn catalog_defaults(text: &str, file: &str) -> Result<Option<toml::Table>, Input
     let k = crate::thermal::catalog::find(name).map_err(|e| InputError::Invalid {
         file: file.into(),
         problems: vec![Problem {
-            field: "conductor.catalog".into(),
+            field: format!("{field}.catalog"),
             value: format!("{name:?}"),
             allowed: e.to_string(),
         }],
@@ -117,7 +126,7 @@ fn catalog_defaults(text: &str, file: &str) -> Result<Option<toml::Table>, Input
     if with_ea {
         fill("axial_stiffness_n", k.axial_stiffness_n);
     }
-    Ok(Some(doc))
+    Ok(true)
 }
 
 /// The error of a TOML file that does not parse (the message has line and column).

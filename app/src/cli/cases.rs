@@ -47,6 +47,16 @@ pub fn main(args: CasesArgs) -> ExitCode {
     };
     let mut code = 0u8;
     for p in &paths {
+        if ohl_app::line_cases::is_line_case(p) {
+            match ohl_app::line_cases::run_line_case(p, &args.out) {
+                Ok(c) => println!("{}", ohl_app::line_cases::format_line_table(&c)),
+                Err(e) => {
+                    eprintln!("error: {e}");
+                    code = code.max(if matches!(e, CaseError::Input(_)) { 2 } else { 1 });
+                }
+            }
+            continue;
+        }
         match cases::run_case(p, &args.out) {
             Ok(c) => println!("{}", cases::format_table(&c)),
             Err(e) => {

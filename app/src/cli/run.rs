@@ -45,6 +45,9 @@ pub fn main(args: RunArgs) -> ExitCode {
         eprintln!("error: {}: {message}", path.display());
         return ExitCode::from(2);
     }
+    if std::fs::read_to_string(&path).is_ok_and(|t| scenario::line::is_line(&t)) {
+        return run_line(&path, &out, quiet, dry_run, allow_large);
+    }
     let plan = match scenario::load(&path).and_then(|sc| scenario::plan(&sc, &path.display().to_string())) {
         Ok(p) => p,
         Err(e) => {
@@ -130,4 +133,107 @@ fn heat_case_refusal(path: &std::path::Path) -> Option<String> {
         let stem = path.file_stem().and_then(|s| s.to_str()).unwrap_or("CASE");
         format!("a heat-conduction case (it has a [rod] section), not a wire scenario: run it with `ohl paper {stem}`")
     })
+}
+
+/// `ohl run` on a line scenario (a file with `[line]`: several conductors, [`ohl::scenario::line`]).
+fn run_line(path: &std::path::Path, out: &std::path::Path, quiet: bool, dry_run: bool, allow_large: bool) -> ExitCode {
+    use ohl::run::line::{LineRunError, run_line};
+    use ohl::scenario::work::{BUDGET_NODE_STEPS, THROUGHPUT_NODE_STEPS_PER_S};
+    let file = path.display().to_string();
+    let plan = match scenario::read_text(path)
+        .and_then(|t| scenario::line::parse(&t, &file))
+        .and_then(|s| scenario::line::plan(&s, &file))
+    {
+        Ok(p) => p,
+        Err(e) => {
+            eprintln!("error: {e}");
+            return ExitCode::from(2);
+        }
+    };
+    for (p, name) in plan.plans.iter().zip(plan.line.names()) {
+        for w in &p.warnings {
+            eprintln!("warning: {file}: {name}: {w}");
+        }
+    }
+    // Work: every conductor's nodes, every step of the line.
+    let nodes: usize = plan.line.conductors().iter().map(|c| c.wire().nodes()).sum();
+    let steps = (plan.stop.horizon_s() / plan.line.params().dt_s).ceil() + 1.0;
+    let node_steps = nodes as f64 * steps;
+    if dry_run {
+        println!("{}: dry run, nothing run", plan.name);
+        println!(
+            "  conductors: {}, nodes: {nodes}, time step: {:.6e} s",
+            plan.line.conductors().len(),
+            plan.line.params().dt_s
+        );
+        println!("  steps: {steps:.6e}, node-steps: {node_steps:.6e} (budget {BUDGET_NODE_STEPS:.1e})");
+        println!(
+            "  wall time: about {:.3e} s at {THROUGHPUT_NODE_STEPS_PER_S:.1e} node-steps/s",
+            node_steps / THROUGHPUT_NODE_STEPS_PER_S
+        );
+        return ExitCode::SUCCESS;
+    }
+    if node_steps > BUDGET_NODE_STEPS && !allow_large {
+        eprintln!(
+            "error: {file}: the run needs {node_steps:.3e} node-steps, above the budget {BUDGET_NODE_STEPS:.1e}: \
+             use coarser grids or a shorter end time, or pass --allow-large"
+        );
+        return ExitCode::from(2);
+    }
+    match run_line(plan, Some(out)) {
+        Ok(o) => {
+            if !quiet {
+                print_line_summary(&o.summary, out);
+            }
+            ExitCode::SUCCESS
+        }
+        Err(LineRunError::Unstable { instability, .. }) => {
+            eprintln!("error: {file}: {instability}; output so far is in {}", out.display());
+            ExitCode::from(1)
+        }
+        Err(e) => {
+            eprintln!("error: {e}");
+            ExitCode::from(1)
+        }
+    }
+}
+
+/// The summary of a line run, a few lines per conductor, pair and tower.
+fn print_line_summary(s: &ohl::run::line::LineSummary, out: &std::path::Path) {
+    println!("{}: {} at t = {:.4} s after {} steps of {:.4e} s", s.name, s.status, s.final_time_s, s.steps, s.dt_s);
+    for c in &s.conductors {
+        println!(
+            "  {} ({}): peak tension {:.1} N at {:.3} s, final {:.1} N",
+            c.name, c.role, c.peak_max_tension_n, c.peak_max_tension_time_s, c.final_max_tension_n
+        );
+    }
+    for c in &s.clearances {
+        println!(
+            "  clearance {} - {}: least {:.3} m at {:.3} s ({} at {:.3}, {} at {:.3} of their lengths); initial {:.3} m, final {:.3} m",
+            c.between[0],
+            c.between[1],
+            c.least_m,
+            c.time_s,
+            c.conductors[0],
+            c.at_fraction[0],
+            c.conductors[1],
+            c.at_fraction[1],
+            c.initial_m,
+            c.final_m
+        );
+    }
+    for t in &s.towers {
+        let f = t.final_force_n;
+        println!(
+            "  tower {}: peak |F| {:.1} N at {:.3} s; final F = [{:.1}, {:.1}, {:.1}] N",
+            t.name, t.peak_force_magnitude_n, t.peak_force_time_s, f[0], f[1], f[2]
+        );
+    }
+    for a in &s.attachments {
+        println!(
+            "  {} x {}: largest tension {:.1} N at {:.3} s ({} - {})",
+            a.count, a.kind, a.peak_tension_n, a.time_s, a.ends[0], a.ends[1]
+        );
+    }
+    println!("  throughput {:.3e} node-steps/s; written to {}", s.node_steps_per_second, out.display());
 }

@@ -1,0 +1,470 @@
+//! The run of a line of several conductors ([`crate::scenario::line::LinePlan`]): one short loop over the
+//! line's time levels that applies each conductor's events, steps the line ([`LineExplicit`]) and notifies
+//! the observers.
+//!
+//! Each conductor gets the standard outputs of a single-conductor run (its own `timeseries.csv`,
+//! `snapshots.csv` and peaks, tracked every level, under `conductors/NAME/`); the line adds, every level:
+//!
+//! - the least distance between every pair of conductor groups (phase to phase, phase to earth wire, bundle
+//!   to bundle: [`crate::line::clearance`]) with its minimum, where (the Lagrangian coordinates of the two
+//!   closest points, as fractions of each conductor's unstretched length) and when, in `summary.json`, and
+//!   sampled in `clearances.csv`;
+//! - each tower's resultant (the force of every attachment on it) with its largest magnitude and when, and
+//!   its displacement, sampled in `towers.csv`.
+//!
+//! Asking for more output never changes the trajectory: samples are taken at the first level at or after
+//! their time; only events land the clock.
+
+use std::path::Path;
+use std::time::Instant;
+
+use serde::Serialize;
+
+use crate::events::EventState;
+use crate::line::clearance::ClearanceTracker;
+use crate::line::{LinkKind, Role};
+use crate::output::clock::{LANDING, SampleClock};
+use crate::output::peaks::Peak;
+use crate::output::rows::{RowFile, write_atomically};
+use crate::output::{Peaks, ProbePoint, Snapshots, Timeseries};
+use crate::scenario::build::Stop;
+use crate::scenario::line::LinePlan;
+use crate::scheme::{LineExplicit, LineInstability};
+
+use super::{Control, Ending, Level, Observer, OutputError, Settle, timeseries_columns};
+
+/// The summary of a conductor of the line.
+#[derive(Clone, Debug, Serialize)]
+pub struct ConductorSummary {
+    /// its name
+    pub name: String,
+    /// "phase", "earth_wire" or "sub_conductor"
+    pub role: String,
+    /// largest segment tension over the run [N]
+    pub peak_max_tension_n: f64,
+    /// when [s]
+    pub peak_max_tension_time_s: f64,
+    /// largest segment tension at the end [N]
+    pub final_max_tension_n: f64,
+    /// mid-span displacement from the initial position at the end [m]
+    pub final_midspan_displacement_m: [f64; 3],
+    /// largest-magnitude mid-span displacement per component over the run [m]
+    pub peak_midspan_displacement_m: [Peak; 3],
+}
+
+/// The least clearance of a pair of conductor groups.
+#[derive(Clone, Debug, Serialize)]
+pub struct ClearanceSummary {
+    /// the two groups (phases, earth wires, bundles) by name
+    pub between: [String; 2],
+    /// the least distance over the run, every level [m]
+    pub least_m: f64,
+    /// when [s]
+    pub time_s: f64,
+    /// the two conductors at the least distance
+    pub conductors: [String; 2],
+    /// where on each: fraction of its unstretched length from its first node [-]
+    pub at_fraction: [f64; 2],
+    /// the two closest points then [m]
+    pub points_m: [[f64; 3]; 2],
+    /// the distance at the start [m]
+    pub initial_m: f64,
+    /// the distance at the end [m]
+    pub final_m: f64,
+}
+
+/// The loads on a tower.
+#[derive(Clone, Debug, Serialize)]
+pub struct TowerSummary {
+    /// its name
+    pub name: String,
+    /// resultant of all attachments at the end [N]
+    pub final_force_n: [f64; 3],
+    /// the resultant of largest magnitude over the run [N]
+    pub peak_force_n: [f64; 3],
+    /// its magnitude [N]
+    pub peak_force_magnitude_n: f64,
+    /// when [s]
+    pub peak_force_time_s: f64,
+    /// displacement of an elastic top at the end [m] (0 for a rigid tower)
+    pub final_displacement_m: [f64; 3],
+}
+
+/// The largest force in the attachments of one kind (strings, spacer arms, ...).
+#[derive(Clone, Debug, Serialize)]
+pub struct AttachmentSummary {
+    /// "suspension_string", "tension_string", "spacer" or "interphase_spacer"
+    pub kind: String,
+    /// how many of this kind
+    pub count: usize,
+    /// the attachment with the largest tension magnitude (its index in the line's links)
+    pub link: usize,
+    /// its two ends, e.g. "A.1 node 63" and "A.2 node 63", or "T2"
+    pub ends: [String; 2],
+    /// its tension of largest magnitude, with its sign (negative: a spacer arm in compression) [N]
+    pub peak_tension_n: f64,
+    /// when [s]
+    pub time_s: f64,
+}
+
+/// An event as applied.
+#[derive(Clone, Debug, Serialize)]
+pub struct LineEventRecord {
+    /// when [s]
+    pub time_s: f64,
+    /// the conductor
+    pub conductor: String,
+    /// what
+    pub what: String,
+}
+
+/// `summary.json` of a line run.
+#[derive(Clone, Debug, Serialize)]
+pub struct LineSummary {
+    /// scenario name
+    pub name: String,
+    /// "completed", "settled", "not_settled" or "unstable"
+    pub status: String,
+    /// time reached [s]
+    pub final_time_s: f64,
+    /// steps taken
+    pub steps: u64,
+    /// nominal step [s]
+    pub dt_s: f64,
+    /// wall time of the loop [s]
+    pub wall_time_s: f64,
+    /// node-steps (all conductors) per wall second
+    pub node_steps_per_second: f64,
+    /// per conductor
+    pub conductors: Vec<ConductorSummary>,
+    /// per pair of conductor groups
+    pub clearances: Vec<ClearanceSummary>,
+    /// levels at which the clearances were measured, and levels in all: a level is measured when a new
+    /// least distance is possible there ([`ClearanceTracker::observe_bounded`]) or a sample is due
+    pub clearance_levels_measured: [u64; 2],
+    /// per tower
+    pub towers: Vec<TowerSummary>,
+    /// per kind of attachment, its largest force (every level)
+    pub attachments: Vec<AttachmentSummary>,
+    /// the events applied
+    pub events: Vec<LineEventRecord>,
+    /// why the run stopped early, if it did: time, conductor, node and reason
+    pub instability: Option<String>,
+}
+
+/// What a line run leaves.
+#[derive(Clone, Debug)]
+pub struct LineOutcome {
+    /// its summary
+    pub summary: LineSummary,
+    /// the line at the end
+    pub line: LineExplicit,
+}
+
+/// Why a line run failed.
+#[derive(Debug, thiserror::Error)]
+pub enum LineRunError {
+    /// an output could not be written
+    #[error(transparent)]
+    Io(#[from] OutputError),
+    /// the scheme went unstable (the files hold what was written so far)
+    #[error("{instability}")]
+    Unstable {
+        /// when, which conductor, which node, why
+        instability: LineInstability,
+        /// the state at that time
+        outcome: Box<LineOutcome>,
+    },
+}
+
+/// A conductor's name as a file or column name: letters, digits, '-' and '.', the rest '_'.
+pub fn slug(name: &str) -> String {
+    name.chars().map(|c| if c.is_ascii_alphanumeric() || c == '-' || c == '.' { c } else { '_' }).collect()
+}
+
+/// The standard observers of one conductor.
+struct ConductorOutputs {
+    peaks: Peaks,
+    settle: Option<Settle>,
+    series: Option<Timeseries>,
+    snaps: Option<Snapshots>,
+    mid: ProbePoint,
+}
+
+impl ConductorOutputs {
+    fn each(&mut self) -> impl Iterator<Item = &mut dyn Observer> {
+        let mut v: Vec<&mut dyn Observer> = vec![&mut self.peaks];
+        v.extend(self.settle.as_mut().map(|o| o as &mut dyn Observer));
+        v.extend(self.series.as_mut().map(|o| o as &mut dyn Observer));
+        v.extend(self.snaps.as_mut().map(|o| o as &mut dyn Observer));
+        v.into_iter()
+    }
+}
+
+/// Run the line to its end (or until every conductor has settled after the last event), writing into
+/// `out_dir` if given.
+pub fn run_line(plan: LinePlan, out_dir: Option<&Path>) -> Result<LineOutcome, LineRunError> {
+    let mut line = plan.line.clone();
+    let n = line.conductors().len();
+    let names: Vec<String> = line.names().to_vec();
+    let mut timelines: Vec<EventState> = plan.plans.iter().map(EventState::new).collect();
+    if let Some(d) = out_dir {
+        std::fs::create_dir_all(d).map_err(OutputError::at(d))?;
+    }
+    let mut outputs = Vec::with_capacity(n);
+    for (c, p) in plan.plans.iter().enumerate() {
+        let wire = line.conductors()[c].wire();
+        let mid = ProbePoint::new(crate::output::probe::MIDSPAN, 0.5, wire);
+        let from_s = p.peaks_from_s.unwrap_or_else(|| p.events.first().map_or(0.0, |e| e.time_s));
+        let peaks = Peaks::new(from_s, vec![mid.clone()], wire.supports().len(), p.spans.clone(), p.ground.clone());
+        let settle = match p.stop {
+            Stop::Settled { fraction, window_s, .. } => Some(Settle::new(fraction, window_s)),
+            Stop::EndTime(_) => None,
+        };
+        let (series, snaps) = match out_dir {
+            Some(d) => {
+                let dir = d.join("conductors").join(slug(&names[c]));
+                std::fs::create_dir_all(&dir).map_err(OutputError::at(&dir))?;
+                let ts =
+                    Timeseries::with_columns(&dir.join("timeseries.csv"), p.sample_interval_s, timeseries_columns(p))?;
+                (Some(ts), Some(Snapshots::create(&dir.join("snapshots.csv"), p.snapshot_times_s.clone())?))
+            }
+            None => (None, None),
+        };
+        outputs.push(ConductorOutputs { peaks, settle, series, snaps, mid });
+    }
+    let mut clearance = ClearanceTracker::new(plan.groups.clone());
+    let pair_names: Vec<[String; 2]> =
+        clearance.pairs().iter().map(|&(a, b)| [plan.group_names[a].clone(), plan.group_names[b].clone()]).collect();
+    let towers: Vec<String> = line.supports().map(|s| s.name.clone()).collect();
+    let tower_list: Vec<usize> = (0..towers.len()).collect();
+    let mut files = match out_dir {
+        Some(d) => {
+            let mut head = vec!["t_s".to_string()];
+            head.extend(pair_names.iter().map(|[a, b]| format!("clearance_{}_{}_m", slug(a), slug(b))));
+            let cl = RowFile::create(&d.join("clearances.csv"), &head)
+                .map_err(OutputError::at(&d.join("clearances.csv")))?;
+            let mut head = vec!["t_s".to_string()];
+            for t in &towers {
+                let t = slug(t);
+                head.extend(["f1_n", "f2_n", "f3_n", "u1_m", "u2_m"].map(|q| format!("{t}_{q}")));
+            }
+            let tw = RowFile::create(&d.join("towers.csv"), &head).map_err(OutputError::at(&d.join("towers.csv")))?;
+            Some((cl, tw))
+        }
+        None => None,
+    };
+    let mut clock = SampleClock::new(plan.sample_interval_s);
+    // The largest tension magnitude of each link kind: (link, tension, time).
+    let kinds = [LinkKind::SuspensionString, LinkKind::TensionString, LinkKind::Spacer, LinkKind::InterphaseSpacer];
+    let mut link_peak: Vec<Option<(usize, f64, f64)>> = vec![None; kinds.len()];
+    let mut tower_peak: Vec<([f64; 3], f64, f64)> = vec![([0.0; 3], 0.0, 0.0); towers.len()];
+    let mut initial_clearance: Vec<f64> = Vec::new();
+    let mut log: Vec<LineEventRecord> = Vec::new();
+    let (dt, horizon) = (line.params().dt_s, plan.stop.horizon_s());
+    let tol = LANDING * dt;
+    let started = Instant::now();
+    let mut failure: Option<LineInstability> = None;
+    let ending = loop {
+        let t = line.time_s();
+        for c in 0..n {
+            let applied = timelines[c].apply_due(line.conductor_mut(c), t, tol);
+            if applied > 0 {
+                let tl = &timelines[c].log;
+                let what = tl[tl.len() - applied..].iter().map(|(_, w)| w.as_str()).collect::<Vec<_>>().join("; ");
+                outputs[c].each().for_each(|o| o.event(t, &what));
+                log.push(LineEventRecord { time_s: t, conductor: names[c].clone(), what });
+            }
+            timelines[c].before_step(line.conductor_mut(c), t);
+        }
+        line.evaluate_forces();
+        let mut all_settled = true;
+        for c in 0..n {
+            let level = Level { solver: &line.conductors()[c], t_s: t, tau_per_s: plan.plans[c].tau(1.0) };
+            let mut settled = false;
+            for o in outputs[c].each() {
+                settled |= o.observe(&level)? == Control::Settled;
+            }
+            all_settled &= settled;
+        }
+        let sample_due = files.is_some() && clock.next_s() <= t + tol;
+        clearance.observe_bounded(&line.wires(), t, sample_due || initial_clearance.is_empty());
+        if initial_clearance.is_empty() {
+            initial_clearance =
+                clearance.current().iter().map(|c| c.map_or(f64::NAN, |c| c.closest.distance_m)).collect();
+        }
+        for l in 0..line.links().len() {
+            let k = kinds.iter().position(|&k| k == line.links()[l].kind).unwrap_or(0);
+            let tl = line.link_tension_n(l);
+            if link_peak[k].is_none_or(|(_, v, _)| tl.abs() > v.abs()) {
+                link_peak[k] = Some((l, tl, t));
+            }
+        }
+        for &s in &tower_list {
+            let f = line.support_resultant_n(s);
+            let m = (f[0] * f[0] + f[1] * f[1] + f[2] * f[2]).sqrt();
+            if m > tower_peak[s].1 {
+                tower_peak[s] = (f, m, t);
+            }
+        }
+        if let Some((cl, tw)) = files.as_mut()
+            && clock.due(t, tol)
+        {
+            cl.number(t);
+            for c in clearance.current() {
+                cl.number(c.map_or(f64::NAN, |c| c.closest.distance_m));
+            }
+            cl.end_row();
+            tw.number(t);
+            for &s in &tower_list {
+                let (f, u) = (line.support_resultant_n(s), line.support_displacement_m(s));
+                for v in [f[0], f[1], f[2], u[0], u[1]] {
+                    tw.number(v);
+                }
+            }
+            tw.end_row();
+            cl.commit().map_err(OutputError::at(&out_dir.unwrap_or(Path::new(".")).join("clearances.csv")))?;
+            tw.commit().map_err(OutputError::at(&out_dir.unwrap_or(Path::new(".")).join("towers.csv")))?;
+        }
+        let pending = timelines.iter().any(|tl| tl.next_time().is_some());
+        if all_settled && !pending {
+            break Ending::Settled;
+        }
+        if t >= horizon - tol {
+            break if matches!(plan.stop, Stop::Settled { .. }) { Ending::NotSettled } else { Ending::Completed };
+        }
+        let next = timelines.iter().filter_map(|tl| tl.next_time()).fold(horizon, f64::min);
+        let target = next.min(horizon);
+        let h = if target - t <= dt * (1.0 + 1.0e-12) { target - t } else { dt };
+        if let Err(e) = line.step(h) {
+            let source = e.source.clone();
+            failure = Some(e);
+            break Ending::Unstable(source);
+        }
+        if h < dt {
+            line.land_on(target);
+        }
+        for c in 0..n {
+            timelines[c].after_step(line.conductor_mut(c), h);
+        }
+    };
+    line.evaluate_forces();
+    if failure.is_none() {
+        // The final values are measured (the last level may have been skipped by the bound).
+        clearance.observe(&line.wires(), line.time_s());
+    }
+    for c in 0..n {
+        let level = Level { solver: &line.conductors()[c], t_s: line.time_s(), tau_per_s: plan.plans[c].tau(1.0) };
+        for o in outputs[c].each() {
+            o.finish(&level, &ending)?;
+        }
+    }
+    if let Some((cl, tw)) = files.as_mut() {
+        let d = out_dir.unwrap_or(Path::new("."));
+        cl.finish().map_err(OutputError::at(&d.join("clearances.csv")))?;
+        tw.finish().map_err(OutputError::at(&d.join("towers.csv")))?;
+    }
+    let wall = started.elapsed().as_secs_f64();
+    let nodes: usize = line.conductors().iter().map(|c| c.wire().nodes()).sum();
+    let summary = LineSummary {
+        name: plan.name.clone(),
+        status: ending.status().into(),
+        final_time_s: line.time_s(),
+        steps: line.steps(),
+        dt_s: dt,
+        wall_time_s: wall,
+        node_steps_per_second: if wall > 0.0 { nodes as f64 * line.steps() as f64 / wall } else { 0.0 },
+        conductors: (0..n)
+            .map(|c| {
+                let s = &line.conductors()[c];
+                let run = &outputs[c].peaks.run;
+                ConductorSummary {
+                    name: names[c].clone(),
+                    role: match line.roles()[c] {
+                        Role::Phase => "phase",
+                        Role::EarthWire => "earth_wire",
+                        Role::SubConductor { .. } => "sub_conductor",
+                    }
+                    .into(),
+                    peak_max_tension_n: run.max_tension.value_n,
+                    peak_max_tension_time_s: run.max_tension.time_s,
+                    final_max_tension_n: s.max_tension_n(),
+                    final_midspan_displacement_m: outputs[c].mid.displacement(s.wire()),
+                    peak_midspan_displacement_m: run.probes[0],
+                }
+            })
+            .collect(),
+        clearance_levels_measured: [clearance.counts.0, clearance.counts.1],
+        clearances: clearance
+            .least()
+            .iter()
+            .zip(clearance.current())
+            .zip(&pair_names)
+            .zip(&initial_clearance)
+            .filter_map(|(((least, now), between), &initial_m)| {
+                let l = (*least)?;
+                let (a, b) = l.conductors;
+                let wires = line.wires();
+                Some(ClearanceSummary {
+                    between: between.clone(),
+                    least_m: l.closest.distance_m,
+                    time_s: l.time_s,
+                    conductors: [names[a].clone(), names[b].clone()],
+                    at_fraction: [l.closest.arc_fraction_a(wires[a]), l.closest.arc_fraction_b(wires[b])],
+                    points_m: [l.closest.point_a_m, l.closest.point_b_m],
+                    initial_m,
+                    final_m: now.map_or(f64::NAN, |c| c.closest.distance_m),
+                })
+            })
+            .collect(),
+        towers: tower_list
+            .iter()
+            .map(|&s| TowerSummary {
+                name: towers[s].clone(),
+                final_force_n: line.support_resultant_n(s),
+                peak_force_n: tower_peak[s].0,
+                peak_force_magnitude_n: tower_peak[s].1,
+                peak_force_time_s: tower_peak[s].2,
+                final_displacement_m: line.support_displacement_m(s),
+            })
+            .collect(),
+        attachments: kinds
+            .iter()
+            .zip(&link_peak)
+            .filter_map(|(kind, peak)| {
+                let (l, v, t) = (*peak)?;
+                let end = |e: &crate::line::Endpoint| match *e {
+                    crate::line::Endpoint::Node(n) => format!("{} node {}", names[n.conductor], n.node),
+                    crate::line::Endpoint::Support { support, .. } => towers[support].clone(),
+                };
+                let link = &line.links()[l];
+                Some(AttachmentSummary {
+                    kind: match kind {
+                        LinkKind::SuspensionString => "suspension_string",
+                        LinkKind::TensionString => "tension_string",
+                        LinkKind::Spacer => "spacer",
+                        LinkKind::InterphaseSpacer => "interphase_spacer",
+                    }
+                    .into(),
+                    count: line.links().iter().filter(|x| x.kind == *kind).count(),
+                    link: l,
+                    ends: [end(&link.a), end(&link.b)],
+                    peak_tension_n: v,
+                    time_s: t,
+                })
+            })
+            .collect(),
+        events: log,
+        instability: failure.as_ref().map(|f| f.to_string()),
+    };
+    if let Some(d) = out_dir {
+        let text = serde_json::to_string_pretty(&summary).expect("the summary serialises") + "\n";
+        let path = d.join("summary.json");
+        write_atomically(&path, &text).map_err(OutputError::at(&path))?;
+    }
+    let outcome = LineOutcome { summary, line };
+    match failure {
+        Some(instability) => Err(LineRunError::Unstable { instability, outcome: Box::new(outcome) }),
+        None => Ok(outcome),
+    }
+}

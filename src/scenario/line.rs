@@ -1,0 +1,656 @@
+//! A line scenario: several conductors in one file (`[line]`), on the supports of a section each, sharing
+//! towers; phases, earth wires and bundles of sub-conductors with spacers.
+//!
+//! Each conductor of `[[line.conductors]]` is described as a single-conductor scenario is (its own
+//! `conductor` and `section` tables, its own `events`), and is checked and built by the very code of a
+//! single-conductor scenario ([`super::build`]), with the file's global `[loads]`, `[numerics]`,
+//! `[duration]`, `[output]` and `[ground]`; every message names the field under `line.conductors[k]`. The
+//! line then joins them ([`crate::line`]):
+//!
+//! - `line.towers`: supports shared by several conductors, rigid or elastic (horizontal springs along and
+//!   across the line, a mass, a damping: [`crate::line::ElasticSupport`]);
+//! - `towers = ["", "T2", ""]` in a conductor: which tower holds each support of its section (`""`: a
+//!   support of its own). A suspension string on a tower becomes a string link from the tower (its pivot an
+//!   offset from the tower's position) to the clamp; a dead-end on a tower is a fixed node whose reaction
+//!   the tower carries (rigid towers only);
+//! - `bundle`: the conductor is a bundle of `sub_conductors` sub-conductors on a circle of `diameter_m`,
+//!   each a copy of the conductor moved by its offset, each on its own string (a bundle's yoke is not
+//!   modelled), joined by spacers (every pair of sub-conductors by an arm of `spacer_stiffness_n_per_m`).
+//!
+//! A conductor whose supports are all its own and whose strings have no axial damping is, in the line,
+//! bit for bit the single-conductor scenario (its strings stay the wire's own). The line runs at the
+//! smallest time step of its conductors, checked against the stable step of every link
+//! ([`crate::scheme::line`]).
+
+use serde::Deserialize;
+
+use super::InputError;
+use super::build::{Plan, Stop, build};
+use super::events::{EventSpec, GroundSpec};
+use super::schema::{
+    ConductorSpec, DurationSpec, InitialSpec, LoadsSpec, NumericsSpec, OutputSpec, Scenario, SectionSpec,
+};
+use super::validate::Problem;
+use crate::element::LinkLaw;
+use crate::events::Action;
+use crate::line::{
+    DeadEnd, ElasticSupport, Endpoint, LineConductor, Link, LinkKind, Model, NodeRef, PointMass, Role, Support,
+};
+use crate::scheme::{LineError, LineExplicit, StepParams};
+
+/// A scenario of several conductors.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LineScenario {
+    /// short name of the case (free text)
+    #[serde(default)]
+    pub name: Option<String>,
+    /// what the case is and where it comes from (free text)
+    #[serde(default)]
+    pub description: Option<String>,
+    /// the conductors and their towers
+    pub line: LineSpec,
+    /// gravity, uniform loads and wind, for every conductor (each with its own diameter)
+    #[serde(default)]
+    pub loads: LoadsSpec,
+    /// time step, smoothing and damping
+    #[serde(default)]
+    pub numerics: NumericsSpec,
+    /// when the run ends
+    pub duration: DurationSpec,
+    /// what is written
+    #[serde(default)]
+    pub output: OutputSpec,
+    /// ground plane, if any (section 4.4)
+    #[serde(default)]
+    pub ground: Option<GroundSpec>,
+    /// the initial state of the line
+    #[serde(default)]
+    pub initial: LineInitialSpec,
+    /// events that act on every conductor (a wind switch, a gust, a temperature), as `[[events]]` of a
+    /// single-conductor scenario; a conductor's own events are in its `events`
+    #[serde(default)]
+    pub events: Vec<EventSpec>,
+}
+
+/// `[initial]` of a line.
+#[derive(Clone, Copy, Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LineInitialSpec {
+    /// `"strung"` (default: each span's elastic catenary between plumb clamps, as a section) or
+    /// `"equilibrium"` (at rest on the static equilibrium of the whole line at `t = 0`, spacers, towers and
+    /// the ice of events at `t = 0` included: [`crate::statics::solve_line`])
+    #[serde(default)]
+    pub shape: LineShapeSpec,
+}
+
+/// The initial shape of a line.
+#[derive(Clone, Copy, Debug, Default, Deserialize, PartialEq, Eq)]
+#[serde(rename_all = "snake_case")]
+pub enum LineShapeSpec {
+    /// each conductor as strung
+    #[default]
+    Strung,
+    /// the static equilibrium of the line
+    Equilibrium,
+}
+
+/// `[line]`: towers and conductors.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LineSpec {
+    /// supports shared by several conductors
+    #[serde(default)]
+    pub towers: Vec<TowerSpec>,
+    /// axial damping `BA` [N s] of every suspension string, in [0, 1e7]; default 0 (a string rings on its
+    /// axial mode, about 100 Hz, after a sudden unloading; 1e4 N s damps it in a few periods)
+    #[serde(default)]
+    pub string_damping_n_s: f64,
+    /// the conductors (at least one)
+    #[serde(default)]
+    pub conductors: Vec<LineConductorSpec>,
+}
+
+/// A tower (a support shared by several conductors).
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct TowerSpec {
+    /// its name, unique, used by the conductors' `towers` lists
+    pub name: String,
+    /// its reference point [m] (the strings' pivots are offsets from it)
+    pub position_m: [f64; 3],
+    /// springs of an elastic tower top; absent: rigid
+    #[serde(default)]
+    pub elastic: Option<TowerElasticSpec>,
+}
+
+/// The elastic top of a tower: it moves horizontally on springs, rigid vertically.
+#[derive(Clone, Copy, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct TowerElasticSpec {
+    /// horizontal direction of the line at the tower `e_l` [-] (normalised); default `[0, 1, 0]` (+x2)
+    #[serde(default = "default_along")]
+    pub along: [f64; 3],
+    /// spring along the line `k_l` [N/m], in [1e2, 1e10]
+    pub along_n_per_m: f64,
+    /// spring across the line `k_t` [N/m], in [1e2, 1e10]
+    pub across_n_per_m: f64,
+    /// mass moving with the top `M` [kg], in [1, 1e6]
+    pub mass_kg: f64,
+    /// viscous damping `c_d` [N s/m], in [0, 1e8]; default 0
+    #[serde(default)]
+    pub damping_n_s_per_m: f64,
+}
+
+fn default_along() -> [f64; 3] {
+    [0.0, 1.0, 0.0]
+}
+
+/// What a conductor is.
+#[derive(Clone, Copy, Debug, Default, Deserialize, PartialEq, Eq)]
+#[serde(rename_all = "snake_case")]
+pub enum RoleSpec {
+    /// a phase conductor (default)
+    #[default]
+    Phase,
+    /// an earth (shield) wire
+    EarthWire,
+}
+
+/// One conductor of the line.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LineConductorSpec {
+    /// its name, unique (outputs are written under it)
+    pub name: String,
+    /// phase (default) or earth wire
+    #[serde(default)]
+    pub role: RoleSpec,
+    /// the conductor, as `[conductor]` of a single-conductor scenario
+    pub conductor: ConductorSpec,
+    /// its section, as `[section]` of a single-conductor scenario
+    pub section: SectionSpec,
+    /// for each support of the section, the tower that holds it (`""`: a support of its own); empty:
+    /// every support its own
+    #[serde(default)]
+    pub towers: Vec<String>,
+    /// a bundle of sub-conductors with spacers; absent: a single conductor
+    #[serde(default)]
+    pub bundle: Option<BundleToml>,
+    /// the conductor's own events, as `[[events]]` of a single-conductor scenario
+    #[serde(default)]
+    pub events: Vec<EventSpec>,
+    /// for a bundle: the sub-conductors (numbered from 1, as their names `NAME.1`, `NAME.2`, ...) that the
+    /// events act on; empty: all of them
+    #[serde(default)]
+    pub events_on: Vec<usize>,
+}
+
+/// A bundle.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BundleToml {
+    /// number of sub-conductors, in [2, 8] (twin: side by side; triple: apex up; quad: a square)
+    pub sub_conductors: usize,
+    /// diameter of the circle through the sub-conductors [m], in [0.05, 3] (a twin's spacing; a quad of
+    /// side `a` has `a sqrt(2)`)
+    pub diameter_m: f64,
+    /// spacer positions: `{ span = k, at_fraction = f }`, `f` in (0, 1) of the span's unstretched length
+    pub spacers: Vec<SpacerAt>,
+    /// stiffness of each spacer arm [N/m], in [1e3, 1e9]; default 1e6 (rigid spacer frames: 1e6 to 1e7)
+    #[serde(default = "default_spacer_stiffness")]
+    pub spacer_stiffness_n_per_m: f64,
+    /// damping of each spacer arm [N s/m], in [0, 1e6]; default 0 (damping spacers: 1e2 to 1e4)
+    #[serde(default)]
+    pub spacer_damping_n_s_per_m: f64,
+    /// mass of one spacer [kg], in [0, 100], shared by its clamps; default 0 (spacers weigh 1 to 10 kg)
+    #[serde(default)]
+    pub spacer_mass_kg: f64,
+}
+
+fn default_spacer_stiffness() -> f64 {
+    1.0e6
+}
+
+/// Where a spacer sits.
+#[derive(Clone, Copy, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SpacerAt {
+    /// span index (0 = the first span of the section)
+    pub span: usize,
+    /// fraction of the span's unstretched length, in (0, 1)
+    pub at_fraction: f64,
+}
+
+/// A line ready to run: the solver, each conductor's plan (its event timeline, probes, outputs) and what
+/// the line's outputs need.
+#[derive(Clone, Debug)]
+pub struct LinePlan {
+    /// scenario name
+    pub name: String,
+    /// the solver at `t = 0`
+    pub line: LineExplicit,
+    /// each conductor's plan, in the order of the line's conductors (a bundle's sub-conductors share
+    /// their conductor's plan, with the solver replaced by the sub-conductor's)
+    pub plans: Vec<Plan>,
+    /// the conductor groups whose clearances are tracked (a phase, an earth wire, a bundle's members)
+    pub groups: Vec<Vec<usize>>,
+    /// the groups' names
+    pub group_names: Vec<String>,
+    /// when to stop
+    pub stop: Stop,
+    /// interval between time-series rows [s]
+    pub sample_interval_s: f64,
+}
+
+/// Parse a line scenario from TOML text (`file` names it in messages). Each conductor's `conductor`
+/// table may name a catalogue conductor, as `[conductor]` of a single-conductor scenario.
+pub fn parse(text: &str, file: &str) -> Result<LineScenario, InputError> {
+    let Ok(mut doc) = text.parse::<toml::Table>() else {
+        return toml::from_str(text).map_err(|e| super::parse_error_at(text, file, e));
+    };
+    let mut resolved = false;
+    if let Some(toml::Value::Table(line)) = doc.get_mut("line")
+        && let Some(toml::Value::Array(cs)) = line.get_mut("conductors")
+    {
+        for (k, c) in cs.iter_mut().enumerate() {
+            if let toml::Value::Table(c) = c
+                && let Some(toml::Value::Table(cd)) = c.get_mut("conductor")
+            {
+                resolved |= super::fill_from_catalog(cd, file, &format!("line.conductors[{k}].conductor"))?;
+            }
+        }
+    }
+    if resolved {
+        toml::Value::Table(doc).try_into().map_err(|e| super::parse_error(file, e))
+    } else {
+        toml::from_str(text).map_err(|e| super::parse_error_at(text, file, e))
+    }
+}
+
+/// Whether a TOML text is a line scenario (it has a `[line]` table).
+pub fn is_line(text: &str) -> bool {
+    text.parse::<toml::Table>().is_ok_and(|t| t.contains_key("line"))
+}
+
+/// Check every field and build the line; every problem is reported with its field.
+pub fn plan(s: &LineScenario, file: &str) -> Result<LinePlan, InputError> {
+    build_line(s).map_err(|problems| InputError::Invalid { file: file.to_string(), problems })
+}
+
+/// A conductor's single-conductor scenario: its tables and the file's global ones.
+fn single(s: &LineScenario, c: &LineConductorSpec) -> Scenario {
+    Scenario {
+        name: Some(c.name.clone()),
+        description: None,
+        conductor: c.conductor.clone(),
+        geometry: None,
+        section: Some(c.section.clone()),
+        initial: InitialSpec::default(),
+        loads: s.loads.clone(),
+        numerics: s.numerics.clone(),
+        duration: s.duration.clone(),
+        output: s.output.clone(),
+        ground: s.ground.clone(),
+        events: c.events.iter().chain(&s.events).cloned().collect(),
+        thermal: None,
+        rating: None,
+        paper: None,
+    }
+}
+
+/// The field path of a conductor's own table under `line.conductors[k]`; global tables keep theirs. The
+/// conductor's single scenario lists its own `own_events` events first, then the global ones.
+fn prefixed(k: usize, field: &str, own_events: usize) -> String {
+    if let Some(rest) = field.strip_prefix("events[") {
+        let (index, tail) = rest.split_once(']').unwrap_or((rest, ""));
+        return match index.parse::<usize>() {
+            Ok(j) if j < own_events => format!("line.conductors[{k}].events[{j}]{tail}"),
+            Ok(j) => format!("events[{}]{tail}", j - own_events),
+            Err(_) => field.to_string(),
+        };
+    }
+    let own = ["conductor", "section", "events"];
+    if own.iter().any(|o| field == *o || field.starts_with(&format!("{o}.")) || field.starts_with(&format!("{o}["))) {
+        format!("line.conductors[{k}].{field}")
+    } else {
+        field.to_string()
+    }
+}
+
+fn build_line(s: &LineScenario) -> Result<LinePlan, Vec<Problem>> {
+    let mut problems: Vec<Problem> = Vec::new();
+    let mut fail = |field: String, value: String, allowed: &str| {
+        problems.push(Problem { field, value, allowed: allowed.into() });
+    };
+    let spec = &s.line;
+    if spec.conductors.is_empty() {
+        fail("line.conductors".into(), "[]".into(), "a line needs at least one conductor");
+    }
+    if !(spec.string_damping_n_s.is_finite() && (0.0..=1e7).contains(&spec.string_damping_n_s)) {
+        fail("line.string_damping_n_s".into(), spec.string_damping_n_s.to_string(), "must be in [0, 1e7] N s");
+    }
+    for (t, tower) in spec.towers.iter().enumerate() {
+        let f = |name: &str| format!("line.towers[{t}].{name}");
+        if tower.name.is_empty() || spec.towers[..t].iter().any(|o| o.name == tower.name) {
+            fail(f("name"), format!("{:?}", tower.name), "must be a non-empty name, unique among the towers");
+        }
+        if !tower.position_m.iter().all(|v| v.is_finite() && v.abs() <= 1e7) {
+            fail(f("position_m"), format!("{:?}", tower.position_m), "must be three finite coordinates within 1e7 m");
+        }
+        if let Some(e) = &tower.elastic {
+            let mut within = |name: &str, v: f64, lo: f64, hi: f64, allowed: &str| {
+                if !(v.is_finite() && v >= lo && v <= hi) {
+                    fail(f(&format!("elastic.{name}")), v.to_string(), allowed);
+                }
+            };
+            within("along_n_per_m", e.along_n_per_m, 1e2, 1e10, "must be in [1e2, 1e10] N/m");
+            within("across_n_per_m", e.across_n_per_m, 1e2, 1e10, "must be in [1e2, 1e10] N/m");
+            within("mass_kg", e.mass_kg, 1.0, 1e6, "must be in [1, 1e6] kg");
+            within("damping_n_s_per_m", e.damping_n_s_per_m, 0.0, 1e8, "must be in [0, 1e8] N s/m");
+            let h = (e.along[0] * e.along[0] + e.along[1] * e.along[1]).sqrt();
+            if !(h.is_finite() && h > 1e-6 && e.along[2] == 0.0) {
+                fail(
+                    f("elastic.along"),
+                    format!("{:?}", e.along),
+                    "must be a horizontal direction [a, b, 0], not zero",
+                );
+            }
+        }
+    }
+    let mut plans = Vec::new();
+    let mut nested: Vec<Problem> = Vec::new();
+    for (k, c) in spec.conductors.iter().enumerate() {
+        let f = |name: &str| format!("line.conductors[{k}].{name}");
+        if c.name.is_empty() || spec.conductors[..k].iter().any(|o| o.name == c.name) {
+            fail(f("name"), format!("{:?}", c.name), "must be a non-empty name, unique among the conductors");
+        }
+        let n_sup = c.section.supports.len();
+        if !c.towers.is_empty() && c.towers.len() != n_sup {
+            fail(
+                f("towers"),
+                format!("{} names", c.towers.len()),
+                &format!("must name one tower (or \"\") per support of the section: {n_sup}"),
+            );
+        }
+        for (j, t) in c.towers.iter().enumerate() {
+            if !t.is_empty() && !spec.towers.iter().any(|x| &x.name == t) {
+                fail(
+                    f(&format!("towers[{j}]")),
+                    format!("{t:?}"),
+                    "must be \"\" or the name of a tower of line.towers",
+                );
+            }
+        }
+        if let Some(b) = &c.bundle {
+            let mut within = |name: &str, v: f64, lo: f64, hi: f64, allowed: &str| {
+                if !(v.is_finite() && v >= lo && v <= hi) {
+                    fail(f(&format!("bundle.{name}")), v.to_string(), allowed);
+                }
+            };
+            within("diameter_m", b.diameter_m, 0.05, 3.0, "must be in [0.05, 3] m");
+            within("spacer_stiffness_n_per_m", b.spacer_stiffness_n_per_m, 1e3, 1e9, "must be in [1e3, 1e9] N/m");
+            within("spacer_damping_n_s_per_m", b.spacer_damping_n_s_per_m, 0.0, 1e6, "must be in [0, 1e6] N s/m");
+            within("spacer_mass_kg", b.spacer_mass_kg, 0.0, 100.0, "must be in [0, 100] kg");
+            if !(2..=8).contains(&b.sub_conductors) {
+                fail(f("bundle.sub_conductors"), b.sub_conductors.to_string(), "must be in [2, 8]");
+            }
+            for (j, sp) in b.spacers.iter().enumerate() {
+                if sp.span + 1 >= n_sup.max(1) {
+                    fail(
+                        f(&format!("bundle.spacers[{j}].span")),
+                        sp.span.to_string(),
+                        &format!("must be a span of the section: 0 to {}", n_sup.saturating_sub(2)),
+                    );
+                }
+                if !(sp.at_fraction.is_finite() && sp.at_fraction > 0.0 && sp.at_fraction < 1.0) {
+                    fail(
+                        f(&format!("bundle.spacers[{j}].at_fraction")),
+                        sp.at_fraction.to_string(),
+                        "must be in (0, 1)",
+                    );
+                }
+            }
+        }
+        let members = c.bundle.as_ref().map_or(1, |b| b.sub_conductors);
+        for (j, &m) in c.events_on.iter().enumerate() {
+            if m == 0 || m > members || c.bundle.is_none() {
+                fail(
+                    f(&format!("events_on[{j}]")),
+                    m.to_string(),
+                    &format!("must number a sub-conductor of the bundle: 1 to {members} (a bundle only)"),
+                );
+            }
+        }
+        match build(&single(s, c)) {
+            Ok(p) => plans.push(Some(p)),
+            Err(ps) => {
+                for p in ps {
+                    let field = prefixed(k, &p.field, c.events.len());
+                    if !nested.iter().any(|q| q.field == field && q.value == p.value) {
+                        nested.push(Problem { field, ..p });
+                    }
+                }
+                plans.push(None);
+            }
+        }
+    }
+    problems.extend(nested);
+    if !problems.is_empty() {
+        return Err(problems);
+    }
+    let plans: Vec<Plan> = plans.into_iter().flatten().collect();
+    assemble(s, plans)
+}
+
+/// Join the conductors' plans into the line's model and solver.
+fn assemble(s: &LineScenario, plans: Vec<Plan>) -> Result<LinePlan, Vec<Problem>> {
+    let spec = &s.line;
+    let problem = |field: String, value: String, allowed: String| vec![Problem { field, value, allowed }];
+    let mut model = Model::new();
+    for t in &spec.towers {
+        model.add_support(Support {
+            name: t.name.clone(),
+            position_m: t.position_m,
+            elastic: t.elastic.map(|e| {
+                let h = (e.along[0] * e.along[0] + e.along[1] * e.along[1]).sqrt();
+                ElasticSupport {
+                    along: [e.along[0] / h, e.along[1] / h, 0.0],
+                    along_n_per_m: e.along_n_per_m,
+                    across_n_per_m: e.across_n_per_m,
+                    mass_kg: e.mass_kg,
+                    damping_n_s_per_m: e.damping_n_s_per_m,
+                }
+            }),
+        });
+    }
+    let tower_index = |name: &str| spec.towers.iter().position(|t| t.name == name);
+    let mut line_plans = Vec::new();
+    let (mut groups, mut group_names) = (Vec::new(), Vec::new());
+    let mut bundles = 0;
+    for (k, (c, plan)) in spec.conductors.iter().zip(&plans).enumerate() {
+        let f = |name: &str| format!("line.conductors[{k}].{name}");
+        let base = plan.solver.wire().clone();
+        let n_sup = c.section.supports.len();
+        // The node of each support of the section.
+        let mut support_node: Vec<usize> = plan.spans.iter().map(|&(first, _)| first).collect();
+        // `Plan::spans` holds each span's (first node, last node).
+        let &(_, last) = plan.spans.last().expect("a section has spans");
+        support_node.push(last);
+        let offsets: Vec<[f64; 2]> = match &c.bundle {
+            Some(b) => {
+                crate::line::build::BundleSpec::regular(b.sub_conductors, b.diameter_m, Vec::new(), 1.0).offsets_m
+            }
+            None => vec![[0.0, 0.0]],
+        };
+        // Across the line: e_t = e3 x e_l from the section's first to last support.
+        let (a, z) = (base.position(support_node[0]), base.position(support_node[n_sup - 1]));
+        let h = [z[0] - a[0], z[1] - a[1]];
+        let hn = (h[0] * h[0] + h[1] * h[1]).sqrt().max(f64::MIN_POSITIVE);
+        let across = [-h[1] / hn, h[0] / hn];
+        let role = match c.role {
+            RoleSpec::Phase => Role::Phase,
+            RoleSpec::EarthWire => Role::EarthWire,
+        };
+        let mut members = Vec::new();
+        for (i, o) in offsets.iter().enumerate() {
+            let shift = [o[0] * across[0], o[0] * across[1], o[1]];
+            let mut wire = base.clone();
+            if shift != [0.0; 3] {
+                for kk in 0..3 {
+                    for x in &mut wire.x[kk] {
+                        *x += shift[kk];
+                    }
+                }
+                for ins in &mut wire.insulators {
+                    for kk in 0..3 {
+                        ins.pivot_m[kk] += shift[kk];
+                    }
+                }
+            }
+            let index = model.conductors.len();
+            // Supports on towers, and strings that need axial damping, become links.
+            for (j, &node) in support_node.iter().enumerate() {
+                let tower = c.towers.get(j).filter(|t| !t.is_empty()).and_then(|t| tower_index(t));
+                let ins = wire.insulators.iter().position(|s| s.node == node);
+                match (tower, ins) {
+                    (Some(t), None) => {
+                        if model.supports[t].elastic.is_some() {
+                            return Err(problem(
+                                f(&format!("towers[{j}]")),
+                                format!("{:?}", c.towers[j]),
+                                "a dead-end cannot be held by an elastic tower top (hang it on a rigid tower, or give the support a string)".into(),
+                            ));
+                        }
+                        model.dead_ends.push(DeadEnd { node: NodeRef::new(index, node), support: t });
+                    }
+                    (tower, Some(s)) if tower.is_some() || spec.string_damping_n_s > 0.0 => {
+                        let ins = wire.insulators.remove(s);
+                        if ins.crossarm.is_some() && tower.is_some() {
+                            return Err(problem(
+                                f(&format!("section.supports[{j}].crossarm")),
+                                "a crossarm".into(),
+                                "a string on a tower takes the tower's elasticity: give the tower `elastic` instead"
+                                    .into(),
+                            ));
+                        }
+                        let support = match tower {
+                            Some(t) => t,
+                            None => model.add_support(Support::rigid(format!("{} support {j}", c.name), ins.pivot_m)),
+                        };
+                        let p = model.supports[support].position_m;
+                        let offset_m = [ins.pivot_m[0] - p[0], ins.pivot_m[1] - p[1], ins.pivot_m[2] - p[2]];
+                        model.links.push(Link {
+                            kind: LinkKind::SuspensionString,
+                            a: Endpoint::Support { support, offset_m },
+                            b: Endpoint::Node(NodeRef::new(index, node)),
+                            law: LinkLaw::string(ins.length_m, ins.stiffness_n, spec.string_damping_n_s),
+                            intact: true,
+                        });
+                    }
+                    _ => {}
+                }
+            }
+            // The member's own timeline: the conductor's events, if they act on it; with an equilibrium
+            // start, the ice of t = 0 applied now (part of the initial state, as for one conductor).
+            let mut own = plan.clone();
+            if !(c.events_on.is_empty() || c.events_on.contains(&(i + 1))) {
+                own.events.clear();
+            }
+            if s.initial.shape == LineShapeSpec::Equilibrium {
+                let (now, later): (Vec<_>, Vec<_>) = std::mem::take(&mut own.events)
+                    .into_iter()
+                    .partition(|e| e.time_s == 0.0 && matches!(e.action, Action::Ice { .. }));
+                own.events = later;
+                for e in now {
+                    if let Action::Ice { segments, delta_kg_per_m } = e.action
+                        && !wire.add_linear_density(segments, delta_kg_per_m)
+                    {
+                        return Err(problem(
+                            f("events"),
+                            "ice at t = 0".into(),
+                            "leaves a segment without mass".into(),
+                        ));
+                    }
+                }
+            }
+            line_plans.push(own);
+            let name = if offsets.len() > 1 { format!("{}.{}", c.name, i + 1) } else { c.name.clone() };
+            let role = if offsets.len() > 1 { Role::SubConductor { bundle: bundles, index: i } } else { role };
+            model.conductors.push(LineConductor { name, role, wire, loads: *plan.solver.loads() });
+            members.push(index);
+        }
+        if let Some(b) = &c.bundle {
+            bundles += 1;
+            for sp in &b.spacers {
+                let (first, last) = plan.spans[sp.span];
+                let count = last - first;
+                let node = first + ((sp.at_fraction * count as f64).round() as usize).clamp(1, count - 1);
+                let n = members.len();
+                for i in 0..n {
+                    for j in i + 1..n {
+                        let (p, q) = (offsets[i], offsets[j]);
+                        let len = ((p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2)).sqrt();
+                        model.links.push(Link {
+                            kind: LinkKind::Spacer,
+                            a: Endpoint::Node(NodeRef::new(members[i], node)),
+                            b: Endpoint::Node(NodeRef::new(members[j], node)),
+                            law: LinkLaw::spring(len, b.spacer_stiffness_n_per_m, b.spacer_damping_n_s_per_m),
+                            intact: true,
+                        });
+                    }
+                    if b.spacer_mass_kg > 0.0 {
+                        model.point_masses.push(PointMass {
+                            node: NodeRef::new(members[i], node),
+                            mass_kg: b.spacer_mass_kg / n as f64,
+                        });
+                    }
+                }
+            }
+        }
+        groups.push(members);
+        group_names.push(c.name.clone());
+    }
+    // The smallest step of the conductors, the smoothing coefficient per that step.
+    let params = plans
+        .iter()
+        .map(|p| *p.solver.params())
+        .min_by(|a, b| a.dt_s.total_cmp(&b.dt_s))
+        .expect("at least one conductor");
+    let line = LineExplicit::new(&model, StepParams { ..params }).map_err(|e| match e {
+        LineError::Step { .. } => problem(
+            "numerics.courant".into(),
+            s.numerics.courant.to_string(),
+            format!("{e}: lower the Courant number, or soften the attachment"),
+        ),
+        LineError::Model(m) => problem("line".into(), "(model)".into(), m.to_string()),
+    })?;
+    let mut line = line;
+    if s.initial.shape == LineShapeSpec::Equilibrium {
+        crate::statics::solve_line(&mut line, &crate::statics::StaticOptions::default()).map_err(|e| {
+            problem(
+                "initial.shape".into(),
+                "\"equilibrium\"".into(),
+                format!("the static equilibrium of the line at t = 0 was not found: {e}"),
+            )
+        })?;
+    }
+    // Ground contact, as each conductor's plan has it (switched on after the equilibrium, as for one).
+    for (c, p) in line_plans.iter().enumerate() {
+        if let Some(g) = p.solver.ground() {
+            line.conductor_mut(c).set_ground(Some(g.clone()));
+        }
+    }
+    for (p, c) in line_plans.iter_mut().zip(line.conductors()) {
+        p.solver = c.clone();
+    }
+    Ok(LinePlan {
+        name: s.name.clone().unwrap_or_else(|| "line".into()),
+        line,
+        plans: line_plans,
+        groups,
+        group_names,
+        stop: plans[0].stop,
+        sample_interval_s: plans[0].sample_interval_s,
+    })
+}
