@@ -35,3 +35,16 @@ fn the_readme_scenario_example_is_valid_and_runs() {
     let opts = ohl::run::RunOptions { out_dir: None, record: false };
     ohl::run::run(plan, &opts).unwrap_or_else(|e| panic!("{e}"));
 }
+
+/// The README's line example (the block with `[line]`) is a valid line scenario and runs.
+#[test]
+fn the_readme_line_example_is_valid_and_runs() {
+    let readme = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("README.md")).expect("README");
+    let blocks: Vec<String> = toml_blocks(&readme).into_iter().filter(|b| ohl::scenario::line::is_line(b)).collect();
+    assert_eq!(blocks.len(), 1, "the README has one line example");
+    let file = "README.md ([line] block)";
+    let sc = ohl::scenario::line::parse(&blocks[0], file).unwrap_or_else(|e| panic!("{e}"));
+    let mut plan = ohl::scenario::line::plan(&sc, file).unwrap_or_else(|e| panic!("{e}"));
+    plan.stop = ohl::scenario::build::Stop::EndTime(0.5);
+    ohl::run::line::run_line(plan, None).unwrap_or_else(|e| panic!("{e}"));
+}

@@ -245,7 +245,8 @@ impl ClearanceTracker {
         let possible = self.pairs.iter().enumerate().any(|(p, &(g, h))| {
             let bound = self.measured[p] - group_moved(&self.groups[g]) - group_moved(&self.groups[h]);
             // NaN (never measured, or a pair without segments) measures.
-            !(bound > self.least[p].map_or(f64::INFINITY, |l| l.closest.distance_m))
+            let least = self.least[p].map_or(f64::INFINITY, |l| l.closest.distance_m);
+            bound.partial_cmp(&least) != Some(std::cmp::Ordering::Greater)
         });
         if force || possible {
             self.observe(wires, t_s);

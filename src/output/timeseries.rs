@@ -8,8 +8,10 @@
 //! support `k` (fixed nodes in node order) `support{k}_f1_n`, `support{k}_f2_n`, `support{k}_f3_n` [N],
 //! the force the wire applies to the support (tension plus the node's share of the loads and weight; for
 //! a suspension support the force its string applies to the crossarm); then for each suspension support
-//! `k` `support{k}_swing_along_deg`, `support{k}_swing_across_deg` [deg] (the string's swing from plumb,
-//! along the line and across it) and `support{k}_arm_dx1_m`, `support{k}_arm_dx2_m` [m] (the crossarm
+//! `k` `support{k}_swing_along_deg`, `support{k}_swing_across_deg` [deg] (the string's swing from plumb:
+//! along the line, positive when the clamp has moved towards `+e_l`, the horizontal direction from the
+//! section's first support to its last; across it, positive towards `e_t = e3 x e_l`, to the left of the
+//! line: `-x1` for a line along `+x2`) and `support{k}_arm_dx1_m`, `support{k}_arm_dx2_m` [m] (the crossarm
 //! pivot's displacement; zero for a rigid crossarm); then for each span `k` of a section
 //! `span{k}_max_tension_n` [N] (its largest segment tension) and, with a ground,
 //! `span{k}_clearance_m` [m] (its least vertical clearance `min (x3 - h(x2))` over its nodes); then, with

@@ -20,12 +20,15 @@
 //! node pass after the loop over all nodes, as a single section's strings do), so a line of uncoupled
 //! conductors reproduces the single-conductor runs bit for bit (test `uncoupled_conductors_are_bitwise_single_runs`).
 //!
-//! Time step. Every node and support must satisfy the leapfrog's bound with explicit damping,
-//! `W dt^2 / 4 + D dt / 2 <= 1`, where `W = (K + sum_j k_j sqrt(M / m_j)) / M` is Gershgorin's bound on
-//! `omega^2` for the node's row of `M^-1/2 K M^-1/2` (`K` the sum of the axial stiffnesses joined to the
-//! node: `EA / l0` of its segments, `EA / L0` of its links, a support's larger spring; the sum over those
-//! whose other end `j` moves, of mass `m_j`; `M` the node's mass) and `D` the same bound on the damping
-//! rate (`eta / l0`, `BA / L0`, `c_d`): the
+//! Time step. The step must satisfy the leapfrog's bound with explicit damping, `W dt^2 / 4 + D dt / 2
+//! <= 1`, with `W` a bound on the largest `omega^2` and `D` on the largest modal damping rate. By
+//! Gershgorin's theorem on the similar matrices `M^-1 K` and `M^-1/2 K M^-1/2`, `W` is the largest over the
+//! nodes and supports of `(K + sum_j k_j) / M` (form A) or of `(K + sum_j k_j sqrt(M / m_j)) / M` (form B),
+//! whichever form gives the smaller bound (`K` the sum of the axial stiffnesses joined to the node: `EA /
+//! l0` of its segments, `EA / L0` of its links, a support's larger spring; the sums over those whose other
+//! end `j`, of mass `m_j`, moves; `M` the node's mass); `D` likewise from the dampers (`eta / l0`, `BA / L0`,
+//! `c_d`; on a support's two horizontal unknowns only the horizontal part `|t_h|^2` of a link's axial
+//! stiffness, plus its geometric stiffness `T / L`): the
 //! damped-leapfrog condition `C^2 + 2 z C <= 1` of [`super::courant`] for each mode. For a conductor's own
 //! interior node this is exactly its Courant limit `C <= sqrt(1 + z^2) - z`; for a clamp it is the bound of
 //! [`crate::wire::insulator::clamp_stable_step_s`]; links and point masses can only lower it.
@@ -425,17 +428,32 @@ impl LineExplicit {
     }
 }
 
-/// Refuse a step above the stable step of any node or support (module doc).
+/// Refuse a step above the stable step of the line (module doc).
 fn check_step(model: &Model, wires: &[Wire], dt: f64) -> Result<(), LineError> {
-    // Gershgorin rows of M^-1/2 K M^-1/2 (and of C), times the node's mass: per node (and support) the
-    // springs and dampers joined to it (the diagonal) plus, for those whose other end moves, the spring
-    // times sqrt(m_i / m_j) (the off-diagonal); an end held fixed adds none.
+    // Gershgorin rows, times the node's mass, of the two similar matrices M^-1 K and M^-1/2 K M^-1/2 (and
+    // of C): per node (and support) the springs and dampers joined to it (the diagonal) plus, for those
+    // whose other end moves, the spring (form A) or the spring times sqrt(m_i / m_j) (form B); an end held
+    // fixed adds none. Each form bounds the largest eigenvalue by its largest row; the smaller bound holds.
     #[derive(Clone, Copy, Default)]
     struct Row {
         k: f64,
-        k_row: f64,
         c: f64,
-        c_row: f64,
+        /// row sums of forms A and B [N/m], [N s/m]
+        k_row: [f64; 2],
+        c_row: [f64; 2],
+    }
+    impl Row {
+        /// A spring and damper on the node's own unknowns (`k`, `c`) and, if its other end moves (with
+        /// `sqrt(m_i / m_j)`), their coupling to it (`k_off`, `c_off`).
+        fn add(&mut self, (k, k_off): (f64, f64), (c, c_off): (f64, f64), off: Option<f64>) {
+            self.k += k;
+            self.c += c;
+            let (a, b) = off.map_or((0.0, 0.0), |r| (1.0, r));
+            self.k_row[0] += k + k_off * a;
+            self.k_row[1] += k + k_off * b;
+            self.c_row[0] += c + c_off * a;
+            self.c_row[1] += c + c_off * b;
+        }
     }
     // The mass of an end that moves, `None` for a held one.
     let moving_mass = |e: &Endpoint| match *e {
@@ -455,71 +473,77 @@ fn check_step(model: &Model, wires: &[Wire], dt: f64) -> Result<(), LineError> {
         for j in 0..w.segments() {
             let (k, c) = (w.axial_stiffness_n[j] / w.rest_length[j], w.internal_friction_n_s[j] / w.rest_length[j]);
             for (node, other) in [(j, j + 1), (j + 1, j)] {
-                let r = &mut rows[i][node];
-                let off = if w.free[other] > 0.0 { (w.mass[node] / w.mass[other]).sqrt() } else { 0.0 };
-                r.k += k;
-                r.c += c;
-                r.k_row += k * (1.0 + off);
-                r.c_row += c * (1.0 + off);
+                let off = (w.free[other] > 0.0).then(|| (w.mass[node] / w.mass[other]).sqrt());
+                rows[i][node].add((k, k), (c, c), off);
             }
         }
     }
     for l in &model.links {
+        // The link's stiffness `k t t^T + (T / L) (I - t t^T)` and damping `c t t^T`: on a support's two
+        // horizontal unknowns only their horizontal part acts (`|t_h|^2` of the axial part; a plumb string
+        // hardly moves a tower top sideways), and the coupling of a node to a support is `|t_h|` of it.
         let (k, c) = (l.law.stiffness_n_per_m(), l.law.damping_n_s_per_m());
+        let (ra, rb) = (model.endpoint_position(&l.a), model.endpoint_position(&l.b));
+        let d = [rb[0] - ra[0], rb[1] - ra[1], rb[2] - ra[2]];
+        let len = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
+        let h = if len > 0.0 { (d[0] * d[0] + d[1] * d[1]).sqrt() / len } else { 1.0 };
+        let geometric = if len > 0.0 { l.law.tension(d, [0.0; 3]).0.abs() / len } else { 0.0 };
+        let on_support = |e: &Endpoint| matches!(e, Endpoint::Support { .. });
         for (end, other) in [(&l.a, &l.b), (&l.b, &l.a)] {
-            let off = moving_mass(other).map_or(0.0, |m| (mass(end) / m).sqrt());
-            let r = match *end {
-                Endpoint::Node(n) => &mut rows[n.conductor][n.node],
-                Endpoint::Support { support, .. } => &mut srows[support],
-            };
-            r.k += k;
-            r.c += c;
-            r.k_row += k * (1.0 + off);
-            r.c_row += c * (1.0 + off);
+            let off = moving_mass(other).map(|m| (mass(end) / m).sqrt());
+            let own = if on_support(end) { h * h } else { 1.0 };
+            let across = if on_support(end) || on_support(other) { h } else { 1.0 };
+            let kk = (k * own + geometric, k * across + geometric);
+            let cc = (c * own, c * across);
+            match *end {
+                Endpoint::Node(n) => rows[n.conductor][n.node].add(kk, cc, off),
+                Endpoint::Support { support, .. } => srows[support].add(kk, cc, off),
+            }
         }
     }
-    // W dt^2 / 4 + D dt / 2 <= 1 with W = k_row / M >= omega^2 and D = c_row / M >= the modal damping rate.
-    let limit = |r: &Row, m: f64| {
-        let (a, b) = (r.k_row / (4.0 * m), r.c_row / (2.0 * m));
-        2.0 / (b + (b * b + 4.0 * a).sqrt())
-    };
-    let refuse = |lim: f64, at: String, r: &Row, m: f64| LineError::Step {
-        dt_s: dt,
-        limit_s: lim,
-        at,
-        stiffness_n_per_m: r.k,
-        damping_n_s_per_m: r.c,
-        mass_kg: m,
-    };
-    // A rounding slack so that a conductor run at exactly its Courant limit is not refused.
-    let slack = 1.0 + 1e-9;
+    // Every moving node and support: (where, its row, its mass).
+    let mut all: Vec<(String, Row, f64)> = Vec::new();
     for (i, w) in wires.iter().enumerate() {
-        for node in 0..w.nodes() {
-            if w.free[node] <= 0.0 {
-                continue;
-            }
-            let lim = limit(&rows[i][node], w.mass[node]);
-            if dt > lim * slack {
-                let at = format!("conductor '{}' node {node}", model.conductors[i].name);
-                return Err(refuse(lim, at, &rows[i][node], w.mass[node]));
-            }
+        for node in (0..w.nodes()).filter(|&n| w.free[n] > 0.0) {
+            all.push((format!("conductor '{}' node {node}", model.conductors[i].name), rows[i][node], w.mass[node]));
         }
     }
     for (s, sup) in model.supports.iter().enumerate() {
         let Some(e) = sup.elastic else { continue };
+        let mut r = srows[s];
         let spring = e.along_n_per_m.max(e.across_n_per_m);
-        let r = Row {
-            k: srows[s].k + spring,
-            k_row: srows[s].k_row + spring,
-            c: srows[s].c + e.damping_n_s_per_m,
-            c_row: srows[s].c_row + e.damping_n_s_per_m,
-        };
-        let lim = limit(&r, e.mass_kg);
-        if dt > lim * slack {
-            return Err(refuse(lim, format!("support '{}'", sup.name), &r, e.mass_kg));
-        }
+        r.add((spring, spring), (e.damping_n_s_per_m, e.damping_n_s_per_m), None);
+        all.push((format!("support '{}'", sup.name), r, e.mass_kg));
     }
-    Ok(())
+    // W dt^2 / 4 + D dt / 2 <= 1 with W >= omega^2 and D >= the modal damping rate, from each form's
+    // largest row; the form with the larger stable step holds.
+    let limit = |w: f64, d: f64| 2.0 / (0.5 * d + (0.25 * d * d + w).sqrt());
+    let form = |f: usize| {
+        let w = all.iter().map(|(_, r, m)| r.k_row[f] / m).fold(0.0, f64::max);
+        let d = all.iter().map(|(_, r, m)| r.c_row[f] / m).fold(0.0, f64::max);
+        limit(w, d)
+    };
+    let lim = form(0).max(form(1));
+    // A rounding slack so that a conductor run at exactly its Courant limit is not refused.
+    if dt <= lim * (1.0 + 1e-9) {
+        return Ok(());
+    }
+    // Name the node with the smallest own limit (the stiffest row of the form that holds).
+    let f = if form(0) >= form(1) { 0 } else { 1 };
+    let (at, r, m) = all
+        .iter()
+        .min_by(|a, b| {
+            limit(a.1.k_row[f] / a.2, a.1.c_row[f] / a.2).total_cmp(&limit(b.1.k_row[f] / b.2, b.1.c_row[f] / b.2))
+        })
+        .expect("a refused step has a node");
+    Err(LineError::Step {
+        dt_s: dt,
+        limit_s: lim,
+        at: at.clone(),
+        stiffness_n_per_m: r.k,
+        damping_n_s_per_m: r.c,
+        mass_kg: *m,
+    })
 }
 
 fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {

@@ -1,0 +1,124 @@
+//! `docs/line.md`'s table of the `[line]` scenario fields is the schema: for every table of a line
+//! scenario that the page documents (`line`, `line.towers[]`, `line.towers[].elastic`,
+//! `line.conductors[]`, `line.conductors[].bundle`, `line.conductors[].bundle.spacers[]`, `initial`, and
+//! the top level), the fields the page lists are exactly those the parser accepts. The accepted fields
+//! come from the parser itself: a probe key added to the table makes serde (`deny_unknown_fields`) list
+//! every field it accepts. Fields of the single-conductor tables (`conductor`, `section`, `events`, and
+//! the top-level `loads`, `numerics`, `duration`, `output`, `ground`, `name`, `description`) are
+//! referenced in `docs/scenario.md` and checked there.
+
+use std::collections::{BTreeMap, BTreeSet};
+use std::path::Path;
+
+/// A line scenario with every table of the page present (the probe goes into each in turn).
+const FULL: &str = r#"
+[line]
+string_damping_n_s = 0.0
+towers = [{ name = "T", position_m = [0.0, 400.0, 30.0], elastic = { along_n_per_m = 1e5, across_n_per_m = 1e5, mass_kg = 500.0 } }]
+[[line.conductors]]
+name = "A"
+conductor = { axial_stiffness_n = 2.9e7, linear_density_kg_per_m = 1.628, diameter_m = 0.0281 }
+section = { horizontal_tension_n = 28000.0, segments_per_span = 8, supports = [
+  { kind = "dead_end", point_m = [0.0, 0.0, 26.5] },
+  { kind = "suspension", pivot_m = [0.0, 400.0, 30.0], insulator_length_m = 3.5, insulator_mass_kg = 100.0, insulator_stiffness_n = 5.0e7 },
+  { kind = "dead_end", point_m = [0.0, 800.0, 26.5] } ] }
+towers = ["", "T", ""]
+[line.conductors.bundle]
+sub_conductors = 2
+diameter_m = 0.4
+spacers = [{ span = 0, at_fraction = 0.5 }]
+[initial]
+shape = "strung"
+[duration]
+end_time_s = 1.0
+"#;
+
+/// The documented field paths: the first column of the page's table (backticked), e.g.
+/// `line.conductors[].bundle.diameter_m`.
+fn documented() -> BTreeSet<String> {
+    let page = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/line.md")).unwrap();
+    let start = page.find("## Scenario format").expect("the page has its scenario section");
+    let end = page[start..].find("\n## ").map_or(page.len(), |e| start + e);
+    page[start..end]
+        .lines()
+        .filter(|l| l.starts_with("| `"))
+        .filter_map(|l| l.split('`').nth(1).map(String::from))
+        .collect()
+}
+
+/// Split a field path into (its table, the field): `a.b[].c` -> (`a.b[]`, `c`); a path that names an
+/// array of tables (`line.towers`) is a field of its parent.
+fn split(path: &str) -> (String, String) {
+    match path.rsplit_once('.') {
+        Some((table, field)) => (table.to_string(), field.trim_end_matches("[]").to_string()),
+        None => (String::new(), path.trim_end_matches("[]").to_string()),
+    }
+}
+
+/// The table at `path` (`line.conductors[].bundle`) of the document, the first element of each array.
+fn table_at<'a>(doc: &'a mut toml::Table, path: &str) -> &'a mut toml::Table {
+    let mut t = doc;
+    for key in path.split('.').filter(|k| !k.is_empty()) {
+        let name = key.trim_end_matches("[]");
+        let v = t.get_mut(name).unwrap_or_else(|| panic!("no {name} in the full example"));
+        t = match v {
+            toml::Value::Table(x) => x,
+            toml::Value::Array(a) => match &mut a[0] {
+                toml::Value::Table(x) => x,
+                other => panic!("{name}: {other:?}"),
+            },
+            other => panic!("{name}: {other:?}"),
+        };
+    }
+    t
+}
+
+/// The fields serde accepts at `path`: the list in its error for an unknown key.
+fn accepted(path: &str) -> BTreeSet<String> {
+    let mut doc: toml::Table = FULL.parse().unwrap();
+    table_at(&mut doc, path).insert("zz_probe".into(), toml::Value::Integer(1));
+    let text = toml::to_string(&doc).unwrap();
+    let err = match ohl::scenario::line::parse(&text, "probe") {
+        Err(e) => e.to_string(),
+        Ok(_) => panic!("{path}: the probe key was accepted"),
+    };
+    let list =
+        err.split("expected one of").nth(1).or_else(|| err.split("expected").nth(1)).unwrap_or_else(|| panic!("{err}"));
+    list.split('`').skip(1).step_by(2).map(String::from).collect()
+}
+
+#[test]
+fn the_line_reference_is_the_schema() {
+    // The full example is a valid line scenario.
+    let sc = ohl::scenario::line::parse(FULL, "full").unwrap();
+    ohl::scenario::line::plan(&sc, "full").unwrap_or_else(|e| panic!("{e}"));
+    let mut tables: BTreeMap<String, BTreeSet<String>> = BTreeMap::new();
+    for path in documented() {
+        // The field, and each table on its way as a field of its parent (`line.towers[].elastic.mass_kg`
+        // documents `line`, `line.towers` and `line.towers[].elastic` too).
+        let mut p = path.as_str();
+        loop {
+            let (table, field) = split(p);
+            tables.entry(table.clone()).or_default().insert(field);
+            if table.is_empty() {
+                break;
+            }
+            p = path.get(..table.len()).unwrap_or("");
+        }
+    }
+    // The top level: the page documents `line`, `initial` and `events`; the rest is scenario.md's.
+    let top = tables.entry(String::new()).or_default();
+    for f in ["name", "description", "loads", "numerics", "duration", "output", "ground"] {
+        top.insert(f.into());
+    }
+    for t in
+        ["line", "line.towers[]", "line.towers[].elastic", "line.conductors[]", "line.conductors[].bundle", "initial"]
+    {
+        assert!(tables.contains_key(t), "docs/line.md documents no field of {t}");
+    }
+    for (table, fields) in &tables {
+        // `line.conductors[].bundle.spacers` entries are `{ span, at_fraction }`, described in their row.
+        let got = accepted(table);
+        assert_eq!(&got, fields, "docs/line.md, table {table:?}: documented (right) vs accepted (left)");
+    }
+}
