@@ -525,3 +525,54 @@ fn newton_on_the_line_is_the_rest_state_of_the_explicit_line() {
     }
     assert!(moved < 1e-9, "one step from the Newton state moved a node by {moved:e} m");
 }
+
+/// A span between two tension (dead-end) strings in line with the conductor (3 m, 60 kg, EA 8e7 N, the
+/// order of a long-rod strain string): Newton on the line balances the total weight of conductor and
+/// strings by the two supports' vertical loads (Newton's tolerance, 1e-10 of the nodal loads: asserted at
+/// 1e-6 of the weight), the supports' horizontal loads are equal and opposite, and the explicit line
+/// settles (dynamic relaxation) onto the same state.
+#[test]
+fn tension_strings_at_the_dead_ends_balance_the_weight() {
+    let n = 20;
+    let build = |damping: f64| {
+        let mut model = Model::new();
+        let (a, b) = ([0.0, 0.0, 30.0], [0.0, 400.0, 30.0]);
+        let s0 = model.add_support(Support::rigid("strain tower 1", a));
+        let s1 = model.add_support(Support::rigid("strain tower 2", b));
+        let span = Span {
+            conductor: Conductor { axial_stiffness_n: DRAKE.ea, internal_friction_n_s: 0.0, law: LawKind::TensionOnly },
+            linear_density_kg_per_m: DRAKE.rho,
+            segments: n,
+            stringing: Stringing::HorizontalTension(28_000.0),
+        };
+        let sec = Section {
+            supports: vec![SectionSupport::DeadEnd { point_m: a }, SectionSupport::DeadEnd { point_m: b }],
+            spans: vec![span],
+            gravity_m_per_s2: G,
+        };
+        let string = LinkLaw::string(3.0, 8.0e7, 0.0);
+        let attach = [
+            Attach::TensionString { support: s0, law: string, mass_kg: 60.0 },
+            Attach::TensionString { support: s1, law: string, mass_kg: 60.0 },
+        ];
+        add_section_conductor(&mut model, "A", Role::Phase, &sec, &attach, loads(DRAKE, 0.0)).unwrap();
+        let dt = courant_step(DRAKE, 394.0 / n as f64, 0.5);
+        (LineExplicit::new(&model, params(dt, 0.0, damping)).unwrap(), dt)
+    };
+    let (mut line, _) = build(0.0);
+    statics::solve_line(&mut line, &StaticOptions::default()).unwrap();
+    line.evaluate_forces();
+    let w = line.conductors()[0].wire();
+    let weight = (w.total_mass() + w.point_mass_kg.iter().sum::<f64>()) * G;
+    let (f0, f1) = (line.support_resultant_n(0), line.support_resultant_n(1));
+    assert!((f0[2] + f1[2] + weight).abs() < 1e-6 * weight, "{} + {} vs {weight}", f0[2], f1[2]);
+    assert!((f0[1] + f1[1]).abs() < 1e-6 * f0[1].abs() && f0[1] > 20_000.0, "{f0:?} {f1:?}");
+    let (mut relaxed, dt) = build(2.0);
+    for _ in 0..40_000 {
+        relaxed.step(dt).unwrap();
+    }
+    let (a, b) = (line.conductors()[0].wire(), relaxed.conductors()[0].wire());
+    let worst =
+        (0..a.nodes()).map(|i| (0..3).map(|k| (a.x[k][i] - b.x[k][i]).abs()).fold(0.0, f64::max)).fold(0.0, f64::max);
+    assert!(worst < 1e-6, "Newton vs settled: {worst:e} m");
+}

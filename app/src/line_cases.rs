@@ -6,7 +6,7 @@
 //!   against time; each tower's horizontal and vertical load; each conductor's mid-span point (the middle
 //!   of its unstretched length) in the plane across the line, as a path from its start, and its height
 //!   against time; each conductor's largest tension against time;
-//! - the printed table: per pair the least distance, when and where (fractions of each conductor's
+//! - the printed table (and `<case>_table.md`): per pair the least distance, when and where (fractions of each conductor's
 //!   length), per conductor the peak tension, per tower the peak load, per kind of attachment the largest
 //!   force.
 
@@ -48,7 +48,12 @@ pub fn run_line_case(path: &Path, out: &Path) -> Result<LineCaseOutcome, CaseErr
     let o = run_line(plan, Some(&dir)).map_err(Box::new)?;
     let heading = format!("{name}: {}", sc.description.clone().unwrap_or_default());
     draw(&name, &heading, &dir, &o.summary, &mids)?;
-    Ok(LineCaseOutcome { name, summary: o.summary, dir })
+    let outcome = LineCaseOutcome { name, summary: o.summary, dir };
+    // The table, without the line that names the machine's speed and the output folder.
+    let table: String = format_line_table(&outcome).lines().skip(1).map(|l| format!("{l}\n")).collect();
+    let path = outcome.dir.join(format!("{}_table.md", outcome.name));
+    std::fs::write(&path, table).map_err(|e| CaseError::Io(format!("{}: {e}", path.display())))?;
+    Ok(outcome)
 }
 
 fn draw(name: &str, heading: &str, dir: &Path, s: &LineSummary, mids: &[[f64; 3]]) -> Result<(), CaseError> {
