@@ -159,6 +159,21 @@ fn invalid_fields_are_named_with_their_path() {
             "numerics.courant",
         ),
         (String::new(), conductor("A", "colour = \"red\""), "unknown field `colour`"),
+        // A string on a tower cannot fail yet (it is a link of the line).
+        (
+            "towers = [{ name = \"T\", position_m = [0.0, 380.0, 30.0] }]".into(),
+            conductor("A", "towers = [\"\", \"T\", \"\"]\n[[line.conductors.events]]\ntime_s = 0.1\naction = \"insulator_failure\"\nsupport = 1"),
+            "line.conductors[0].events",
+        ),
+        // Two names whose outputs would share a folder.
+        (String::new(), conductor("A B", "") + &conductor("A_B", ""), "line.conductors[1].name"),
+        // A bundle on a crossarm of its own.
+        (
+            String::new(),
+            conductor("A", "[line.conductors.bundle]\nsub_conductors = 2\ndiameter_m = 0.4\nspacers = [{ span = 0, at_fraction = 0.5 }]")
+                .replace("insulator_stiffness_n = 5.0e7 }", "insulator_stiffness_n = 5.0e7, crossarm = { longitudinal_n_per_m = 2e5, transverse_n_per_m = 2e5, mass_kg = 500.0 } }"),
+            "line.conductors[0].section.supports",
+        ),
         (String::new(), String::new(), "line.conductors"),
     ];
     for (line_table, conductors, field) in cases {
@@ -184,4 +199,40 @@ fn the_line_cases_parse_validate_and_build() {
         assert!(plan.line.conductors().len() >= 3, "{file}");
     }
     assert_eq!(found, 3, "cases e, f and g");
+}
+
+/// The file's `[[events]]` act on every sub-conductor of a bundle, `events_on` selects only which take the
+/// conductor's own events: with `events_on = [1]`, ice of the conductor's own goes on sub-conductor 1 only,
+/// and the global wind switch blows every sub-conductor across the line.
+#[test]
+fn events_on_selects_the_own_events_and_keeps_the_global_ones() {
+    let text = format!(
+        r#"[line]
+{}
+events_on = [1]
+[line.conductors.bundle]
+sub_conductors = 2
+diameter_m = 0.4
+spacers = [{{ span = 0, at_fraction = 0.5 }}, {{ span = 1, at_fraction = 0.5 }}]
+[[line.conductors.events]]
+time_s = 0.2
+action = "ice"
+span = 1
+linear_density_kg_per_m = 0.8
+{GLOBAL}
+[[events]]
+time_s = 0.5
+action = "wind"
+scale = 1.0
+"#,
+        conductor("A", "").trim_end()
+    );
+    let sc = line::parse(&text, "events_on.toml").unwrap();
+    let plan = line::plan(&sc, "events_on.toml").unwrap();
+    let out = run_line(plan, None).unwrap();
+    let (a, b) = (out.line.conductors()[0].wire(), out.line.conductors()[1].wire());
+    assert!(a.total_mass() > b.total_mass() + 0.7 * 380.0, "the ice went on sub-conductor 1 only");
+    let moved = |w: &ohl::wire::Wire, x0: f64| w.x[0][w.nodes() / 4] - x0;
+    assert!(moved(a, -0.2) > 0.1 && moved(b, 0.2) > 0.1, "the wind blew both: {} {}", moved(a, -0.2), moved(b, 0.2));
+    assert_eq!(out.summary.events.iter().filter(|e| e.what.contains("wind")).count(), 2);
 }

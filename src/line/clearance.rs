@@ -105,13 +105,20 @@ pub fn least_distance(a: &Wire, b: &Wire, scratch: &mut Scratch) -> Option<Close
     let mut best2 = f64::INFINITY;
     let mut found: Option<Closest> = None;
     let dist2 = |p: [f64; 3], q: [f64; 3]| (p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2) + (p[2] - q[2]).powi(2);
+    // Only points of the polylines may bound: nodes on an intact segment, and the last closest pair if
+    // both its segments are still intact (a chord across a break is not part of the conductor).
+    let on_intact = |w: &Wire, i: usize| (i > 0 && w.intact[i - 1] > 0.0) || (i < w.segments() && w.intact[i] > 0.0);
     for k in 0..=8 {
         let (i, j) = (k * na / 8, k * nb / 8);
-        best2 = best2.min(dist2(a.position(i), b.position(j)));
+        if on_intact(a, i) && on_intact(b, j) {
+            best2 = best2.min(dist2(a.position(i), b.position(j)));
+        }
     }
     if let Some((i, j)) = *last
         && i < na
         && j < nb
+        && a.intact[i] > 0.0
+        && b.intact[j] > 0.0
     {
         let (d2, _, _) = closest_points(a.position(i), a.position(i + 1), b.position(j), b.position(j + 1));
         best2 = best2.min(d2);

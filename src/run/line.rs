@@ -288,8 +288,9 @@ pub fn run_line(plan: LinePlan, out_dir: Option<&Path>) -> Result<LineOutcome, L
             all_settled &= settled;
         }
         let sample_due = files.is_some() && clock.next_s() <= t + tol;
-        clearance.observe_bounded(&line.wires(), t, sample_due || initial_clearance.is_empty());
-        if initial_clearance.is_empty() {
+        let first = line.steps() == 0;
+        clearance.observe_bounded(&line.wires(), t, sample_due || first);
+        if first {
             initial_clearance =
                 clearance.current().iter().map(|c| c.map_or(f64::NAN, |c| c.closest.distance_m)).collect();
         }

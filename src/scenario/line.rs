@@ -18,9 +18,10 @@
 //!   modelled), joined by spacers (every pair of sub-conductors by an arm of `spacer_stiffness_n_per_m`).
 //!
 //! A conductor whose supports are all its own and whose strings have no axial damping is, in the line,
-//! bit for bit the single-conductor scenario (its strings stay the wire's own). The line runs at the
-//! smallest time step of its conductors, checked against the stable step of every link
-//! ([`crate::scheme::line`]).
+//! bit for bit the single-conductor scenario (its strings stay the wire's own), provided the line's step is
+//! its own (the line runs at the smallest step of its conductors, checked against the stable step of every
+//! link, [`crate::scheme::line`]) and the other conductors' events fall at its own event times (every
+//! conductor lands on every event time). Each conductor keeps its own speed bound.
 
 use serde::Deserialize;
 
@@ -440,11 +441,23 @@ fn build_line(s: &LineScenario) -> Result<LinePlan, Vec<Problem>> {
         return Err(problems);
     }
     let plans: Vec<Plan> = plans.into_iter().flatten().collect();
-    assemble(s, plans)
+    // The sub-conductors a bundle's own events do not act on still take the file's global events: their
+    // timeline is that of the conductor without its own events (validated above as part of the whole).
+    let mut global_only = Vec::with_capacity(plans.len());
+    for c in &spec.conductors {
+        global_only.push(if c.events_on.is_empty() {
+            None
+        } else {
+            let mut g = single(s, c);
+            g.events = s.events.clone();
+            Some(build(&g)?)
+        });
+    }
+    assemble(s, plans, global_only)
 }
 
 /// Join the conductors' plans into the line's model and solver.
-fn assemble(s: &LineScenario, plans: Vec<Plan>) -> Result<LinePlan, Vec<Problem>> {
+fn assemble(s: &LineScenario, plans: Vec<Plan>, global_only: Vec<Option<Plan>>) -> Result<LinePlan, Vec<Problem>> {
     let spec = &s.line;
     let problem = |field: String, value: String, allowed: String| vec![Problem { field, value, allowed }];
     let mut model = Model::new();
@@ -468,9 +481,19 @@ fn assemble(s: &LineScenario, plans: Vec<Plan>) -> Result<LinePlan, Vec<Problem>
     let mut line_plans = Vec::new();
     let (mut groups, mut group_names) = (Vec::new(), Vec::new());
     let mut bundles = 0;
+    let mut names_seen: Vec<String> = Vec::new();
     for (k, (c, plan)) in spec.conductors.iter().zip(&plans).enumerate() {
         let f = |name: &str| format!("line.conductors[{k}].{name}");
         let base = plan.solver.wire().clone();
+        // A bundle member on a crossarm of its own would carry a crossarm per sub-conductor, its spring
+        // preloaded by the member's offset: the elasticity of a bundle's support belongs to a tower.
+        if c.bundle.is_some() && base.insulators.iter().any(|i| i.crossarm.is_some()) {
+            return Err(problem(
+                f("section.supports"),
+                "a crossarm".into(),
+                "a bundle hangs its sub-conductors on rigid supports or towers: give a tower `elastic` instead of a crossarm".into(),
+            ));
+        }
         let n_sup = c.section.supports.len();
         // The node of each support of the section.
         let mut support_node: Vec<usize> = plan.spans.iter().map(|&(first, _)| first).collect();
@@ -509,6 +532,9 @@ fn assemble(s: &LineScenario, plans: Vec<Plan>) -> Result<LinePlan, Vec<Problem>
                 }
             }
             let index = model.conductors.len();
+            // The clamp node of each of the wire's strings before any becomes a link (the events name a
+            // string by its index among them).
+            let string_nodes: Vec<usize> = wire.insulators.iter().map(|i| i.node).collect();
             // Supports on towers, and strings that need axial damping, become links.
             for (j, &node) in support_node.iter().enumerate() {
                 let tower = c.towers.get(j).filter(|t| !t.is_empty()).and_then(|t| tower_index(t));
@@ -526,17 +552,19 @@ fn assemble(s: &LineScenario, plans: Vec<Plan>) -> Result<LinePlan, Vec<Problem>
                     }
                     (tower, Some(s)) if tower.is_some() || spec.string_damping_n_s > 0.0 => {
                         let ins = wire.insulators.remove(s);
-                        if ins.crossarm.is_some() && tower.is_some() {
+                        if ins.crossarm.is_some() {
                             return Err(problem(
                                 f(&format!("section.supports[{j}].crossarm")),
                                 "a crossarm".into(),
-                                "a string on a tower takes the tower's elasticity: give the tower `elastic` instead"
+                                "a string on a tower, or with axial damping (line.string_damping_n_s), is a link of \
+                                 the line: its elasticity is a tower's (`elastic`), not a crossarm of the section"
                                     .into(),
                             ));
                         }
+                        let member = if offsets.len() > 1 { format!("{}.{}", c.name, i + 1) } else { c.name.clone() };
                         let support = match tower {
                             Some(t) => t,
-                            None => model.add_support(Support::rigid(format!("{} support {j}", c.name), ins.pivot_m)),
+                            None => model.add_support(Support::rigid(format!("{member} support {j}"), ins.pivot_m)),
                         };
                         let p = model.supports[support].position_m;
                         let offset_m = [ins.pivot_m[0] - p[0], ins.pivot_m[1] - p[1], ins.pivot_m[2] - p[2]];
@@ -555,7 +583,26 @@ fn assemble(s: &LineScenario, plans: Vec<Plan>) -> Result<LinePlan, Vec<Problem>
             // start, the ice of t = 0 applied now (part of the initial state, as for one conductor).
             let mut own = plan.clone();
             if !(c.events_on.is_empty() || c.events_on.contains(&(i + 1))) {
-                own.events.clear();
+                own.events = global_only[k].as_ref().map_or_else(Vec::new, |g| g.events.clone());
+            }
+            // A string that failed or slipped is named by its index among the wire's strings: renumber
+            // them after the conversion; a string that became a link cannot fail or slip yet.
+            for e in &mut own.events {
+                if let Action::InsulatorFailure { insulator } | Action::ClampSlip { insulator } = &mut e.action {
+                    let node = string_nodes.get(*insulator).copied();
+                    match node.and_then(|n| wire.insulators.iter().position(|x| x.node == n)) {
+                        Some(now) => *insulator = now,
+                        None => {
+                            return Err(problem(
+                                f("events"),
+                                format!("a string failure or slip at node {}", node.unwrap_or(0)),
+                                "a string held by a tower, or with axial damping, is a link of the line and cannot \
+                                 fail or slip yet: give that support no tower and no string damping"
+                                    .into(),
+                            ));
+                        }
+                    }
+                }
             }
             if s.initial.shape == LineShapeSpec::Equilibrium {
                 let (now, later): (Vec<_>, Vec<_>) = std::mem::take(&mut own.events)
@@ -576,6 +623,18 @@ fn assemble(s: &LineScenario, plans: Vec<Plan>) -> Result<LinePlan, Vec<Problem>
             }
             line_plans.push(own);
             let name = if offsets.len() > 1 { format!("{}.{}", c.name, i + 1) } else { c.name.clone() };
+            // Outputs are written under each name's file form: two names may not share it.
+            let slug = crate::run::line::slug(&name);
+            if names_seen.contains(&slug) {
+                return Err(problem(
+                    f("name"),
+                    format!("{name:?}"),
+                    format!(
+                        "its outputs would go where another conductor's go (conductors/{slug}/): choose another name"
+                    ),
+                ));
+            }
+            names_seen.push(slug);
             let role = if offsets.len() > 1 { Role::SubConductor { bundle: bundles, index: i } } else { role };
             model.conductors.push(LineConductor { name, role, wire, loads: *plan.solver.loads() });
             members.push(index);
@@ -639,6 +698,14 @@ fn assemble(s: &LineScenario, plans: Vec<Plan>) -> Result<LinePlan, Vec<Problem>
     for (c, p) in line_plans.iter().enumerate() {
         if let Some(g) = p.solver.ground() {
             line.conductor_mut(c).set_ground(Some(g.clone()));
+        }
+    }
+    // Each conductor keeps its own step parameters (its speed bound: its own wave speed), with the line's
+    // step.
+    for (c, p) in line_plans.iter().enumerate() {
+        let own = StepParams { dt_s: params.dt_s, ..*p.solver.params() };
+        if own.max_speed_m_per_s != params.max_speed_m_per_s {
+            *line.conductor_mut(c).params_mut() = own;
         }
     }
     for (p, c) in line_plans.iter_mut().zip(line.conductors()) {

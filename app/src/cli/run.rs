@@ -138,7 +138,7 @@ fn heat_case_refusal(path: &std::path::Path) -> Option<String> {
 /// `ohl run` on a line scenario (a file with `[line]`: several conductors, [`ohl::scenario::line`]).
 fn run_line(path: &std::path::Path, out: &std::path::Path, quiet: bool, dry_run: bool, allow_large: bool) -> ExitCode {
     use ohl::run::line::{LineRunError, run_line};
-    use ohl::scenario::work::{BUDGET_NODE_STEPS, THROUGHPUT_NODE_STEPS_PER_S};
+    use ohl::scenario::work::{BUDGET_NODE_STEPS, BUDGET_OUTPUT_BYTES, BYTES_PER_NUMBER, THROUGHPUT_NODE_STEPS_PER_S};
     let file = path.display().to_string();
     let plan = match scenario::read_text(path)
         .and_then(|t| scenario::line::parse(&t, &file))
@@ -155,10 +155,25 @@ fn run_line(path: &std::path::Path, out: &std::path::Path, quiet: bool, dry_run:
             eprintln!("warning: {file}: {name}: {w}");
         }
     }
-    // Work: every conductor's nodes, every step of the line.
+    // Work: every conductor's nodes, every step of the line; output: every conductor's time series and
+    // snapshots, the clearances and the towers, `BYTES_PER_NUMBER` a number (the single-conductor estimate's).
     let nodes: usize = plan.line.conductors().iter().map(|c| c.wire().nodes()).sum();
-    let steps = (plan.stop.horizon_s() / plan.line.params().dt_s).ceil() + 1.0;
+    let (dt, horizon) = (plan.line.params().dt_s, plan.stop.horizon_s());
+    if !(dt > 0.0 && horizon.is_finite() && horizon + dt > horizon) {
+        eprintln!("error: {file}: the time step {dt:e} s does not advance the clock at the end time {horizon:e} s");
+        return ExitCode::from(2);
+    }
+    let steps = (horizon / dt).ceil() + 1.0;
     let node_steps = nodes as f64 * steps;
+    let rows = (horizon / plan.sample_interval_s).ceil() + 2.0;
+    let mut numbers = 0.0;
+    for p in &plan.plans {
+        let columns = ohl::run::timeseries_columns(p).header().len() as f64;
+        numbers += rows * columns + (p.snapshot_times_s.len() + 1) as f64 * p.solver.wire().nodes() as f64 * 11.0;
+    }
+    let pairs = plan.groups.len() * plan.groups.len().saturating_sub(1) / 2;
+    numbers += rows * (1 + pairs + 5 * plan.line.supports().count()) as f64;
+    let output_bytes = BYTES_PER_NUMBER * numbers;
     if dry_run {
         println!("{}: dry run, nothing run", plan.name);
         println!(
@@ -167,16 +182,18 @@ fn run_line(path: &std::path::Path, out: &std::path::Path, quiet: bool, dry_run:
             plan.line.params().dt_s
         );
         println!("  steps: {steps:.6e}, node-steps: {node_steps:.6e} (budget {BUDGET_NODE_STEPS:.1e})");
+        println!("  output: at most {output_bytes:.3e} bytes (budget {BUDGET_OUTPUT_BYTES:.1e})");
         println!(
             "  wall time: about {:.3e} s at {THROUGHPUT_NODE_STEPS_PER_S:.1e} node-steps/s",
             node_steps / THROUGHPUT_NODE_STEPS_PER_S
         );
         return ExitCode::SUCCESS;
     }
-    if node_steps > BUDGET_NODE_STEPS && !allow_large {
+    if (node_steps > BUDGET_NODE_STEPS || output_bytes > BUDGET_OUTPUT_BYTES) && !allow_large {
         eprintln!(
-            "error: {file}: the run needs {node_steps:.3e} node-steps, above the budget {BUDGET_NODE_STEPS:.1e}: \
-             use coarser grids or a shorter end time, or pass --allow-large"
+            "error: {file}: the run needs {node_steps:.3e} node-steps (budget {BUDGET_NODE_STEPS:.1e}) and up to \
+             {output_bytes:.3e} bytes of output (budget {BUDGET_OUTPUT_BYTES:.1e}): use coarser grids, a shorter end \
+             time or a longer sample interval, or pass --allow-large"
         );
         return ExitCode::from(2);
     }
