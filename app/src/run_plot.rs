@@ -62,6 +62,20 @@ pub enum RunPlotError {
     /// RUN_DIR does not exist or is not a folder.
     #[error("{}: not a folder (give the folder `ohl run SCENARIO.toml --out DIR` wrote)", .0.display())]
     NoFolder(PathBuf),
+    /// RUN_DIR is the folder of a line run (several conductors): each conductor's files are in a folder
+    /// of their own.
+    #[error(
+        "{dir} is the folder of a line run: plot one conductor's folder, e.g. `ohl plot {example}` (the line's \
+         clearances and tower loads are drawn by `ohl cases`, from clearances.csv and towers.csv)",
+        dir = .dir.display(),
+        example = .example.display()
+    )]
+    LineRun {
+        /// the folder given
+        dir: PathBuf,
+        /// one conductor's folder in it
+        example: PathBuf,
+    },
     /// RUN_DIR lacks `timeseries.csv`.
     #[error(
         "{dir} is not a run folder: {missing} is missing (`ohl run SCENARIO.toml --out DIR` writes timeseries.csv, snapshots.csv and summary.json)",
@@ -201,6 +215,13 @@ impl Run {
         }
         let ts_path = dir.join("timeseries.csv");
         if !ts_path.is_file() {
+            let conductors = dir.join("conductors");
+            let first = std::fs::read_dir(&conductors).ok().and_then(|mut d| {
+                d.find_map(|e| e.ok().map(|e| e.path()).filter(|p| p.join("timeseries.csv").is_file()))
+            });
+            if let Some(example) = first {
+                return Err(RunPlotError::LineRun { dir: dir.to_path_buf(), example });
+            }
             return Err(RunPlotError::NotARun { dir: dir.to_path_buf(), missing: ts_path });
         }
         let ts = Table::read(&ts_path)?;

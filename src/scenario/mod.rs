@@ -75,6 +75,14 @@ impl fmt::Display for Invalid<'_> {
 /// does not give from there: `linear_density_kg_per_m`, `diameter_m`, `rated_tensile_strength_n`,
 /// `thermal_expansion_per_k` and `axial_stiffness_n` (unless `youngs_modulus_pa` is given).
 pub fn parse(text: &str, file: &str) -> Result<Scenario, InputError> {
+    if line::is_line(text) {
+        return Err(InputError::Parse {
+            file: file.to_string(),
+            message: "a line scenario ([line]: several conductors) is not a single-conductor scenario: run it with \
+                      `ohl run` or `ohl cases` (docs/line.md); the Python package and `ohl sweep` do not take lines yet"
+                .into(),
+        });
+    }
     let scenario: Scenario = match catalog_defaults(text, file)? {
         Some(resolved) => toml::Value::Table(resolved).try_into().map_err(|e| parse_error(file, e))?,
         None => toml::from_str(text).map_err(|e| parse_error_at(text, file, e))?,
