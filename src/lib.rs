@@ -14,7 +14,9 @@
 //! - [`statics`]: the static equilibrium of the same discrete equations (Newton, faer);
 //! - [`scenario`]: scenario files, their validation and the one conversion into a run plan;
 //! - [`events`]: the event timeline of a run;
-//! - [`run`]: the run loop and its observers; [`output`]: the observers that write or record a run;
+//! - [`observer`]: what a run tells its outputs (one time level, the events, the end), below both the
+//!   run loop and the outputs; [`output`]: the observers that write or record a run; [`run`]: the run
+//!   loop, which assembles the standard outputs;
 //! - [`exact`]: exact static solutions the scheme is verified against;
 //! - [`thermal`]: conductor temperature from current and weather (IEEE 738, CIGRE TB 601).
 //!
@@ -26,6 +28,7 @@ pub mod events;
 pub mod exact;
 pub mod heat;
 pub mod line;
+pub mod observer;
 pub mod output;
 pub mod run;
 pub mod scenario;

@@ -25,7 +25,6 @@ pub mod gust;
 pub mod heating;
 pub mod ramp;
 
-use crate::scenario::Plan;
 use crate::scheme::{Explicit, Ground};
 
 pub use conduction::Conduction;
@@ -49,16 +48,19 @@ pub struct EventState {
 }
 
 impl EventState {
-    /// The timeline of a plan, nothing applied yet.
-    pub fn new(plan: &Plan) -> Self {
+    /// A timeline of `events` (sorted by time), nothing applied yet: `ground` is the plane a `ground`
+    /// event switches on, `heating` a temperature history played before every step. Built from the domain
+    /// types only (a scenario's plan gives them: [`crate::scenario::Plan::timeline`]), so the runtime does
+    /// not depend on the input format.
+    pub fn new(events: Vec<Event>, ground: Option<Ground>, heating: Option<Heating>) -> Self {
         EventState {
-            events: plan.events.clone(),
+            events,
             next: 0,
-            ground: plan.ground.clone(),
+            ground,
             gust: None,
             ramps: Vec::new(),
             conduction: None,
-            heating: plan.thermal.as_ref().map(|h| Heating::new(h.samples.clone())),
+            heating,
             log: Vec::new(),
         }
     }

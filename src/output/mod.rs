@@ -1,4 +1,4 @@
-//! What a run produces. Each output is an observer of the run loop ([`crate::run::Observer`]), one per
+//! What a run produces. Each output is an observer of the run loop ([`crate::observer::Observer`]), one per
 //! file:
 //!
 //! - [`timeseries`]: `timeseries.csv`, a row per sample interval (probes and support forces included);

@@ -12,7 +12,7 @@
 use serde::Serialize;
 
 use super::probe::ProbePoint;
-use crate::run::{Control, Level, Observer, OutputError};
+use crate::observer::{Control, Level, Observer, OutputError};
 use crate::scheme::Ground;
 
 /// The extreme of one displacement component: the value of largest magnitude, with its sign.

@@ -5,7 +5,7 @@
 use super::clock::{LANDING, ListClock, SampleClock};
 use super::probe::ProbePoint;
 use super::timeseries::Sample;
-use crate::run::{Control, Level, Observer, OutputError};
+use crate::observer::{Control, Level, Observer, OutputError};
 use crate::scheme::Explicit;
 
 /// Quantities recorded beside each time-series sample.

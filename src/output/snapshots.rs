@@ -12,7 +12,7 @@ use std::path::Path;
 
 use super::clock::{LANDING, ListClock};
 use super::rows::RowFile;
-use crate::run::{Control, Ending, Level, Observer, OutputError};
+use crate::observer::{Control, Ending, Level, Observer, OutputError};
 use crate::scheme::Explicit;
 
 /// Writes `snapshots.csv`.

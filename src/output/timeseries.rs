@@ -24,7 +24,7 @@ use serde::Serialize;
 use super::clock::{LANDING, SampleClock};
 use super::probe::ProbePoint;
 use super::rows::RowFile;
-use crate::run::{Control, Ending, Level, Observer, OutputError};
+use crate::observer::{Control, Ending, Level, Observer, OutputError};
 use crate::scheme::Ground;
 
 /// One row of the time series (its fixed columns).

@@ -207,7 +207,7 @@ pub fn run_line(plan: LinePlan, out_dir: Option<&Path>) -> Result<LineOutcome, L
     let mut line = plan.line.clone();
     let n = line.conductors().len();
     let names: Vec<String> = line.names().to_vec();
-    let mut timelines: Vec<EventState> = plan.plans.iter().map(EventState::new).collect();
+    let mut timelines: Vec<EventState> = plan.plans.iter().map(|p| p.timeline()).collect();
     if let Some(d) = out_dir {
         std::fs::create_dir_all(d).map_err(OutputError::at(d))?;
     }

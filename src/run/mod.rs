@@ -11,7 +11,6 @@
 //! criterion holds and no event is pending.
 
 pub mod line;
-pub mod observer;
 pub mod settle;
 
 use std::path::{Path, PathBuf};
@@ -29,8 +28,8 @@ use crate::scenario::Plan;
 use crate::scenario::build::Stop;
 use crate::scheme::{Explicit, Instability};
 
+pub use crate::observer::{Control, Ending, Level, Observer, OutputError};
 pub use crate::output::{Probe, Shape};
-pub use observer::{Control, Ending, Level, Observer, OutputError};
 pub use settle::Settle;
 
 /// Run `solver` and its `timeline` until `stop`, notifying `observers` at every time level (`tau_per_s`
@@ -162,7 +161,7 @@ pub fn run_observed<'o>(
         }
         None => (None, None),
     };
-    let mut timeline = EventState::new(&plan);
+    let mut timeline = plan.timeline();
     let started = Instant::now();
     let ending = {
         let mut observers: Vec<&mut (dyn Observer + 'o)> = vec![&mut peaks];

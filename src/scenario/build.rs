@@ -89,6 +89,13 @@ impl Plan {
     pub fn tau(&self, t_s: f64) -> f64 {
         t_s * self.tau_speed_m_per_s / self.chord_m
     }
+    /// The plan's event timeline at `t = 0` (its events, the ground plane its `ground` events switch, the
+    /// temperature history of its `[thermal]` table).
+    pub fn timeline(&self) -> crate::events::EventState {
+        let heating = self.thermal.as_ref().map(|h| crate::events::Heating::new(h.samples.clone()));
+        crate::events::EventState::new(self.events.clone(), self.ground.clone(), heating)
+    }
+
     /// Midpoint of the chord `(A + B) / 2` [m].
     pub fn chord_midpoint(&self) -> [f64; 3] {
         [0, 1, 2].map(|k| 0.5 * (self.left_support_m[k] + self.right_support_m[k]))

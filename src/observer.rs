@@ -1,6 +1,6 @@
 //! What a run tells the outputs: every time level, every event, and the end.
 //!
-//! The loop ([`super::run_loop`]) notifies each [`Observer`] once per time level, after the events due
+//! The loop ([`crate::run::run_loop`]) notifies each [`Observer`] once per time level, after the events due
 //! at that level were applied and the segment forces of the level evaluated
 //! ([`Explicit::evaluate_forces`]), so that an observer reads the state (positions, velocities at
 //! `n - 1/2`, the largest tension, the support forces) at no extra cost and cannot change it: it gets a
