@@ -318,6 +318,11 @@ impl LineExplicit {
         self.supports[s].position_m
     }
 
+    /// Velocity of support `s` at the last half step [m/s] (zero for a rigid support).
+    pub fn support_velocity_m_per_s(&self, s: usize) -> [f64; 3] {
+        self.supports[s].velocity_m_per_s
+    }
+
     /// Displacement of support `s` from its rest position [m].
     pub fn support_displacement_m(&self, s: usize) -> [f64; 3] {
         sub(self.supports[s].position_m, self.supports[s].spec.position_m)
