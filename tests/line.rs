@@ -310,6 +310,37 @@ fn fitted_order(ns: &[f64], errors: &[f64]) -> f64 {
     num / den
 }
 
+/// An elastic tower top under the middle pivots of `two_spans` (x2 = 380 m, 24 m up; the pivots are offsets
+/// from it), 800 kg, springs `k_along` and `k_across` [N/m], damping `c` [N s/m].
+fn elastic_tower(model: &mut Model, k_along: f64, k_across: f64, c: f64) -> usize {
+    model.add_support(Support {
+        name: "tower".into(),
+        position_m: [0.0, 380.0, 24.0],
+        elastic: Some(ElasticSupport {
+            along: [0.0, 1.0, 0.0],
+            along_n_per_m: k_along,
+            across_n_per_m: k_across,
+            mass_kg: 800.0,
+            damping_n_s_per_m: c,
+        }),
+    })
+}
+
+/// The attachments of `two_spans` at `x1`: its dead-ends on rigid supports of their own, its string on
+/// `tower` with axial damping `ba` [N s].
+fn on_tower(model: &mut Model, x1: f64, tower: usize, ba: f64) -> Vec<Attach> {
+    (0..3)
+        .map(|k| {
+            if k == 1 {
+                Attach::String { support: tower, damping_n_s: ba }
+            } else {
+                let p = [x1, 400.0 * k as f64, 20.0 + k as f64];
+                Attach::Fixed { support: model.add_support(Support::rigid("dead-end", p)) }
+            }
+        })
+        .collect()
+}
+
 /// Two Drake phases, one a twin bundle, on one elastic tower top, with an interphase spacer, released from
 /// their strung (not equilibrium) shapes with the tower top moved aside (2 cm along, 1 cm across: small
 /// enough that no string goes slack, since a tension-only law switching off is not smooth and leapfrog's
@@ -318,30 +349,11 @@ fn fitted_order(ns: &[f64], errors: &[f64]) -> f64 {
 fn coupled_line(n: usize, courant: f64, damped: bool) -> (LineExplicit, usize, f64) {
     let d = |v: f64| if damped { v } else { 0.0 };
     let mut model = Model::new();
-    let tower = model.add_support(Support {
-        name: "tower".into(),
-        position_m: [0.0, 380.0, 24.0],
-        elastic: Some(ElasticSupport {
-            along: [0.0, 1.0, 0.0],
-            along_n_per_m: 4.0e5,
-            across_n_per_m: 2.0e5,
-            mass_kg: 800.0,
-            damping_n_s_per_m: d(2.0e4),
-        }),
-    });
+    let tower = elastic_tower(&mut model, 4.0e5, 2.0e5, d(2.0e4));
     let mut conductors = Vec::new();
     for (x1, bundle) in [(-6.0, false), (6.0, true)] {
         let sec = two_spans(DRAKE, x1, 20.0, 28_000.0, n, STRING);
-        let attach: Vec<Attach> = (0..3)
-            .map(|k| {
-                if k == 1 {
-                    Attach::String { support: tower, damping_n_s: d(2.0e4) }
-                } else {
-                    let p = [x1, 400.0 * k as f64, 20.0 + k as f64];
-                    Attach::Fixed { support: model.add_support(Support::rigid("dead-end", p)) }
-                }
-            })
-            .collect();
+        let attach = on_tower(&mut model, x1, tower, d(2.0e4));
         if bundle {
             let mut spec = BundleSpec::regular(2, 0.45, vec![(0, 0.5), (1, 0.5)], 1.0e6);
             spec.arm_damping_n_s_per_m = d(500.0);
@@ -504,30 +516,11 @@ fn newton_on_the_line_is_the_rest_state_of_the_explicit_line() {
     let n = 16;
     let build = |damping: f64| {
         let mut model = Model::new();
-        let tower = model.add_support(Support {
-            name: "tower".into(),
-            position_m: [0.0, 380.0, 24.0],
-            elastic: Some(ElasticSupport {
-                along: [0.0, 1.0, 0.0],
-                along_n_per_m: 2.0e5,
-                across_n_per_m: 2.0e5,
-                mass_kg: 800.0,
-                damping_n_s_per_m: 4.0e4,
-            }),
-        });
+        let tower = elastic_tower(&mut model, 2.0e5, 2.0e5, 4.0e4);
         let mut members = Vec::new();
         for (x1, bundle) in [(-6.0, false), (6.0, true)] {
             let sec = two_spans(DRAKE, x1, 20.0, 28_000.0, n, STRING);
-            let attach: Vec<Attach> = (0..3)
-                .map(|k| {
-                    if k == 1 {
-                        Attach::String { support: tower, damping_n_s: 0.0 }
-                    } else {
-                        let p = [x1, 400.0 * k as f64, 20.0 + k as f64];
-                        Attach::Fixed { support: model.add_support(Support::rigid("dead-end", p)) }
-                    }
-                })
-                .collect();
+            let attach = on_tower(&mut model, x1, tower, 0.0);
             if bundle {
                 let spec = BundleSpec::regular(2, 0.45, vec![(0, 0.25), (0, 0.75), (1, 0.5)], 1.0e6);
                 members = add_bundle(&mut model, "B", 0, &sec, &attach, loads(DRAKE, 0.0), &spec).unwrap().0;

@@ -79,14 +79,20 @@ impl LinkLaw {
     /// velocities `va, vb` [m/s]. A link of zero length exerts nothing (its direction is undefined).
     #[inline(always)]
     pub fn force_on_b<S: Scalar>(&self, ra: [S; 3], rb: [S; 3], va: [S; 3], vb: [S; 3]) -> [S; 3] {
+        self.tension_and_force_on_b(ra, rb, va, vb).1
+    }
+
+    /// The tension `T` [N] and the force on end `b` [N] together ([`LinkLaw::force_on_b`]).
+    #[inline(always)]
+    pub fn tension_and_force_on_b<S: Scalar>(&self, ra: [S; 3], rb: [S; 3], va: [S; 3], vb: [S; 3]) -> (S, [S; 3]) {
         let d = sub3(rb, ra);
         let (t, len) = self.tension(d, sub3(vb, va));
         if len.value() == 0.0 {
-            return [S::c(0.0); 3];
+            return (t, [S::c(0.0); 3]);
         }
         // Written as a suspension string's force on its clamp (`wire::insulator`), operation for operation,
         // so that a string modelled as a link gives the same numbers.
-        [-t * d[0] / len, -t * d[1] / len, -t * d[2] / len]
+        (t, [-t * d[0] / len, -t * d[1] / len, -t * d[2] / len])
     }
 
     /// Elastic energy `EA L0 e^2 / 2` [J] at length `len` [m] (none in compression for a string).

@@ -233,7 +233,6 @@ pub fn add_bundle(
     }
     let layout = layout
         .ok_or_else(|| ModelError::Handle { what: format!("bundle '{name}'"), detail: "no sub-conductors".into() })?;
-    let n = members.len();
     for &(span, f) in &spec.spacers {
         if span + 1 >= layout.first_node.len() {
             return Err(ModelError::Handle {
@@ -242,26 +241,40 @@ pub fn add_bundle(
             }
             .into());
         }
-        let node = layout.node_at(span, f);
-        for i in 0..n {
-            for j in i + 1..n {
-                let (a, b) = (spec.offsets_m[i], spec.offsets_m[j]);
-                let len = ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2)).sqrt();
-                model.links.push(Link {
-                    kind: LinkKind::Spacer,
-                    a: Endpoint::Node(NodeRef::new(members[i], node)),
-                    b: Endpoint::Node(NodeRef::new(members[j], node)),
-                    law: LinkLaw::spring(len, spec.arm_stiffness_n_per_m, spec.arm_damping_n_s_per_m),
-                    intact: true,
-                });
-            }
-        }
-        if spec.spacer_mass_kg > 0.0 {
-            for &c in &members {
-                let m = spec.spacer_mass_kg / n as f64;
-                model.point_masses.push(PointMass { node: NodeRef::new(c, node), mass_kg: m });
-            }
-        }
+        let arm = (spec.arm_stiffness_n_per_m, spec.arm_damping_n_s_per_m);
+        add_spacer(model, &members, &spec.offsets_m, layout.node_at(span, f), arm, spec.spacer_mass_kg);
     }
     Ok((members, layout))
+}
+
+/// Add a spacer at node `node` of every member of a bundle (sub-conductors `members` at `offsets_m`,
+/// `(across, up)` [m]): an arm between every pair, of rest length their spacing, stiffness `arm.0` [N/m]
+/// and damping `arm.1` [N s/m], and the spacer's mass `mass_kg` [kg] shared equally by its clamps.
+pub fn add_spacer(
+    model: &mut Model,
+    members: &[usize],
+    offsets_m: &[[f64; 2]],
+    node: usize,
+    arm: (f64, f64),
+    mass_kg: f64,
+) {
+    let n = members.len();
+    for i in 0..n {
+        for j in i + 1..n {
+            let (a, b) = (offsets_m[i], offsets_m[j]);
+            let len = ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2)).sqrt();
+            model.links.push(Link {
+                kind: LinkKind::Spacer,
+                a: Endpoint::Node(NodeRef::new(members[i], node)),
+                b: Endpoint::Node(NodeRef::new(members[j], node)),
+                law: LinkLaw::spring(len, arm.0, arm.1),
+                intact: true,
+            });
+        }
+    }
+    if mass_kg > 0.0 {
+        for &c in members {
+            model.point_masses.push(PointMass { node: NodeRef::new(c, node), mass_kg: mass_kg / n as f64 });
+        }
+    }
 }

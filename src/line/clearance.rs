@@ -189,6 +189,8 @@ pub struct ClearanceTracker {
     reference: Vec<[Vec<f64>; 3]>,
     /// each pair's distance at the last exact measurement [m]
     measured: Vec<f64>,
+    /// each conductor's largest node displacement since then [m] (scratch of `observe_bounded`)
+    moved: Vec<f64>,
     /// exact measurements made and levels observed [-]
     pub counts: (u64, u64),
 }
@@ -209,6 +211,7 @@ impl ClearanceTracker {
             scratch,
             reference,
             measured,
+            moved: Vec::new(),
             counts: (0, 0),
         }
     }
@@ -232,22 +235,20 @@ impl ClearanceTracker {
     /// times and places are those of measuring every level (a level skipped cannot hold a smaller one).
     pub fn observe_bounded(&mut self, wires: &[&Wire], t_s: f64, force: bool) {
         self.counts.1 += 1;
-        let moved: Vec<f64> = if self.reference.len() == wires.len() {
-            wires
-                .iter()
-                .zip(&self.reference)
-                .map(|(w, r)| {
-                    let mut m2 = 0.0_f64;
-                    for i in 0..w.nodes() {
-                        let d = [w.x[0][i] - r[0][i], w.x[1][i] - r[1][i], w.x[2][i] - r[2][i]];
-                        m2 = m2.max(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-                    }
-                    m2.sqrt()
-                })
-                .collect()
+        let moved = &mut self.moved;
+        moved.clear();
+        if self.reference.len() == wires.len() {
+            moved.extend(wires.iter().zip(&self.reference).map(|(w, r)| {
+                let mut m2 = 0.0_f64;
+                for i in 0..w.nodes() {
+                    let d = [w.x[0][i] - r[0][i], w.x[1][i] - r[1][i], w.x[2][i] - r[2][i]];
+                    m2 = m2.max(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+                }
+                m2.sqrt()
+            }));
         } else {
-            vec![f64::INFINITY; wires.len()]
-        };
+            moved.resize(wires.len(), f64::INFINITY);
+        }
         let group_moved = |g: &[usize]| g.iter().map(|&c| moved[c]).fold(0.0, f64::max);
         let possible = self.pairs.iter().enumerate().any(|(p, &(g, h))| {
             let bound = self.measured[p] - group_moved(&self.groups[g]) - group_moved(&self.groups[h]);

@@ -237,7 +237,7 @@ pub fn run_line(plan: LinePlan, out_dir: Option<&Path>) -> Result<LineOutcome, L
     let pair_names: Vec<[String; 2]> =
         clearance.pairs().iter().map(|&(a, b)| [plan.group_names[a].clone(), plan.group_names[b].clone()]).collect();
     let towers: Vec<String> = line.supports().map(|s| s.name.clone()).collect();
-    let tower_list: Vec<usize> = (0..towers.len()).collect();
+    let mut resultants: Vec<[f64; 3]> = Vec::with_capacity(towers.len());
     let mut files = match out_dir {
         Some(d) => {
             let mut head = vec!["t_s".to_string()];
@@ -301,8 +301,10 @@ pub fn run_line(plan: LinePlan, out_dir: Option<&Path>) -> Result<LineOutcome, L
                 link_peak[k] = Some((l, tl, t));
             }
         }
-        for &s in &tower_list {
-            let f = line.support_resultant_n(s);
+        // Each tower's resultant, once a level: for its peak, and for the sample if one is due.
+        resultants.clear();
+        resultants.extend((0..towers.len()).map(|s| line.support_resultant_n(s)));
+        for (s, &f) in resultants.iter().enumerate() {
             let m = (f[0] * f[0] + f[1] * f[1] + f[2] * f[2]).sqrt();
             if m > tower_peak[s].1 {
                 tower_peak[s] = (f, m, t);
@@ -317,8 +319,8 @@ pub fn run_line(plan: LinePlan, out_dir: Option<&Path>) -> Result<LineOutcome, L
             }
             cl.end_row();
             tw.number(t);
-            for &s in &tower_list {
-                let (f, u) = (line.support_resultant_n(s), line.support_displacement_m(s));
+            for (s, &f) in resultants.iter().enumerate() {
+                let u = line.support_displacement_m(s);
                 for v in [f[0], f[1], f[2], u[0], u[1]] {
                     tw.number(v);
                 }
@@ -418,9 +420,8 @@ pub fn run_line(plan: LinePlan, out_dir: Option<&Path>) -> Result<LineOutcome, L
                 })
             })
             .collect(),
-        towers: tower_list
-            .iter()
-            .map(|&s| TowerSummary {
+        towers: (0..towers.len())
+            .map(|s| TowerSummary {
                 name: towers[s].clone(),
                 final_force_n: line.support_resultant_n(s),
                 peak_force_n: tower_peak[s].0,

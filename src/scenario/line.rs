@@ -31,12 +31,10 @@ use super::events::{EventSpec, GroundSpec};
 use super::schema::{
     ConductorSpec, DurationSpec, InitialSpec, LoadsSpec, NumericsSpec, OutputSpec, Scenario, SectionSpec,
 };
-use super::validate::Problem;
+use super::validate::{Check, Problem};
 use crate::element::LinkLaw;
 use crate::events::Action;
-use crate::line::{
-    DeadEnd, ElasticSupport, Endpoint, LineConductor, Link, LinkKind, Model, NodeRef, PointMass, Role, Support,
-};
+use crate::line::{DeadEnd, ElasticSupport, Endpoint, LineConductor, Link, LinkKind, Model, NodeRef, Role, Support};
 use crate::scheme::{LineError, LineExplicit, StepParams};
 
 /// A scenario of several conductors.
@@ -320,39 +318,27 @@ fn prefixed(k: usize, field: &str, own_events: usize) -> String {
 }
 
 fn build_line(s: &LineScenario) -> Result<LinePlan, Vec<Problem>> {
-    let mut problems: Vec<Problem> = Vec::new();
-    let mut fail = |field: String, value: String, allowed: &str| {
-        problems.push(Problem { field, value, allowed: allowed.into() });
-    };
+    let mut c = Check(Vec::new());
     let spec = &s.line;
     if spec.conductors.is_empty() {
-        fail("line.conductors".into(), "[]".into(), "a line needs at least one conductor");
+        c.fail("line.conductors", "[]", "a line needs at least one conductor");
     }
-    if !(spec.string_damping_n_s.is_finite() && (0.0..=1e7).contains(&spec.string_damping_n_s)) {
-        fail("line.string_damping_n_s".into(), spec.string_damping_n_s.to_string(), "must be in [0, 1e7] N s");
-    }
+    c.within("line.string_damping_n_s", spec.string_damping_n_s, 0.0, 1e7, "must be in [0, 1e7] N s");
     for (t, tower) in spec.towers.iter().enumerate() {
         let f = |name: &str| format!("line.towers[{t}].{name}");
         if tower.name.is_empty() || spec.towers[..t].iter().any(|o| o.name == tower.name) {
-            fail(f("name"), format!("{:?}", tower.name), "must be a non-empty name, unique among the towers");
+            c.fail(&f("name"), format!("{:?}", tower.name), "must be a non-empty name, unique among the towers");
         }
-        if !tower.position_m.iter().all(|v| v.is_finite() && v.abs() <= 1e7) {
-            fail(f("position_m"), format!("{:?}", tower.position_m), "must be three finite coordinates within 1e7 m");
-        }
+        c.coordinates(&f("position_m"), tower.position_m);
         if let Some(e) = &tower.elastic {
-            let mut within = |name: &str, v: f64, lo: f64, hi: f64, allowed: &str| {
-                if !(v.is_finite() && v >= lo && v <= hi) {
-                    fail(f(&format!("elastic.{name}")), v.to_string(), allowed);
-                }
-            };
-            within("along_n_per_m", e.along_n_per_m, 1e2, 1e10, "must be in [1e2, 1e10] N/m");
-            within("across_n_per_m", e.across_n_per_m, 1e2, 1e10, "must be in [1e2, 1e10] N/m");
-            within("mass_kg", e.mass_kg, 1.0, 1e6, "must be in [1, 1e6] kg");
-            within("damping_n_s_per_m", e.damping_n_s_per_m, 0.0, 1e8, "must be in [0, 1e8] N s/m");
+            c.within(&f("elastic.along_n_per_m"), e.along_n_per_m, 1e2, 1e10, "must be in [1e2, 1e10] N/m");
+            c.within(&f("elastic.across_n_per_m"), e.across_n_per_m, 1e2, 1e10, "must be in [1e2, 1e10] N/m");
+            c.within(&f("elastic.mass_kg"), e.mass_kg, 1.0, 1e6, "must be in [1, 1e6] kg");
+            c.within(&f("elastic.damping_n_s_per_m"), e.damping_n_s_per_m, 0.0, 1e8, "must be in [0, 1e8] N s/m");
             let h = (e.along[0] * e.along[0] + e.along[1] * e.along[1]).sqrt();
             if !(h.is_finite() && h > 1e-6 && e.along[2] == 0.0) {
-                fail(
-                    f("elastic.along"),
+                c.fail(
+                    &f("elastic.along"),
                     format!("{:?}", e.along),
                     "must be a horizontal direction [a, b, 0], not zero",
                 );
@@ -361,73 +347,65 @@ fn build_line(s: &LineScenario) -> Result<LinePlan, Vec<Problem>> {
     }
     let mut plans = Vec::new();
     let mut nested: Vec<Problem> = Vec::new();
-    for (k, c) in spec.conductors.iter().enumerate() {
+    for (k, cd) in spec.conductors.iter().enumerate() {
         let f = |name: &str| format!("line.conductors[{k}].{name}");
-        if c.name.is_empty() || spec.conductors[..k].iter().any(|o| o.name == c.name) {
-            fail(f("name"), format!("{:?}", c.name), "must be a non-empty name, unique among the conductors");
+        if cd.name.is_empty() || spec.conductors[..k].iter().any(|o| o.name == cd.name) {
+            c.fail(&f("name"), format!("{:?}", cd.name), "must be a non-empty name, unique among the conductors");
         }
-        let n_sup = c.section.supports.len();
-        if !c.towers.is_empty() && c.towers.len() != n_sup {
-            fail(
-                f("towers"),
-                format!("{} names", c.towers.len()),
+        let n_sup = cd.section.supports.len();
+        if !cd.towers.is_empty() && cd.towers.len() != n_sup {
+            c.fail(
+                &f("towers"),
+                format!("{} names", cd.towers.len()),
                 &format!("must name one tower (or \"\") per support of the section: {n_sup}"),
             );
         }
-        for (j, t) in c.towers.iter().enumerate() {
+        for (j, t) in cd.towers.iter().enumerate() {
             if !t.is_empty() && !spec.towers.iter().any(|x| &x.name == t) {
-                fail(
-                    f(&format!("towers[{j}]")),
+                c.fail(
+                    &f(&format!("towers[{j}]")),
                     format!("{t:?}"),
                     "must be \"\" or the name of a tower of line.towers",
                 );
             }
         }
-        if let Some(b) = &c.bundle {
-            let mut within = |name: &str, v: f64, lo: f64, hi: f64, allowed: &str| {
-                if !(v.is_finite() && v >= lo && v <= hi) {
-                    fail(f(&format!("bundle.{name}")), v.to_string(), allowed);
-                }
-            };
-            within("diameter_m", b.diameter_m, 0.05, 3.0, "must be in [0.05, 3] m");
-            within("spacer_stiffness_n_per_m", b.spacer_stiffness_n_per_m, 1e3, 1e9, "must be in [1e3, 1e9] N/m");
-            within("spacer_damping_n_s_per_m", b.spacer_damping_n_s_per_m, 0.0, 1e6, "must be in [0, 1e6] N s/m");
-            within("spacer_mass_kg", b.spacer_mass_kg, 0.0, 100.0, "must be in [0, 100] kg");
+        if let Some(b) = &cd.bundle {
+            c.within(&f("bundle.diameter_m"), b.diameter_m, 0.05, 3.0, "must be in [0.05, 3] m");
+            let (k_arm, c_arm) = (b.spacer_stiffness_n_per_m, b.spacer_damping_n_s_per_m);
+            c.within(&f("bundle.spacer_stiffness_n_per_m"), k_arm, 1e3, 1e9, "must be in [1e3, 1e9] N/m");
+            c.within(&f("bundle.spacer_damping_n_s_per_m"), c_arm, 0.0, 1e6, "must be in [0, 1e6] N s/m");
+            c.within(&f("bundle.spacer_mass_kg"), b.spacer_mass_kg, 0.0, 100.0, "must be in [0, 100] kg");
             if !(2..=8).contains(&b.sub_conductors) {
-                fail(f("bundle.sub_conductors"), b.sub_conductors.to_string(), "must be in [2, 8]");
+                c.fail(&f("bundle.sub_conductors"), b.sub_conductors, "must be in [2, 8]");
             }
             for (j, sp) in b.spacers.iter().enumerate() {
                 if sp.span + 1 >= n_sup.max(1) {
-                    fail(
-                        f(&format!("bundle.spacers[{j}].span")),
-                        sp.span.to_string(),
+                    c.fail(
+                        &f(&format!("bundle.spacers[{j}].span")),
+                        sp.span,
                         &format!("must be a span of the section: 0 to {}", n_sup.saturating_sub(2)),
                     );
                 }
                 if !(sp.at_fraction.is_finite() && sp.at_fraction > 0.0 && sp.at_fraction < 1.0) {
-                    fail(
-                        f(&format!("bundle.spacers[{j}].at_fraction")),
-                        sp.at_fraction.to_string(),
-                        "must be in (0, 1)",
-                    );
+                    c.fail(&f(&format!("bundle.spacers[{j}].at_fraction")), sp.at_fraction, "must be in (0, 1)");
                 }
             }
         }
-        let members = c.bundle.as_ref().map_or(1, |b| b.sub_conductors);
-        for (j, &m) in c.events_on.iter().enumerate() {
-            if m == 0 || m > members || c.bundle.is_none() {
-                fail(
-                    f(&format!("events_on[{j}]")),
-                    m.to_string(),
+        let members = cd.bundle.as_ref().map_or(1, |b| b.sub_conductors);
+        for (j, &m) in cd.events_on.iter().enumerate() {
+            if m == 0 || m > members || cd.bundle.is_none() {
+                c.fail(
+                    &f(&format!("events_on[{j}]")),
+                    m,
                     &format!("must number a sub-conductor of the bundle: 1 to {members} (a bundle only)"),
                 );
             }
         }
-        match build(&single(s, c)) {
+        match build(&single(s, cd)) {
             Ok(p) => plans.push(Some(p)),
             Err(ps) => {
                 for p in ps {
-                    let field = prefixed(k, &p.field, c.events.len());
+                    let field = prefixed(k, &p.field, cd.events.len());
                     if !nested.iter().any(|q| q.field == field && q.value == p.value) {
                         nested.push(Problem { field, ..p });
                     }
@@ -436,6 +414,7 @@ fn build_line(s: &LineScenario) -> Result<LinePlan, Vec<Problem>> {
             }
         }
     }
+    let Check(mut problems) = c;
     problems.extend(nested);
     if !problems.is_empty() {
         return Err(problems);
@@ -645,26 +624,8 @@ fn assemble(s: &LineScenario, plans: Vec<Plan>, global_only: Vec<Option<Plan>>) 
                 let (first, last) = plan.spans[sp.span];
                 let count = last - first;
                 let node = first + ((sp.at_fraction * count as f64).round() as usize).clamp(1, count - 1);
-                let n = members.len();
-                for i in 0..n {
-                    for j in i + 1..n {
-                        let (p, q) = (offsets[i], offsets[j]);
-                        let len = ((p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2)).sqrt();
-                        model.links.push(Link {
-                            kind: LinkKind::Spacer,
-                            a: Endpoint::Node(NodeRef::new(members[i], node)),
-                            b: Endpoint::Node(NodeRef::new(members[j], node)),
-                            law: LinkLaw::spring(len, b.spacer_stiffness_n_per_m, b.spacer_damping_n_s_per_m),
-                            intact: true,
-                        });
-                    }
-                    if b.spacer_mass_kg > 0.0 {
-                        model.point_masses.push(PointMass {
-                            node: NodeRef::new(members[i], node),
-                            mass_kg: b.spacer_mass_kg / n as f64,
-                        });
-                    }
-                }
+                let arm = (b.spacer_stiffness_n_per_m, b.spacer_damping_n_s_per_m);
+                crate::line::build::add_spacer(&mut model, &members, &offsets, node, arm, b.spacer_mass_kg);
             }
         }
         groups.push(members);

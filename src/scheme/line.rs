@@ -116,6 +116,8 @@ pub struct LineExplicit {
     fresh: bool,
     /// force on end `b` of each link at the current level [N]
     link_force: Vec<[f64; 3]>,
+    /// tension of each link at the current level [N]
+    link_tension: Vec<f64>,
     /// point forces per conductor (scratch)
     points: Vec<Vec<(usize, [f64; 3])>>,
     /// sum of the link forces on each support at the current level [N]
@@ -161,6 +163,7 @@ impl LineExplicit {
             dt_prev: 0.0,
             fresh: false,
             link_force: vec![[0.0; 3]; model.links.len()],
+            link_tension: vec![0.0; model.links.len()],
             points: vec![Vec::new(); n],
             support_load: vec![[0.0; 3]; model.supports.len()],
         })
@@ -208,6 +211,15 @@ impl LineExplicit {
         for c in &mut self.conductors {
             c.ensure_forces();
         }
+        self.evaluate_links();
+        self.fresh = true;
+    }
+
+    /// The links' forces of the current state only, without the conductors' segment passes: set on the
+    /// conductors as point forces and summed on the supports ([`LineExplicit::support_link_loads_n`]). For a
+    /// static solver's residual, which evaluates each conductor's net force itself
+    /// ([`Explicit::net_force`]); the level is evaluated in full only by [`LineExplicit::evaluate_forces`].
+    pub fn evaluate_links(&mut self) {
         for p in &mut self.points {
             p.clear();
         }
@@ -215,14 +227,15 @@ impl LineExplicit {
             *l = [0.0; 3];
         }
         for (k, link) in self.links.iter().enumerate() {
-            let f = if link.intact {
+            let (t, f) = if link.intact {
                 let (ra, va) = self.endpoint_state(&link.a);
                 let (rb, vb) = self.endpoint_state(&link.b);
-                link.law.force_on_b(ra, rb, va, vb)
+                link.law.tension_and_force_on_b(ra, rb, va, vb)
             } else {
-                [0.0; 3]
+                (0.0, [0.0; 3])
             };
             self.link_force[k] = f;
+            self.link_tension[k] = t;
             for (end, sign) in [(&link.a, -1.0), (&link.b, 1.0)] {
                 let g = [sign * f[0], sign * f[1], sign * f[2]];
                 match *end {
@@ -240,7 +253,6 @@ impl LineExplicit {
                 c.set_point_forces(p);
             }
         }
-        self.fresh = true;
     }
 
     /// Position [m] and velocity at the last half step [m/s] of an attachment's end.
@@ -301,16 +313,11 @@ impl LineExplicit {
         self.link_force[l]
     }
 
-    /// Tension of link `l` at the evaluated level [N] (negative: a spacer arm in compression).
+    /// Tension of link `l` at the evaluated level [N] (negative: a spacer arm in compression), the value
+    /// its force was computed from.
     pub fn link_tension_n(&self, l: usize) -> f64 {
         assert!(self.fresh, "link_tension_n needs evaluate_forces at this time level");
-        let link = &self.links[l];
-        if !link.intact {
-            return 0.0;
-        }
-        let (ra, va) = self.endpoint_state(&link.a);
-        let (rb, vb) = self.endpoint_state(&link.b);
-        link.law.tension(sub(rb, ra), sub(vb, va)).0
+        self.link_tension[l]
     }
 
     /// Position of support `s`'s reference point [m].
@@ -335,10 +342,10 @@ impl LineExplicit {
         self.fresh = false;
     }
 
-    /// The sum of the link forces on support `s` at the evaluated level [N] (without its own springs).
-    pub fn support_link_load_n(&self, s: usize) -> [f64; 3] {
-        assert!(self.fresh, "support_link_load_n needs evaluate_forces at this time level");
-        self.support_load[s]
+    /// The sum of the link forces on each support [N] (without its own springs), from the last link pass
+    /// ([`LineExplicit::evaluate_links`] or [`LineExplicit::evaluate_forces`]).
+    pub fn support_link_loads_n(&self) -> &[[f64; 3]] {
+        &self.support_load
     }
 
     /// Stop every motion: conductor and support velocities set to zero (a static state).

@@ -143,7 +143,18 @@ struct LineEquations<'a> {
 impl Equations for LineEquations<'_> {
     fn residual(&mut self, rhs: &mut [f64]) -> (f64, f64) {
         let line = &mut *self.line;
-        line.evaluate_forces();
+        // The links' forces on the conductors and supports; each conductor's net force then evaluates its
+        // own segment pass once.
+        line.evaluate_links();
+        let specs: Vec<_> = line.supports().map(|s| (s.position_m, s.elastic)).collect();
+        let mut support_rows = Vec::new();
+        for (s, (rest, el)) in specs.into_iter().enumerate() {
+            let (Some(o), Some(el)) = (self.dofs.support(s), el) else { continue };
+            let p = line.support_position_m(s);
+            let spring = el.spring_force([p[0] - rest[0], p[1] - rest[1], p[2] - rest[2]], [0.0; 3]);
+            let load = line.support_link_loads_n()[s];
+            support_rows.push((o, [spring[0] + load[0], spring[1] + load[1]]));
+        }
         if self.f.len() != line.conductors().len() {
             self.f = line.conductors().iter().map(|c| std::array::from_fn(|_| vec![0.0; c.wire().nodes()])).collect();
         }
@@ -154,7 +165,7 @@ impl Equations for LineEquations<'_> {
             sq += v * v;
         };
         for c in 0..line.conductors().len() {
-            // `net_force` includes the links' point forces set by `evaluate_forces`.
+            // `net_force` includes the links' point forces set by `evaluate_links`.
             line.conductor_mut(c).net_force(&mut self.f[c]);
             for i in 0..self.f[c][0].len() {
                 if let Some(o) = self.dofs.node(c, i) {
@@ -164,15 +175,9 @@ impl Equations for LineEquations<'_> {
                 }
             }
         }
-        line.evaluate_forces();
-        let specs: Vec<_> = line.supports().map(|s| (s.position_m, s.elastic)).collect();
-        for (s, (rest, el)) in specs.into_iter().enumerate() {
-            let (Some(o), Some(el)) = (self.dofs.support(s), el) else { continue };
-            let p = line.support_position_m(s);
-            let spring = el.spring_force([p[0] - rest[0], p[1] - rest[1], p[2] - rest[2]], [0.0; 3]);
-            let load = line.support_link_load_n(s);
+        for (o, v) in support_rows {
             for k in 0..2 {
-                put(o + k, spring[k] + load[k]);
+                put(o + k, v[k]);
             }
         }
         (if sq.is_finite() { max } else { f64::NAN }, sq.sqrt())
