@@ -7,8 +7,8 @@
 //! Tolerance: the contact acts once per step, so the stopping time is resolved to `dt` and the distance
 //! to about `v0 dt`: 5e-3 m here for `dt = 1e-3 s`; asserted at 2 v0 dt.
 
+use ohl::element::tension::LawKind;
 use ohl::scheme::{Explicit, Ground, Loads, StepParams, WindGate};
-use ohl::wire::tension::LawKind;
 use ohl::wire::{Conductor, Constraint, Wire};
 
 const G: f64 = 9.81;

@@ -22,15 +22,15 @@
 //! depend on it beyond millimetres).
 
 use ohl::element::LinkLaw;
+use ohl::element::aero::Aerodynamic;
+use ohl::element::tension::LawKind;
 use ohl::line::build::{Attach, BundleSpec, add_bundle, add_section_conductor};
 use ohl::line::clearance::{Scratch, least_distance};
 use ohl::line::{ElasticSupport, Endpoint, Link, LinkKind, Model, NodeRef, Role, Support};
 use ohl::scheme::{Explicit, LineError, LineExplicit, Loads, StepParams, WindGate, WindLoad};
 use ohl::statics::{self, StaticOptions};
 use ohl::wire::Conductor;
-use ohl::wire::aero::Aerodynamic;
 use ohl::wire::section::{self, Section, Span, Stringing, Support as SectionSupport};
-use ohl::wire::tension::LawKind;
 
 const G: f64 = 9.81;
 

@@ -15,10 +15,10 @@
 //! order of long-rod and cap-and-pin strings; the results depend on it only through millimetres of
 //! stretch).
 
+use ohl::element::tension::LawKind;
 use ohl::scheme::{Explicit, Loads, StepParams, WindGate};
 use ohl::statics::{self, StaticOptions};
 use ohl::wire::section::{self, CrossarmSpec, Layout, Section, Span, Stringing, Support};
-use ohl::wire::tension::LawKind;
 use ohl::wire::{Conductor, Wire};
 
 const G: f64 = 9.81;

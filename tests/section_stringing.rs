@@ -11,11 +11,11 @@
 //!   order 2 to the exact elastic catenary whose unstretched length is the strung one divided by
 //!   `1 + alpha (T0 - T_ref)`.
 
+use ohl::element::tension::LawKind;
 use ohl::exact::catenary::ElasticCatenary;
 use ohl::scenario;
 use ohl::wire::Conductor;
 use ohl::wire::section::{self, Section, Span, Stringing, Support, length_for_tension};
-use ohl::wire::tension::LawKind;
 
 const G: f64 = 9.81;
 const EA: f64 = 2.9e7;

@@ -7,11 +7,11 @@
 //! (positions of size `X` known to `X eps`, turned into force by the axial stiffness): on these grids
 //! `32 R` governs, `1e-7` to `6e-5` of the nodal weight, and no double-precision iteration can go lower.
 
+use ohl::element::aero::{Aerodynamic, SegmentLoad};
+use ohl::element::tension::LawKind;
 use ohl::exact::ElasticCatenary;
 use ohl::scheme::{Explicit, Loads, StepParams, WindGate, WindLoad};
 use ohl::statics::{self, StaticError, StaticOptions, StaticReport};
-use ohl::wire::aero::{Aerodynamic, SegmentLoad};
-use ohl::wire::tension::LawKind;
 use ohl::wire::{Conductor, Wire};
 
 const EA_N: f64 = 80734.0 * 9.81;

@@ -1,19 +1,27 @@
 //! Force elements, each written once over a [`Scalar`] (`f64` or a dual number), so that the explicit
 //! step, the Jacobian of the static solver and the diagnostics evaluate the same formula.
 //!
+//! - [`tension`]: the Kelvin-Voigt law (3.4) of a conductor segment (tension-only or linear).
+//! - [`aero`]: the distributed wind loads (2.5)-(2.6) and the uniform normal pressure of section 4.1.
+//! - [`segment`]: a conductor's own segment, composing the two with its stretch and its uniform load:
+//!   the segment pass of (3.1), which the fused, vectorised kernel ([`crate::scheme::explicit`]) calls
+//!   on `f64` for every segment and the static solver's Jacobian ([`crate::statics::jacobian`]) on dual
+//!   numbers.
 //! - [`link`]: an axial spring-damper between two points (insulator strings, tension strings, spacers
 //!   and interphase spacers of a multi-conductor line, [`crate::line`]).
 //! - [`pair`]: the least distance between two segments, the geometry of every pair element between two
 //!   conductors (clearances now; the electromagnetic forces of a short circuit next).
 //!
-//! The conductor's own segment pass (tension (3.4) and the distributed loads (2.5)-(2.6)) keeps its fused,
-//! vectorised form in [`crate::scheme::explicit`] and its dual-number replica in
-//! [`crate::statics::jacobian`] (checked against each other by `jacobian::replica_gap`); the elements here
-//! are the ones that join conductors to each other and to their supports.
+//! Not yet elements: the single-conductor insulator string with its crossarm ([`crate::wire::insulator`],
+//! whose force and stiffness are written out by hand and checked against each other) and the ground
+//! contact of the node pass.
 
+pub mod aero;
 pub mod link;
 pub mod pair;
 pub mod scalar;
+pub mod segment;
+pub mod tension;
 
 pub use link::LinkLaw;
 pub use scalar::Scalar;

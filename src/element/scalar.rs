@@ -6,8 +6,20 @@ use crate::statics::dual::Dual;
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
 /// A real number with the operations the force elements need.
+///
+/// Mixed operations with an `f64` constant (`x * k`, `x + k`, `x - k`) are part of the trait, so that a
+/// formula written once costs no derivative work for its constants on dual numbers and, on `f64`, is the
+/// very expression the kernel evaluates (same operations in the same order, hence the same bits).
 pub trait Scalar:
-    Copy + Add<Output = Self> + Sub<Output = Self> + Mul<Output = Self> + Div<Output = Self> + Neg<Output = Self>
+    Copy
+    + Add<Output = Self>
+    + Sub<Output = Self>
+    + Mul<Output = Self>
+    + Div<Output = Self>
+    + Neg<Output = Self>
+    + Mul<f64, Output = Self>
+    + Add<f64, Output = Self>
+    + Sub<f64, Output = Self>
 {
     /// a constant (no derivative)
     fn c(v: f64) -> Self;
@@ -17,6 +29,10 @@ pub trait Scalar:
     fn sqrt(self) -> Self;
     /// `max(self, 0)` (derivative 0 where the value is not positive)
     fn positive_part(self) -> Self;
+    /// `|self|` (derivative `sign(self)`, 0 at 0)
+    fn abs(self) -> Self;
+    /// `max(self, lo)` for a constant `lo` (derivative 0 where the constant is taken)
+    fn max_c(self, lo: f64) -> Self;
 }
 
 impl Scalar for f64 {
@@ -36,6 +52,14 @@ impl Scalar for f64 {
     fn positive_part(self) -> Self {
         self.max(0.0)
     }
+    #[inline(always)]
+    fn abs(self) -> Self {
+        f64::abs(self)
+    }
+    #[inline(always)]
+    fn max_c(self, lo: f64) -> Self {
+        self.max(lo)
+    }
 }
 
 impl<const S: usize> Scalar for Dual<S> {
@@ -54,6 +78,14 @@ impl<const S: usize> Scalar for Dual<S> {
     #[inline(always)]
     fn positive_part(self) -> Self {
         if self.v > 0.0 { self } else { Dual::c(0.0) }
+    }
+    #[inline(always)]
+    fn abs(self) -> Self {
+        Dual::abs(self)
+    }
+    #[inline(always)]
+    fn max_c(self, lo: f64) -> Self {
+        Dual::max_c(self, lo)
     }
 }
 

@@ -307,7 +307,8 @@ impl ClearanceTracker {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::wire::{Conductor, tension::LawKind};
+    use crate::element::tension::LawKind;
+    use crate::wire::Conductor;
 
     fn straight(x1: f64, x3: f64, n: usize, len: f64, shift: f64) -> Wire {
         let xs = [vec![x1; n + 1], (0..=n).map(|i| shift + len * i as f64 / n as f64).collect(), vec![x3; n + 1]];

@@ -42,7 +42,7 @@ pub struct LineConductor {
     /// its nodes and segments, with its own axial stiffness, internal friction, linear density, temperature
     pub wire: Wire,
     /// its own loads: gravity, uniform load, and its own wind (`q d c_n` with its own diameter and drag
-    /// coefficients, [`crate::wire::aero`])
+    /// coefficients, [`crate::element::aero`])
     pub loads: Loads,
 }
 

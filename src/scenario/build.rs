@@ -6,13 +6,13 @@
 use super::events::{EventSpec, GateSpec, GroundSpec, HeatBoundarySpec, break_segment, node_range, segment_range};
 use super::schema::{GeometrySpec, Scenario, ShapeSpec, TensionLawSpec, WindLawSpec};
 use super::validate::Problem;
+use crate::element::aero::{Aerodynamic, UniformNormal};
+use crate::element::tension::LawKind;
 use crate::events::{Action, Event};
 use crate::heat::HeatBoundary;
 use crate::output::probe::ProbeAt;
 use crate::scheme::{Explicit, Ground, Loads, StepParams, WindGate, WindLoad};
 use crate::statics::{self, StaticOptions, StaticReport};
-use crate::wire::aero::{Aerodynamic, UniformNormal};
-use crate::wire::tension::LawKind;
 use crate::wire::{Conductor, Wire};
 
 /// When the run stops.

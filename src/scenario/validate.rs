@@ -8,9 +8,9 @@ use std::ops::Range;
 use super::events::{EventSpec, GroundSpec, HeatBoundarySpec, break_segment, node_range, segment_range};
 use super::schema::{Scenario, ShapeSpec, SupportSpec, TensionLawSpec, WindLawSpec};
 use super::section::SectionGrid;
+use crate::element::tension::LawKind;
 use crate::scheme::courant;
 use crate::wire::Conductor;
-use crate::wire::tension::LawKind;
 
 /// One invalid field.
 #[derive(Clone, Debug, PartialEq)]
@@ -1123,7 +1123,7 @@ mod tests {
         let conductor = crate::wire::Conductor {
             axial_stiffness_n: 1.0,
             internal_friction_n_s: 0.0,
-            law: crate::wire::tension::LawKind::TensionOnly,
+            law: crate::element::tension::LawKind::TensionOnly,
         };
         let x = [vec![0.0; n + 1], (0..=n).map(|i| i as f64 * ds).collect(), vec![0.0; n + 1]];
         let mut w = crate::wire::Wire::new(conductor, x, vec![ds; n], rho);

@@ -11,8 +11,8 @@
 
 use super::courant;
 use super::{Explicit, Loads, StepParams, WindGate, WindLoad};
-use crate::wire::aero::{Aerodynamic, UniformNormal};
-use crate::wire::tension::LawKind;
+use crate::element::aero::{Aerodynamic, UniformNormal};
+use crate::element::tension::LawKind;
 use crate::wire::{Conductor, Wire};
 
 /// Axial stiffness of the paper's test wire, "E = 80734 g" [N] (section 4; docs/paper_notes.md).

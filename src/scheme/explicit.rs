@@ -26,18 +26,12 @@
 
 use super::contact::{self, Ground};
 use super::smoothing;
+use crate::element::aero::{Downwind, NoWind, SegmentLoad};
+use crate::element::segment;
+use crate::element::tension::{LawKind, Linear, TensionLaw, TensionOnly, from_order_key, order_key};
 use crate::wire::Wire;
-use crate::wire::aero::{Aerodynamic, Downwind, NoWind, SegmentLoad, UniformNormal};
-use crate::wire::tension::{LawKind, Linear, TensionLaw, TensionOnly, from_order_key, order_key};
 
-/// Wind load of a run (the laws of [`crate::wire::aero`]), before the on/off scale is applied.
-#[derive(Clone, Copy, Debug)]
-pub enum WindLoad {
-    /// Uniform normal pressure (section 4.1).
-    UniformNormal(UniformNormal),
-    /// Aerodynamic law (2.5)-(2.6).
-    Aerodynamic(Aerodynamic),
-}
+pub use crate::element::aero::WindLoad;
 
 /// External loads.
 #[derive(Clone, Copy, Debug)]
@@ -585,37 +579,26 @@ impl Explicit {
         let (fs1, fs2, fs3) = (&mut fs1[1..n + 1], &mut fs2[1..n + 1], &mut fs3[1..n + 1]);
         let (es1, es2, es3) = (&mut es1[1..n + 1], &mut es2[1..n + 1], &mut es3[1..n + 1]);
         for j in 0..n {
-            let d = [x1b[j] - x1a[j], x2b[j] - x2a[j], x3b[j] - x3a[j]];
-            let len = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
-            let inv_len = 1.0 / len;
-            let t = [d[0] * inv_len, d[1] * inv_len, d[2] * inv_len];
-            let inv_l0 = 1.0 / l0[j];
-            let e = len * inv_l0 - 1.0;
-            let dv = [v1b[j] - v1a[j], v2b[j] - v2a[j], v3b[j] - v3a[j]];
-            let edot = (dv[0] * t[0] + dv[1] * t[1] + dv[2] * t[2]) * inv_l0;
+            // The segment element (`element::segment`) on f64, piece by piece: the same operations in
+            // the same order as its dual-number evaluation in the static Jacobian.
+            let (va, vb) = ([v1a[j], v2a[j], v3a[j]], [v1b[j], v2b[j], v3b[j]]);
+            let st = segment::stretch([x1a[j], x2a[j], x3a[j]], [x1b[j], x2b[j], x3b[j]], va, vb, l0[j]);
             // Without internal friction anywhere (`VISCOUS = false`) the viscous term is the constant
             // `0 * 0`: it changes only the sign of a zero tension, and the strain rate is not computed.
             let tension = if VISCOUS {
-                L::tension(ea[j], eta[j], e, edot) * intact[j]
+                L::tension(ea[j], eta[j], st.e, st.edot) * intact[j]
             } else {
-                L::tension(ea[j], 0.0, e, 0.0) * intact[j]
+                L::tension(ea[j], 0.0, st.e, 0.0) * intact[j]
             };
             kmax = kmax.max(L::order_key(tension));
+            let t = st.t;
             fs1[j] = tension * t[0];
             fs2[j] = tension * t[1];
             fs3[j] = tension * t[2];
-            let vm = [0.5 * (v1a[j] + v1b[j]), 0.5 * (v2a[j] + v2b[j]), 0.5 * (v3a[j] + v3b[j])];
-            let p = load.force(t, len, vm);
-            let h = 0.5 * intact[j];
-            if UNIFORM {
-                es1[j] = h * (p[0] + q[0] * lref[j]);
-                es2[j] = h * (p[1] + q[1] * lref[j]);
-                es3[j] = h * (p[2] + q[2] * lref[j]);
-            } else {
-                es1[j] = h * p[0];
-                es2[j] = h * p[1];
-                es3[j] = h * p[2];
-            }
+            let e = segment::share::<f64, W, UNIFORM>(load, &st, va, vb, q, lref[j], intact[j]);
+            es1[j] = e[0];
+            es2[j] = e[1];
+            es3[j] = e[2];
         }
         self.max_tension_n = from_order_key(kmax);
     }
@@ -903,19 +886,15 @@ impl Explicit {
         }
     }
 
-    /// Tension of segment `j` [N] at the current level (Kelvin-Voigt, strain rate at `n - 1/2`).
+    /// Tension of segment `j` [N] at the current level (Kelvin-Voigt, strain rate at `n - 1/2`): the
+    /// segment element's ([`crate::element::segment`]), the value the kernel's segment pass forms.
     pub fn segment_tension(&self, j: usize) -> f64 {
         let w = &self.wire;
         let (ea, eta) = (w.axial_stiffness_n[j], w.internal_friction_n_s[j]);
-        let (a, b) = (w.position(j), w.position(j + 1));
-        let d = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
-        let len = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
-        let dv = [0, 1, 2].map(|k| w.v[k][j + 1] - w.v[k][j]);
-        let edot = (dv[0] * d[0] + dv[1] * d[1] + dv[2] * d[2]) / (len * w.rest_length[j]);
-        let e = len / w.rest_length[j] - 1.0;
+        let st = segment::stretch(w.position(j), w.position(j + 1), w.velocity(j), w.velocity(j + 1), w.rest_length[j]);
         let t = match w.law {
-            LawKind::TensionOnly => TensionOnly::tension(ea, eta, e, edot),
-            LawKind::Linear => Linear::tension(ea, eta, e, edot),
+            LawKind::TensionOnly => TensionOnly::tension(ea, eta, st.e, st.edot),
+            LawKind::Linear => Linear::tension(ea, eta, st.e, st.edot),
         };
         t * w.intact[j]
     }
@@ -1034,7 +1013,8 @@ mod tests {
             }
             s.evaluate_forces();
             let direct = (0..s.wire.segments()).map(|j| s.segment_tension(j)).fold(0.0_f64, f64::max);
-            assert!((s.max_tension_n() - direct).abs() <= 1e-12 * direct, "{name}: {} vs {direct}", s.max_tension_n());
+            // Both are the segment element's tension (`element::segment`): the same number, exactly.
+            assert_eq!(s.max_tension_n(), direct, "{name}");
         }
     }
 

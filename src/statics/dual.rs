@@ -131,6 +131,20 @@ impl<const S: usize> Add<f64> for Dual<S> {
         Dual { v: self.v + o, d: self.d }
     }
 }
+impl<const S: usize> Sub<f64> for Dual<S> {
+    type Output = Self;
+    #[inline(always)]
+    fn sub(self, o: f64) -> Self {
+        Dual { v: self.v - o, d: self.d }
+    }
+}
+impl<const S: usize> Mul<f64> for Dual<S> {
+    type Output = Self;
+    #[inline(always)]
+    fn mul(self, o: f64) -> Self {
+        self.map(self.v * o, o)
+    }
+}
 
 /// dot product of two dual 3-vectors
 #[inline(always)]

@@ -1,11 +1,12 @@
 //! The exact Jacobian of the discrete nodal forces, by dual numbers over each segment's inputs.
 //!
-//! A replica of the kernel's segment pass (`Explicit::segment_pass`): with `d = r_b - r_a`,
-//! `len = |d|`, `t = d / len`, `e = len / l0 - 1`, `edot = (v_b - v_a) . t / l0`, tension `T` from the
-//! Kelvin-Voigt law (3.4) (linear or tension-only), the wind load `P` of [`crate::wire::aero`] with the
-//! mean segment velocity (2.5)-(2.6), and the uniform load `q L`: node `a` receives `T t + (P + q L) / 2`,
-//! node `b` receives `-T t + (P + q L) / 2`, the distributed part only while the node is exposed (3.1).
-//! Gravity and prescribed nodal forces are constant and have no derivative.
+//! The kernel's segment pass is the segment element [`crate::element::segment`] on `f64`; here the same
+//! element runs on dual numbers: with `d = r_b - r_a`, `len = |d|`, `t = d / len`, `e = len / l0 - 1`,
+//! `edot = (v_b - v_a) . t / l0`, tension `T` from the Kelvin-Voigt law (3.4) (linear or tension-only),
+//! the wind load `P` of [`crate::element::aero`] with the mean segment velocity (2.5)-(2.6), and the
+//! uniform load `q L`: node `a` receives `T t + (P + q L) / 2`, node `b` receives `-T t + (P + q L) / 2`,
+//! the distributed part only while the node is exposed (3.1). Gravity and prescribed nodal forces are
+//! constant and have no derivative. The insulator strings' stiffness is [`crate::wire::Insulator::stiffness`].
 //!
 //! The Jacobian `dF/dx` is block-tridiagonal: one 3x3 block row per free node, coupling it with its two
 //! neighbours. Its entries are written in a fixed order ([`pattern`] gives the positions once, [`values`]
@@ -16,21 +17,16 @@
 //! axial stiffness `EA / l0`, and every segment's geometric (transverse) stiffness `T / len` is taken with
 //! at least the tension floor `T_min`. The residual is never changed, only the search direction.
 
-use super::dual::{Dual, dot};
-use crate::scheme::{Explicit, WindLoad};
-use crate::wire::tension::LawKind;
+use super::dual::Dual;
+use crate::element::segment::evaluate;
+use crate::element::tension::{LawKind, Linear, TensionLaw, TensionOnly};
+use crate::scheme::Explicit;
 use faer::sparse::Pair;
 
 /// Axial stiffness `EA` [N] of segment `j`.
 #[inline(always)]
 fn segment_ea(s: &Explicit, j: usize) -> f64 {
     s.wire().axial_stiffness_n[j]
-}
-
-/// Internal friction `eta` [N s] of segment `j` (see [`segment_ea`]).
-#[inline(always)]
-fn segment_eta(s: &Explicit, j: usize) -> f64 {
-    s.wire().internal_friction_n_s[j]
 }
 
 /// Largest axial stiffness per unit rest length `max_j EA_j / l0_j` [N/m].
@@ -53,47 +49,10 @@ pub fn unknown_index(s: &Explicit) -> (Vec<Option<usize>>, usize) {
     (idx, n)
 }
 
-#[inline(always)]
-fn sub<const S: usize>(a: &[Dual<S>; 3], b: &[Dual<S>; 3]) -> [Dual<S>; 3] {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-
-#[inline(always)]
-fn wind_force<const S: usize>(
-    wind: &WindLoad,
-    scale: f64,
-    t: &[Dual<S>; 3],
-    len: Dual<S>,
-    vm: &[Dual<S>; 3],
-) -> [Dual<S>; 3] {
-    let (w, mu_over_u) = match wind {
-        WindLoad::UniformNormal(u) => (u.direction, u.mu_over_u),
-        WindLoad::Aerodynamic(a) => (a.direction, a.mu_over_u),
-    };
-    let wd = [Dual::c(w[0]), Dual::c(w[1]), Dual::c(w[2])];
-    let wt = dot(&wd, t);
-    let wp = [wd[0] - wt * t[0], wd[1] - wt * t[1], wd[2] - wt * t[2]];
-    // The kernel's guard (`aero::TINY_SIN`): a segment along the wind has no normal direction.
-    let s = dot(&wp, &wp).sqrt();
-    let inv_s = Dual::c(1.0) / s.max_c(1.0e-300);
-    let vn = dot(vm, &wp) * inv_s;
-    let f = Dual::c(1.0) - mu_over_u * vn;
-    let damp = f * f.abs();
-    match wind {
-        WindLoad::UniformNormal(u) => {
-            let k = (u.pressure_n_per_m * scale) * (len * damp * inv_s);
-            [k * wp[0], k * wp[1], k * wp[2]]
-        }
-        WindLoad::Aerodynamic(a) => {
-            let kn = (a.qd_cn * scale * s + a.qd_ct * scale) * damp * len;
-            let kt = (a.qd_ct * scale) * (wt * wt.abs() * len);
-            [kn * wp[0] + kt * t[0], kn * wp[1] + kt * t[1], kn * wp[2] + kt * t[2]]
-        }
-    }
-}
-
 /// Forces on the two end nodes of segment `j` with their derivatives: with `S = 6` with respect to
 /// `(x_a, x_b)` (the velocities enter as constants), with `S = 12` also to `(v_a, v_b)` (slots 6-11).
+/// The segment element ([`crate::element::segment::evaluate`]) on dual numbers: its values are the
+/// kernel's forces bit for bit (the same expression on `f64`).
 ///
 /// `floor_n`: `None` for the exact forces; `Some(T_min)` [N] regularises the derivatives (module doc):
 /// the *values* are then not the kernel's and only the derivatives may be used.
@@ -104,45 +63,28 @@ pub fn segment_forces<const S: usize>(s: &Explicit, j: usize, floor_n: Option<f6
     let xb: [Dual<S>; 3] = std::array::from_fn(|k| Dual::var(w.x[k][j + 1], 3 + k));
     let va: [Dual<S>; 3] = std::array::from_fn(|k| var(w.v[k][j], 6 + k));
     let vb: [Dual<S>; 3] = std::array::from_fn(|k| var(w.v[k][j + 1], 9 + k));
-    let (ea, eta) = (segment_ea(s, j), segment_eta(s, j));
-    let l0 = w.rest_length[j];
-    let d = sub(&xb, &xa);
-    let len = dot(&d, &d).sqrt();
-    let inv_len = Dual::c(1.0) / len;
-    let t = [d[0] * inv_len, d[1] * inv_len, d[2] * inv_len];
-    let e = (1.0 / l0) * len + (-1.0);
-    let dv = sub(&vb, &va);
-    let edot = (1.0 / l0) * dot(&dv, &t);
-    let raw = ea * e + eta * edot;
-    let tension = match (w.law, floor_n) {
-        (LawKind::Linear, _) => raw,
-        // Regularised: a slack segment is linearised with the linear law (axial stiffness EA / l0).
-        (LawKind::TensionOnly, Some(_)) if raw.v <= 0.0 || e.v <= 0.0 => raw,
-        (LawKind::TensionOnly, _) => {
-            if e.v > 0.0 {
-                raw.max_c(0.0)
-            } else {
-                Dual::c(0.0)
-            }
-        }
+    let props = w.segment_props(j);
+    let load = s.loads().wind.map(|wl| wl.scaled(s.loads().wind_scale));
+    let q = s.loads().uniform_load_n_per_m;
+    let mut f = match w.law {
+        LawKind::Linear => evaluate::<Dual<S>, Linear, _, true, true>(xa, xb, va, vb, &props, &load, q),
+        LawKind::TensionOnly => evaluate::<Dual<S>, TensionOnly, _, true, true>(xa, xb, va, vb, &props, &load, q),
     };
-    let tension = w.intact[j] * tension;
+    if floor_n.is_some() && w.law == LawKind::TensionOnly {
+        // Regularised: a slack segment is linearised with the linear law (axial stiffness EA / l0).
+        let raw = Linear::tension(props.axial_stiffness_n, props.internal_friction_n_s, f.stretch.e, f.stretch.edot);
+        if raw.v <= 0.0 || f.stretch.e.v <= 0.0 {
+            f.tension = raw * props.intact;
+        }
+    }
     // Geometric stiffness with at least the floor: `T t` gains `(T_min - T) t`, a constant times `t`,
     // whose derivative `(T_min - T) (I - t t) / len` adds exactly the missing transverse stiffness.
-    let extra = floor_n.map_or(0.0, |f| (f - tension.v).max(0.0));
-    let tension_dir: [Dual<S>; 3] = std::array::from_fn(|k| tension * t[k] + extra * t[k]);
-    let vm: [Dual<S>; 3] = std::array::from_fn(|k| 0.5 * (va[k] + vb[k]));
-    let p = match &s.loads().wind {
-        Some(wl) => wind_force(wl, s.loads().wind_scale, &t, len, &vm),
-        None => [Dual::c(0.0); 3],
-    };
-    let q = s.loads().uniform_load_n_per_m;
-    let lref = w.reference_length[j];
-    let h = 0.5 * w.intact[j];
-    let es: [Dual<S>; 3] = std::array::from_fn(|k| h * (p[k] + q[k] * lref));
+    let extra = floor_n.map_or(0.0, |fl| (fl - f.tension.v).max(0.0));
+    let t = f.stretch.t;
+    let tension_dir: [Dual<S>; 3] = std::array::from_fn(|k| f.tension * t[k] + extra * t[k]);
     let (xa_exp, xb_exp) = (w.exposed[j], w.exposed[j + 1]);
-    let fa = std::array::from_fn(|k| tension_dir[k] + xa_exp * es[k]);
-    let fb = std::array::from_fn(|k| -tension_dir[k] + xb_exp * es[k]);
+    let fa = std::array::from_fn(|k| tension_dir[k] + xa_exp * f.share[k]);
+    let fb = std::array::from_fn(|k| -tension_dir[k] + xb_exp * f.share[k]);
     (fa, fb)
 }
 

@@ -21,8 +21,9 @@
 //! # Method
 //!
 //! Newton's method on `F(x) = 0`: `J dx = -F` with the exact Jacobian `J = dF/dx` ([`jacobian`]:
-//! forward-mode dual numbers ([`dual`]) over a replica of the kernel's segment formulas, checked against
-//! the kernel by [`jacobian::replica_gap`]), block-tridiagonal with 3x3 blocks, factored by faer's sparse
+//! forward-mode dual numbers ([`dual`]) over the segment element the kernel evaluates on `f64`
+//! ([`crate::element::segment`]; [`jacobian::replica_gap`] checks the whole nodal force, strings and
+//! gravity included), block-tridiagonal with 3x3 blocks, factored by faer's sparse
 //! LU with the symbolic analysis done once ([`sparse_lu`]).
 //!
 //! # Globalisation: tension-floor regularisation of the Jacobian, and a line search

@@ -4,8 +4,8 @@
 use super::jacobian::{max_axial_stiffness_n_per_m, pattern, unknown_index, values};
 use super::pivots::Pivots;
 use super::sparse_lu::{SparseLu, SparseLuError};
-use crate::scheme::{Explicit, WindGate, WindLoad};
-use crate::wire::aero::SegmentLoad;
+use crate::element::segment;
+use crate::scheme::{Explicit, WindGate};
 use faer::sparse::Pair;
 
 /// Options of [`solve`].
@@ -117,28 +117,16 @@ pub fn nodal_loads(s: &Explicit) -> [Vec<f64>; 3] {
         }
     }
     let q = s.loads().uniform_load_n_per_m;
+    let load = s.loads().wind.map(|wl| wl.scaled(s.loads().wind_scale));
+    let zero = [0.0; 3];
     for j in 0..w.segments() {
-        let (a, b) = (w.position(j), w.position(j + 1));
-        let d = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
-        let len = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
-        let t = [d[0] / len, d[1] / len, d[2] / len];
-        let p = match s.loads().wind {
-            None => [0.0; 3],
-            Some(WindLoad::UniformNormal(mut u)) => {
-                u.pressure_n_per_m *= s.loads().wind_scale;
-                u.force(t, len, [0.0; 3])
-            }
-            Some(WindLoad::Aerodynamic(mut a)) => {
-                a.qd_cn *= s.loads().wind_scale;
-                a.qd_ct *= s.loads().wind_scale;
-                a.force(t, len, [0.0; 3])
-            }
-        };
-        let h = 0.5 * w.intact[j];
+        // The segment element's load share at rest (the tension is not a load).
+        let props = w.segment_props(j);
+        let st = segment::stretch(w.position(j), w.position(j + 1), zero, zero, props.rest_length_m);
+        let e = segment::share::<f64, _, true>(&load, &st, zero, zero, q, props.reference_length_m, props.intact);
         for k in 0..3 {
-            let e = h * (p[k] + q[k] * w.reference_length[j]);
-            out[k][j] += e * w.exposed[j];
-            out[k][j + 1] += e * w.exposed[j + 1];
+            out[k][j] += e[k] * w.exposed[j];
+            out[k][j + 1] += e[k] * w.exposed[j + 1];
         }
     }
     out

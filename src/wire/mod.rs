@@ -10,12 +10,12 @@
 //! span, `x3` vertical up; gravity acts along `-x3`. Plane problems are this same 3D wire with unused
 //! components zero.
 
-pub mod aero;
 pub mod insulator;
 pub mod section;
-pub mod tension;
 
 pub use insulator::{Crossarm, Insulator};
+
+use crate::element::tension;
 
 /// Default reference temperature [K]: 268.15 K = -5 C, the ambient temperature of section 5.4.
 pub const REFERENCE_TEMPERATURE_K: f64 = 268.15;
@@ -212,12 +212,27 @@ impl Wire {
         [self.x[0][i], self.x[1][i], self.x[2][i]]
     }
 
-    /// Strain `e = |r_{j+1} - r_j| / l0 - 1` of segment `j` [-].
+    /// The constants of segment `j` as the segment element takes them ([`crate::element::segment`]).
+    pub fn segment_props(&self, j: usize) -> crate::element::segment::SegmentProps {
+        crate::element::segment::SegmentProps {
+            axial_stiffness_n: self.axial_stiffness_n[j],
+            internal_friction_n_s: self.internal_friction_n_s[j],
+            rest_length_m: self.rest_length[j],
+            reference_length_m: self.reference_length[j],
+            intact: self.intact[j],
+        }
+    }
+
+    /// Velocity of node `i` [m/s] (the half-step `v^{n-1/2}` between steps).
+    pub fn velocity(&self, i: usize) -> [f64; 3] {
+        [self.v[0][i], self.v[1][i], self.v[2][i]]
+    }
+
+    /// Strain `e = |r_{j+1} - r_j| / l0 - 1` of segment `j` [-], as the segment element forms it
+    /// ([`crate::element::segment::stretch`]).
     pub fn strain(&self, j: usize) -> f64 {
-        let a = self.position(j);
-        let b = self.position(j + 1);
-        let d = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
-        (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt() / self.rest_length[j] - 1.0
+        let zero = [0.0; 3];
+        crate::element::segment::stretch(self.position(j), self.position(j + 1), zero, zero, self.rest_length[j]).e
     }
 
     /// Total stress-free length `sum l0` [m].

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Bitwise identity of every output of the paper cases, the line-section cases a-d, the examples and the
-# thermal examples between two builds of `ohl`:
+# Bitwise identity of every output of the paper cases, the cases a-g (line sections a-d, multi-conductor
+# lines e-g), the examples and the thermal examples between two builds of `ohl`:
 #
 #   bash verification/scripts/bitwise_outputs.sh OLD_OHL NEW_OHL [WORK_DIR]
 #
@@ -12,7 +12,8 @@ set -euo pipefail
 old="$(realpath "$1")"; new="$(realpath "$2")"
 work="${3:-$(mktemp -d "${TMPDIR:-/tmp}/ohl-bitwise.XXXXXX")}"
 cd "$(dirname "$0")/../.."
-cases_abc=(a_broken_conductor b_ice_shedding c_progressive_shedding d_deicing)
+cases_abc=(a_broken_conductor b_ice_shedding c_progressive_shedding d_deicing
+  e_three_phases_wind f_vertical_ice_shedding g_quad_bundle_break)
 for side in old new; do
   bin="$old"; [ "$side" = new ] && bin="$new"
   out="$work/$side"; rm -rf "$out"; mkdir -p "$out"

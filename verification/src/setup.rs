@@ -4,11 +4,11 @@
 //! a modulus), linear density `rho0 = 1.0 kg/m` (wire plus ice), `g = 9.81 m/s^2`, wind line load
 //! `p = rho_air U^2 d / 2` with `rho_air = 1.225 kg/m^3`, `U = 20 m/s`, `d = 0.01553 m` (section 4.1).
 
+use ohl::element::aero::{Aerodynamic, UniformNormal};
+use ohl::element::tension::LawKind;
 use ohl::exact::{ElasticArc, ElasticCatenary};
 use ohl::scheme::courant;
 use ohl::scheme::{Explicit, Loads, StepParams, WindGate, WindLoad};
-use ohl::wire::aero::{Aerodynamic, UniformNormal};
-use ohl::wire::tension::LawKind;
 use ohl::wire::{Conductor, Wire};
 
 /// The wire of sections 4.1-4.2 in words, for figure headings.

@@ -8,8 +8,8 @@
 use std::io::Write;
 use std::time::Instant;
 
+use ohl::element::tension::LawKind;
 use ohl::statics::{StaticOptions, solve};
-use ohl::wire::tension::LawKind;
 use verification::setup::{Case, G_M_PER_S2, SPAN_M, loads, parabolic_wire, params};
 
 fn main() {

@@ -17,9 +17,9 @@
 
 use crate::report::{Budget, StudyReport, Table, sci};
 use crate::setup::{G_M_PER_S2, SPAN_M, aerodynamic_wind, loads, params, straight_wire};
+use ohl::element::aero::{Aerodynamic, SegmentLoad};
+use ohl::element::tension::{LawKind, TensionLaw, TensionOnly};
 use ohl::scheme::{Explicit, WindLoad};
-use ohl::wire::aero::{Aerodynamic, SegmentLoad};
-use ohl::wire::tension::{LawKind, TensionLaw, TensionOnly};
 use ohl_app::plot::{Chart, Series, Style, render_titled};
 use std::path::Path;
 

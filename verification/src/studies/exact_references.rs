@@ -15,10 +15,10 @@
 
 use crate::report::{Budget, StudyReport, Table, sci};
 use crate::setup::{EA_N, G_M_PER_S2, P_N_PER_M, RHO_KG_PER_M, SPAN_M, loads, params};
+use ohl::element::tension::LawKind;
 use ohl::exact::modes::TautString;
 use ohl::exact::{ElasticArc, ElasticCatenary};
 use ohl::scheme::Explicit;
-use ohl::wire::tension::LawKind;
 use ohl::wire::{Conductor, Wire};
 use ohl_app::plot::{Chart, Series, Style, render_titled};
 use std::path::Path;

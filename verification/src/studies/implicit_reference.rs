@@ -39,10 +39,10 @@ use crate::report::{Budget, StudyReport, Table, sci};
 use crate::setup::{
     Case, G_M_PER_S2, RHO_KG_PER_M, SPAN_M, aerodynamic_wind, loads, params, positions, straight_wire, wave_speed,
 };
+use ohl::element::tension::LawKind;
 use ohl::scheme::Explicit;
 use ohl::statics::jacobian::replica_gap;
 use ohl::statics::{StaticError, StaticOptions, rounding_floor_n, solve as solve_static};
-use ohl::wire::tension::LawKind;
 use ohl_app::plot::{Chart, Series, Style, render_titled};
 use rayon::prelude::*;
 use std::path::Path;

@@ -111,12 +111,12 @@
 use crate::convergence::{ls_order, pair_orders};
 use crate::exact_line as ex;
 use crate::report::{Budget, StudyReport, Table, sci};
+use ohl::element::tension::LawKind;
 use ohl::line::build::{Attach, BundleSpec, add_bundle, add_section_conductor};
 use ohl::line::{ElasticSupport, Endpoint, LinkKind, Model, Role, Support};
 use ohl::scheme::{LineError, LineExplicit, Loads, StepParams, WindGate};
 use ohl::wire::Conductor;
 use ohl::wire::section::{Layout, Section, Span, Stringing, Support as SectionSupport};
-use ohl::wire::tension::LawKind;
 use ohl_app::plot::{Chart, Series, Style, render_titled};
 use rayon::prelude::*;
 use std::path::Path;

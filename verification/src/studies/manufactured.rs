@@ -35,8 +35,8 @@ use crate::report::{Budget, StudyReport, Table, sci};
 use crate::setup::{
     EA_N, G_M_PER_S2, P_N_PER_M, RHO_KG_PER_M, SPAN_M, WIND_U_M_PER_S, loads, params, uniform_wind, wave_speed,
 };
+use ohl::element::tension::LawKind;
 use ohl::scheme::Explicit;
-use ohl::wire::tension::LawKind;
 use ohl::wire::{Conductor, Wire};
 use ohl_app::plot::{Chart, Series, Style, render_titled};
 use rayon::prelude::*;

@@ -89,9 +89,9 @@
 //! the kinetic energy on any step.
 
 use crate::report::{Budget, StudyReport, Table, sci};
+use ohl::element::tension::LawKind;
 use ohl::scheme::{Explicit, Ground, Loads, StepParams, WindGate};
 use ohl::wire::section::{self, CrossarmSpec, Layout, Section, Span, Stringing, Support};
-use ohl::wire::tension::LawKind;
 use ohl::wire::{Conductor, Wire};
 use ohl_app::plot::{Chart, Series, Style, render_titled};
 use std::path::Path;

@@ -102,11 +102,11 @@
 use crate::convergence::{ls_order, pair_orders};
 use crate::exact_section as ex;
 use crate::report::{Budget, StudyReport, Table, sci};
+use ohl::element::tension::LawKind;
 use ohl::scheme::{Explicit, Loads, StepParams, WindGate};
 use ohl::statics::{StaticError, StaticOptions, solve as solve_static};
 use ohl::wire::insulator::clamp_stable_step_s;
 use ohl::wire::section::{self, CrossarmSpec, Layout, Section, Span, Stringing, Support};
-use ohl::wire::tension::LawKind;
 use ohl::wire::{Conductor, Wire};
 use ohl_app::plot::{Chart, Series, Style, render_titled};
 use rayon::prelude::*;

@@ -64,9 +64,9 @@ use crate::setup::{
     Case, EA_N, G_M_PER_S2, P_N_PER_M, RHO_KG_PER_M, SPAN_M, WIND_U_M_PER_S, loads, params, straight_wire,
     uniform_wind, wave_speed,
 };
+use ohl::element::tension::LawKind;
 use ohl::scheme::{Explicit, courant};
 use ohl::statics::{StaticOptions, solve as solve_static};
-use ohl::wire::tension::LawKind;
 use ohl_app::plot::{Chart, Series, Style, render_titled};
 use rayon::prelude::*;
 use std::collections::VecDeque;

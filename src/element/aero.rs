@@ -19,13 +19,74 @@
 //! which is the averaging of the two half-point loads in (3.1).
 //!
 //! Each law is a type implementing [`SegmentLoad`], so the time step is monomorphised per law and the
-//! node loop carries no branch on the scenario's options.
+//! node loop carries no branch on the scenario's options. Each is written once over a [`Scalar`]: the
+//! kernel evaluates it on `f64`, the static solver's Jacobian on dual numbers ([`super::segment`]).
+//! [`WindLoad`] is the run's choice of law, before the on/off scale ([`WindLoad::scaled`]).
+
+use super::scalar::{Scalar, dot3};
+
+/// Wind load of a run (the laws of this module), before the on/off scale is applied.
+#[derive(Clone, Copy, Debug)]
+pub enum WindLoad {
+    /// Uniform normal pressure (section 4.1).
+    UniformNormal(UniformNormal),
+    /// Aerodynamic law (2.5)-(2.6).
+    Aerodynamic(Aerodynamic),
+}
+
+impl WindLoad {
+    /// The law with its loads multiplied by the on/off scale `scale` [-] (what the kernel applies).
+    pub fn scaled(self, scale: f64) -> Self {
+        match self {
+            WindLoad::UniformNormal(mut u) => {
+                u.pressure_n_per_m *= scale;
+                WindLoad::UniformNormal(u)
+            }
+            WindLoad::Aerodynamic(mut a) => {
+                a.qd_cn *= scale;
+                a.qd_ct *= scale;
+                WindLoad::Aerodynamic(a)
+            }
+        }
+    }
+
+    /// wind direction `w`, unit vector [-]
+    pub fn direction(&self) -> [f64; 3] {
+        match self {
+            WindLoad::UniformNormal(u) => u.direction,
+            WindLoad::Aerodynamic(a) => a.direction,
+        }
+    }
+}
+
+/// The law chosen at run time (a branch per segment: for the static solver and the diagnostics; the
+/// kernel dispatches once per step on the concrete law instead).
+impl SegmentLoad for WindLoad {
+    #[inline(always)]
+    fn force<S: Scalar>(&self, t: [S; 3], len: S, v: [S; 3]) -> [S; 3] {
+        match self {
+            WindLoad::UniformNormal(u) => u.force(t, len, v),
+            WindLoad::Aerodynamic(a) => a.force(t, len, v),
+        }
+    }
+}
+
+/// No load where there is no law.
+impl<W: SegmentLoad> SegmentLoad for Option<W> {
+    #[inline(always)]
+    fn force<S: Scalar>(&self, t: [S; 3], len: S, v: [S; 3]) -> [S; 3] {
+        match self {
+            Some(w) => w.force(t, len, v),
+            None => [S::c(0.0); 3],
+        }
+    }
+}
 
 /// A load distributed along each segment, evaluated once per segment per step.
 pub trait SegmentLoad {
     /// Total force [N] on a segment with unit tangent `t`, deformed length `len` [m] and velocity `v`
     /// [m/s] (mean of the end nodes).
-    fn force(&self, t: [f64; 3], len: f64, v: [f64; 3]) -> [f64; 3];
+    fn force<S: Scalar>(&self, t: [S; 3], len: S, v: [S; 3]) -> [S; 3];
 }
 
 /// Below this `sin(alpha)` the normal direction is undefined and the normal load is taken as zero; the
@@ -38,16 +99,27 @@ pub struct NoWind;
 
 impl SegmentLoad for NoWind {
     #[inline(always)]
-    fn force(&self, _t: [f64; 3], _len: f64, _v: [f64; 3]) -> [f64; 3] {
-        [0.0; 3]
+    fn force<S: Scalar>(&self, _t: [S; 3], _len: S, _v: [S; 3]) -> [S; 3] {
+        [S::c(0.0); 3]
     }
 }
 
 /// The damping factor (2.6): `f |f|` with `f = 1 - mu V_n / U`.
 #[inline(always)]
-fn damping_factor(mu_over_u: f64, vn: f64) -> f64 {
-    let f = 1.0 - mu_over_u * vn;
+fn damping_factor<S: Scalar>(mu_over_u: f64, vn: S) -> S {
+    let f = S::c(1.0) - vn * mu_over_u;
     f * f.abs()
+}
+
+/// The plane of wire and wind: `w_t = w . t`, `w_perp = w - w_t t`, `s = |w_perp| = sin(alpha)` and
+/// `1 / max(s, TINY_SIN)`.
+#[inline(always)]
+fn wind_plane<S: Scalar>(w: [f64; 3], t: [S; 3]) -> (S, [S; 3], S, S) {
+    let wt = t[0] * w[0] + t[1] * w[1] + t[2] * w[2];
+    let wp = [S::c(w[0]) - wt * t[0], S::c(w[1]) - wt * t[1], S::c(w[2]) - wt * t[2]];
+    let s = dot3(wp, wp).sqrt();
+    let inv_s = S::c(1.0) / s.max_c(TINY_SIN);
+    (wt, wp, s, inv_s)
 }
 
 /// Uniform pressure `p` [N/m] per unit deformed length, normal to the wire in the plane of wire and wind,
@@ -64,14 +136,10 @@ pub struct UniformNormal {
 
 impl SegmentLoad for UniformNormal {
     #[inline(always)]
-    fn force(&self, t: [f64; 3], len: f64, v: [f64; 3]) -> [f64; 3] {
-        let w = self.direction;
-        let wt = w[0] * t[0] + w[1] * t[1] + w[2] * t[2];
-        let wp = [w[0] - wt * t[0], w[1] - wt * t[1], w[2] - wt * t[2]];
-        let s = (wp[0] * wp[0] + wp[1] * wp[1] + wp[2] * wp[2]).sqrt();
-        let inv_s = 1.0 / s.max(TINY_SIN);
-        let vn = (v[0] * wp[0] + v[1] * wp[1] + v[2] * wp[2]) * inv_s;
-        let k = self.pressure_n_per_m * len * damping_factor(self.mu_over_u, vn) * inv_s;
+    fn force<S: Scalar>(&self, t: [S; 3], len: S, v: [S; 3]) -> [S; 3] {
+        let (_, wp, _, inv_s) = wind_plane(self.direction, t);
+        let vn = dot3(v, wp) * inv_s;
+        let k = len * self.pressure_n_per_m * damping_factor(self.mu_over_u, vn) * inv_s;
         [k * wp[0], k * wp[1], k * wp[2]]
     }
 }
@@ -91,15 +159,11 @@ pub struct Aerodynamic {
 
 impl SegmentLoad for Aerodynamic {
     #[inline(always)]
-    fn force(&self, t: [f64; 3], len: f64, v: [f64; 3]) -> [f64; 3] {
-        let w = self.direction;
-        let wt = w[0] * t[0] + w[1] * t[1] + w[2] * t[2];
-        let wp = [w[0] - wt * t[0], w[1] - wt * t[1], w[2] - wt * t[2]];
-        let s = (wp[0] * wp[0] + wp[1] * wp[1] + wp[2] * wp[2]).sqrt();
-        let inv_s = 1.0 / s.max(TINY_SIN);
-        let vn = (v[0] * wp[0] + v[1] * wp[1] + v[2] * wp[2]) * inv_s;
-        let kn = (self.qd_cn * s + self.qd_ct) * damping_factor(self.mu_over_u, vn) * len;
-        let kt = self.qd_ct * wt * wt.abs() * len;
+    fn force<S: Scalar>(&self, t: [S; 3], len: S, v: [S; 3]) -> [S; 3] {
+        let (wt, wp, s, inv_s) = wind_plane(self.direction, t);
+        let vn = dot3(v, wp) * inv_s;
+        let kn = (s * self.qd_cn + self.qd_ct) * damping_factor(self.mu_over_u, vn) * len;
+        let kt = wt * self.qd_ct * wt.abs() * len;
         [kn * wp[0] + kt * t[0], kn * wp[1] + kt * t[1], kn * wp[2] + kt * t[2]]
     }
 }
@@ -117,11 +181,11 @@ pub struct Downwind<W> {
 
 impl<W: SegmentLoad> SegmentLoad for Downwind<W> {
     #[inline(always)]
-    fn force(&self, t: [f64; 3], len: f64, v: [f64; 3]) -> [f64; 3] {
+    fn force<S: Scalar>(&self, t: [S; 3], len: S, v: [S; 3]) -> [S; 3] {
         let f = self.load.force(t, len, v);
         let w = self.direction;
-        let on = if v[0] * w[0] + v[1] * w[1] + v[2] * w[2] >= 0.0 { 1.0 } else { 0.0 };
-        [on * f[0], on * f[1], on * f[2]]
+        let on = if (v[0] * w[0] + v[1] * w[1] + v[2] * w[2]).value() >= 0.0 { 1.0 } else { 0.0 };
+        [f[0] * on, f[1] * on, f[2] * on]
     }
 }
 

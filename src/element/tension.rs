@@ -11,13 +11,16 @@
 //! docs/paper_notes.md, "Compression"). The linear law, compression allowed, exists for analytic tests.
 //!
 //! The law is a type parameter of the time step, so the choice is made once per run and the node loop
-//! has no branch on it.
+//! has no branch on it. It is written once over a [`Scalar`]: the kernel evaluates it on `f64`, the static
+//! solver's Jacobian on dual numbers ([`super::segment`]).
+
+use super::scalar::Scalar;
 
 /// A segment's constitutive law, evaluated inside the hot loop (so: `#[inline(always)]`, branch-free).
 pub trait TensionLaw: Copy {
     /// Tension `T` [N] for strain `e` [-] and strain rate `edot` [1/s], with axial stiffness `ea` [N]
     /// and internal friction `eta` [N s].
-    fn tension(ea: f64, eta: f64, e: f64, edot: f64) -> f64;
+    fn tension<S: Scalar>(ea: f64, eta: f64, e: S, edot: S) -> S;
     /// Stored elastic energy per unit stress-free length [J/m] at strain `e`.
     fn energy_density(ea: f64, e: f64) -> f64;
     /// An integer that orders tensions of this law like the numbers (for the kernel's largest-tension
@@ -51,9 +54,9 @@ pub struct Linear;
 
 impl TensionLaw for TensionOnly {
     #[inline(always)]
-    fn tension(ea: f64, eta: f64, e: f64, edot: f64) -> f64 {
-        let t = (ea * e + eta * edot).max(0.0);
-        if e > 0.0 { t } else { 0.0 }
+    fn tension<S: Scalar>(ea: f64, eta: f64, e: S, edot: S) -> S {
+        let t = (e * ea + edot * eta).positive_part();
+        if e.value() > 0.0 { t } else { S::c(0.0) }
     }
     #[inline(always)]
     fn energy_density(ea: f64, e: f64) -> f64 {
@@ -70,8 +73,8 @@ impl TensionLaw for TensionOnly {
 
 impl TensionLaw for Linear {
     #[inline(always)]
-    fn tension(ea: f64, eta: f64, e: f64, edot: f64) -> f64 {
-        ea * e + eta * edot
+    fn tension<S: Scalar>(ea: f64, eta: f64, e: S, edot: S) -> S {
+        e * ea + edot * eta
     }
     #[inline(always)]
     fn energy_density(ea: f64, e: f64) -> f64 {
