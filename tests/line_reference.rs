@@ -1,7 +1,7 @@
 //! `docs/line.md`'s table of the `[line]` scenario fields is the schema: for every table of a line
 //! scenario that the page documents (`line`, `line.towers[]`, `line.towers[].elastic`,
-//! `line.conductors[]`, `line.conductors[].bundle`, `line.conductors[].bundle.spacers[]`, `initial`, and
-//! the top level), the fields the page lists are exactly those the parser accepts. The accepted fields
+//! `line.conductors[]`, `line.conductors[].tension_strings[]`, `line.conductors[].bundle`,
+//! `line.conductors[].bundle.spacers[]`, `initial`, and the top level), the fields the page lists are exactly those the parser accepts. The accepted fields
 //! come from the parser itself: a probe key added to the table makes serde (`deny_unknown_fields`) list
 //! every field it accepts. Fields of the single-conductor tables (`conductor`, `section`, `events`, and
 //! the top-level `loads`, `numerics`, `duration`, `output`, `ground`, `name`, `description`) are
@@ -23,6 +23,7 @@ section = { horizontal_tension_n = 28000.0, segments_per_span = 8, supports = [
   { kind = "suspension", pivot_m = [0.0, 400.0, 30.0], insulator_length_m = 3.5, insulator_mass_kg = 100.0, insulator_stiffness_n = 5.0e7 },
   { kind = "dead_end", point_m = [0.0, 800.0, 26.5] } ] }
 towers = ["", "T", ""]
+tension_strings = [{ support = 2, length_m = 3.0, mass_kg = 60.0, stiffness_n = 2.0e7, damping_n_s = 0.0 }]
 [line.conductors.bundle]
 sub_conductors = 2
 diameter_m = 0.4
@@ -111,9 +112,15 @@ fn the_line_reference_is_the_schema() {
     for f in ["name", "description", "loads", "numerics", "duration", "output", "ground"] {
         top.insert(f.into());
     }
-    for t in
-        ["line", "line.towers[]", "line.towers[].elastic", "line.conductors[]", "line.conductors[].bundle", "initial"]
-    {
+    for t in [
+        "line",
+        "line.towers[]",
+        "line.towers[].elastic",
+        "line.conductors[]",
+        "line.conductors[].tension_strings[]",
+        "line.conductors[].bundle",
+        "initial",
+    ] {
         assert!(tables.contains_key(t), "docs/line.md documents no field of {t}");
     }
     for (table, fields) in &tables {

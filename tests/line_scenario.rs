@@ -107,6 +107,36 @@ scale = 1.0
     assert!(a.total_mass() > b.total_mass());
 }
 
+/// A support's own `insulator_damping_n_s` stays with the conductor's own string in a line: the line of
+/// one conductor on supports of its own runs bit for bit as its single-conductor scenario with the same
+/// damped string (the expectation is the single-conductor code; `tests/section.rs` checks the damping's
+/// rate and energy).
+#[test]
+fn a_string_damped_by_its_support_runs_in_a_line_as_in_its_section() {
+    let damped = section(0.0)
+        .replace("insulator_stiffness_n = 5.0e7 }", "insulator_stiffness_n = 5.0e7, insulator_damping_n_s = 2.0e4 }");
+    let ice = "time_s = 0.7\naction = \"ice\"\nspan = 1\nlinear_density_kg_per_m = 0.8\n";
+    let text = format!(
+        "[line]\n[[line.conductors]]\nname = \"A\"\nconductor = {CONDUCTOR}\nsection = {damped}\n\
+         [[line.conductors.events]]\n{ice}{GLOBAL}"
+    );
+    let plan = line::parse(&text, "damped.toml").and_then(|s| line::plan(&s, "damped.toml")).unwrap();
+    assert!(plan.line.links().is_empty(), "the damped string stays the conductor's own");
+    assert_eq!(plan.line.conductors()[0].wire().insulators[0].damping_n_s, 2.0e4);
+    let out = run_line(plan, None).unwrap();
+    let single = format!("conductor = {CONDUCTOR}\nsection = {damped}\n{GLOBAL}\n[[events]]\n{ice}");
+    let s = scenario::parse(&single, "single.toml").unwrap_or_else(|e| panic!("{e}\n{single}"));
+    let o = run(scenario::plan(&s, "single.toml").unwrap(), &RunOptions::default()).unwrap();
+    let (a, b) = (out.line.conductors()[0].wire(), o.solver.wire());
+    assert_eq!(out.line.conductors()[0].steps(), o.solver.steps());
+    for c in 0..3 {
+        for i in 0..a.nodes() {
+            assert_eq!(a.x[c][i].to_bits(), b.x[c][i].to_bits(), "x{c}[{i}]");
+            assert_eq!(a.v[c][i].to_bits(), b.v[c][i].to_bits(), "v{c}[{i}]");
+        }
+    }
+}
+
 /// A line scenario with `conductor` and `extra` substituted, and its problems (or a parse error's text).
 fn problems(line_table: &str, conductors: &str) -> String {
     let text = format!("[line]\n{line_table}\n{conductors}\n{GLOBAL}");
@@ -175,6 +205,49 @@ fn invalid_fields_are_named_with_their_path() {
             "line.conductors[0].section.supports",
         ),
         (String::new(), String::new(), "line.conductors"),
+        // Tension strings: an end's dead-end only, once, with valid values.
+        (
+            String::new(),
+            conductor("A", "tension_strings = [{ support = 1, length_m = 3.0, mass_kg = 60.0, stiffness_n = 8.0e7 }]"),
+            "line.conductors[0].tension_strings[0].support` = 1",
+        ),
+        (
+            String::new(),
+            conductor("A", "tension_strings = [{ support = 0, length_m = 3.0, mass_kg = 60.0, stiffness_n = 8.0e7 }, { support = 0, length_m = 3.0, mass_kg = 60.0, stiffness_n = 8.0e7 }]"),
+            "line.conductors[0].tension_strings[1].support` = 0",
+        ),
+        (
+            String::new(),
+            conductor("A", "tension_strings = [{ support = 0, length_m = 30.0, mass_kg = 60.0, stiffness_n = 8.0e7 }]"),
+            "line.conductors[0].tension_strings[0].length_m` = 30 is not allowed: must be in [0.01, 20] m",
+        ),
+        (
+            String::new(),
+            conductor("A", "tension_strings = [{ support = 2, length_m = 3.0, mass_kg = 60.0, stiffness_n = 8.0e7, damping_n_s = -1.0 }]"),
+            "line.conductors[0].tension_strings[0].damping_n_s` = -1 is not allowed: must be in [0, 1e7] N s",
+        ),
+        (
+            String::new(),
+            conductor("A", "tension_strings = [{ support = 2, length_m = 3.0, mass_kg = 60.0, stiffness_n = 1.0 }]"),
+            "line.conductors[0].tension_strings[0].stiffness_n` = 1",
+        ),
+        // A dead-end on a tension string cannot be released.
+        (
+            String::new(),
+            conductor("A", "tension_strings = [{ support = 2, length_m = 3.0, mass_kg = 60.0, stiffness_n = 8.0e7 }]\n[[line.conductors.events]]\ntime_s = 0.1\naction = \"release\"\nsupport = 2"),
+            "line.conductors[0].events` = a release at node",
+        ),
+        // A string damped by the line and by its support.
+        (
+            "string_damping_n_s = 1e4".into(),
+            conductor("A", "").replace("insulator_stiffness_n = 5.0e7 }", "insulator_stiffness_n = 5.0e7, insulator_damping_n_s = 1e4 }"),
+            "line.conductors[0].section.supports[1].insulator_damping_n_s` = 10000",
+        ),
+        (
+            String::new(),
+            conductor("A", "").replace("insulator_stiffness_n = 5.0e7 }", "insulator_stiffness_n = 5.0e7, insulator_damping_n_s = -2.0 }"),
+            "line.conductors[0].section.supports[1].insulator_damping_n_s` = -2",
+        ),
     ];
     for (line_table, conductors, field) in cases {
         let msg = problems(&line_table, &conductors);
@@ -235,4 +308,147 @@ scale = 1.0
     let moved = |w: &ohl::wire::Wire, x0: f64| w.x[0][w.nodes() / 4] - x0;
     assert!(moved(a, -0.2) > 0.1 && moved(b, 0.2) > 0.1, "the wind blew both: {} {}", moved(a, -0.2), moved(b, 0.2));
     assert_eq!(out.summary.events.iter().filter(|e| e.what.contains("wind")).count(), 2);
+}
+
+/// A level 400 m span of Drake between two strain towers, its dead-ends held by tension strings in line
+/// with the conductor (`tension_strings`: 3 m, EA 8e7 N, 0 or 60 kg at the conductor's end), the
+/// conductor 394.45 m unstretched between the strings' lower ends.
+fn dead_end_span(segments: usize, string_mass_kg: f64, courant: f64, initial: &str, zeta: f64) -> String {
+    format!(
+        r#"[line]
+[[line.conductors]]
+name = "A"
+conductor = {CONDUCTOR}
+section = {{ segments_per_span = {segments}, spans = [{{ unstretched_length_m = 394.45 }}], supports = [
+  {{ kind = "dead_end", point_m = [0.0, 0.0, 30.0] }},
+  {{ kind = "dead_end", point_m = [0.0, 400.0, 30.0] }} ] }}
+tension_strings = [
+  {{ support = 0, length_m = 3.0, mass_kg = {string_mass_kg:?}, stiffness_n = 8.0e7 }},
+  {{ support = 1, length_m = 3.0, mass_kg = {string_mass_kg:?}, stiffness_n = 8.0e7, damping_n_s = 0.0 }},
+]
+[initial]
+shape = "{initial}"
+[numerics]
+courant = {courant:?}
+smoothing = 0.0
+mass_damping_per_s = {zeta:?}
+[duration]
+end_time_s = 1.0
+"#
+    )
+}
+
+/// The exact statics of the span on its two tension strings, from the elastic catenary (Irvine) of the
+/// conductor between the strings' lower ends: by symmetry each end carries `V = w S / 2` of the
+/// conductor and the string's weight `m g`, the horizontal tension is the catenary's `H` for the chord
+/// `400 - 2 a`, and each string is straight, in balance with both: tension `T = sqrt(H^2 + (V + m g)^2)`,
+/// length `L0 (1 + T / EA)`, along `(H, V + m g) / T`, so that its horizontal reach is `a = L H / T`.
+/// Solved by iterating on `a` (the chord's change moves `H` by far too little to change `a` much: the
+/// iteration contracts at about 1e-3 per sweep). Returns `(a, drop b, T, H)`.
+fn exact_dead_end_span(string_mass_kg: f64) -> (f64, f64, f64, f64) {
+    let (l0, ea_s, s, w) = (3.0, 8.0e7, 394.45, 1.628 * 9.81);
+    let mut a = 3.0;
+    for _ in 0..100 {
+        let cat = ohl::exact::catenary::ElasticCatenary::solve(
+            [0.0, a, 0.0],
+            [0.0, 400.0 - a, 0.0],
+            s,
+            [0.0, 0.0, -w],
+            2.9e7,
+        )
+        .unwrap();
+        let (h, v) = (cat.horizontal_tension_n(), w * s / 2.0 + string_mass_kg * 9.81);
+        let t = h.hypot(v);
+        let len = l0 * (1.0 + t / ea_s);
+        let next = len * h / t;
+        if (next - a).abs() < 1e-15 {
+            return (next, len * v / t, t, h);
+        }
+        a = next;
+    }
+    panic!("the reference did not converge");
+}
+
+/// Tension (dead-end) strings of a `[line]` conductor, against the exact statics of a string in line with
+/// the catenary ([`exact_dead_end_span`]), on three grids, with and without the string's mass:
+/// - exact on every grid (the discrete balance, whatever `ds`): the string's horizontal pull equals the
+///   horizontal tension `H` of every segment, and the string's extension times `EA / L0` is the force the
+///   conductor's end applies to it (its end segment's tension and the end node's weight), to Newton's
+///   tolerance;
+/// - converging at order 2 to the continuum: the string's lower end (its reach `a` and drop `b`), its
+///   extension `L0 T / EA` and its angle `atan((V + m g) / H)` (without a mass: the conductor's end
+///   tangent `atan(V / H)`, the string in line with the catenary);
+/// - the explicit line started strung (strings unstretched) and relaxed by mass damping settles on the
+///   Newton state.
+#[test]
+fn tension_strings_lie_in_line_with_the_catenary_at_their_exact_stretch() {
+    let g = 9.81;
+    for mass in [0.0, 60.0] {
+        let (a, b, t_exact, h_exact) = exact_dead_end_span(mass);
+        let mut errors = Vec::new();
+        for n in [16, 32, 64] {
+            // Without a mass the end node is light (its share of a segment): a shorter step.
+            let text = dead_end_span(n, mass, 0.2, "equilibrium", 0.0);
+            let plan = line::parse(&text, "dead_end.toml").and_then(|s| line::plan(&s, "dead_end.toml")).unwrap();
+            let w = plan.line.conductors()[0].wire();
+            assert_eq!(plan.line.links().len(), 2);
+            let (r0, rn) = (w.position(0), w.position(n));
+            let (top0, top1) = ([0.0, 0.0, 30.0], [0.0, 400.0, 30.0]);
+            let dist = |p: [f64; 3], q: [f64; 3]| (0..3).map(|k| (p[k] - q[k]).powi(2)).sum::<f64>().sqrt();
+            let (len0, len1) = (dist(r0, top0), dist(rn, top1));
+            let tension = 8.0e7 / 3.0 * (len0 - 3.0);
+            // Exact discrete statics: H of the string (its pull along x2) against every segment's.
+            let h_string = tension * (r0[1] - top0[1]) / len0;
+            let seg = |j: usize| {
+                let (p, q) = (w.position(j), w.position(j + 1));
+                let l = dist(p, q);
+                let t = w.axial_stiffness_n[j] * (l / w.rest_length[j] - 1.0);
+                [0, 1, 2].map(|k| t * (q[k] - p[k]) / l)
+            };
+            let h_worst = (0..n).map(|j| (seg(j)[1] - h_string).abs()).fold(0.0, f64::max);
+            // The conductor's pull on the string's end: its end segment's tension and the end node's weight.
+            let f0 = seg(0);
+            let pull = f0[1].hypot(f0[2] - w.mass[0] * g);
+            assert!(h_worst < 1e-6 * h_string, "n {n}: H of the segments vs the string's: {h_worst:e} N");
+            assert!((pull - tension).abs() < 1e-6 * tension, "n {n}: {pull} vs {tension}");
+            assert!((len0 - len1).abs() < 1e-9, "symmetric");
+            // Against the continuum.
+            let angle = (30.0 - r0[2]).atan2(r0[1]);
+            let e_pos = (r0[1] - a).abs().max((30.0 - r0[2] - b).abs());
+            let e_ext = ((len0 - 3.0) / (3.0 * t_exact / 8.0e7) - 1.0).abs();
+            let e_angle = (angle - ((9.81 * 1.628 * 394.45 / 2.0 + mass * g) / h_exact).atan()).abs();
+            eprintln!(
+                "mass {mass} kg, N = {n}: string end ({:.6}, {:.6}) m vs exact ({a:.6}, {b:.6}); extension {:.6e} m \
+                 vs exact {:.6e} m; angle {angle:.8} rad; errors: end {e_pos:.3e} m, extension {e_ext:.3e}, angle \
+                 {e_angle:.3e} rad; H {h_string:.3} N (exact {h_exact:.3}), segments within {h_worst:.2e} N",
+                r0[1],
+                30.0 - r0[2],
+                len0 - 3.0,
+                3.0 * t_exact / 8.0e7,
+            );
+            errors.push([e_pos, e_ext, e_angle]);
+        }
+        for q in 0..3 {
+            let (o1, o2) = ((errors[0][q] / errors[1][q]).log2(), (errors[1][q] / errors[2][q]).log2());
+            eprintln!("mass {mass} kg, quantity {q}: observed orders {o1:.3}, {o2:.3}");
+            assert!((o2 - 2.0).abs() < 0.15, "order {o2} of quantity {q}");
+            assert!(errors[2][q] < [1e-4, 1e-3, 1e-4][q], "{:?}", errors[2]);
+        }
+    }
+    // The explicit line, started strung with unstretched strings, relaxed by mass damping (3 /s, about
+    // twice the span's lowest frequency), settles on the Newton state.
+    let newton = dead_end_span(16, 60.0, 0.5, "equilibrium", 3.0);
+    let newton = line::parse(&newton, "n.toml").and_then(|s| line::plan(&s, "n.toml")).unwrap();
+    let strung = dead_end_span(16, 60.0, 0.5, "strung", 3.0);
+    let mut relaxed = line::parse(&strung, "r.toml").and_then(|s| line::plan(&s, "r.toml")).unwrap().line;
+    let dt = relaxed.params().dt_s;
+    let steps = (120.0 / dt) as usize;
+    for _ in 0..steps {
+        relaxed.step(dt).unwrap();
+    }
+    let (a, b) = (newton.line.conductors()[0].wire(), relaxed.conductors()[0].wire());
+    let worst =
+        (0..a.nodes()).map(|i| (0..3).map(|k| (a.x[k][i] - b.x[k][i]).abs()).fold(0.0, f64::max)).fold(0.0, f64::max);
+    eprintln!("Newton vs settled explicit ({steps} steps, {:.0} s): {worst:.3e} m", steps as f64 * dt);
+    assert!(worst < 1e-6, "Newton vs settled: {worst:e} m");
 }

@@ -44,6 +44,10 @@ const CASES: &[(&str, &[&str])] = &[
     ("section_event_span_missing", &["field `events[0].span` = 5", "0 to 1"]),
     ("section_insulator_failure_at_dead_end", &["field `events[0].support` = 0", "suspension support"]),
     ("section_insulator_too_long", &["field `section.supports[1].insulator_length_m` = 35", "[0.01, 20] m"]),
+    (
+        "section_insulator_damping_negative",
+        &["field `section.supports[1].insulator_damping_n_s` = -10000", "[0, 1e7] N s"],
+    ),
     ("section_span_count", &["field `section.spans` = 3 tables", "2 for 3 supports"]),
     ("section_supports_out_of_order", &["field `section.supports[1]`", "advance along x2"]),
     ("section_without_stringing", &["field `section.spans[0].horizontal_tension_n` = (missing)"]),

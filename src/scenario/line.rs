@@ -13,12 +13,18 @@
 //!   support of its own). A suspension string on a tower becomes a string link from the tower (its pivot an
 //!   offset from the tower's position) to the clamp; a dead-end on a tower is a fixed node whose reaction
 //!   the tower carries (rigid towers only);
+//! - `tension_strings`: a dead-end of the section held by a tension (strain) insulator string in line with
+//!   the conductor instead of a fixed point: the string hangs from the dead-end's point (on its tower, or
+//!   a rigid support of its own) towards the span, the conductor starts at its lower end (its end node is
+//!   free, the string's mass lumped there) and is strung from there; the string is a link of the line
+//!   ([`crate::line::LinkKind::TensionString`]: length, `EA`, `BA`, tension only);
 //! - `bundle`: the conductor is a bundle of `sub_conductors` sub-conductors on a circle of `diameter_m`,
 //!   each a copy of the conductor moved by its offset, each on its own string (a bundle's yoke is not
 //!   modelled), joined by spacers (every pair of sub-conductors by an arm of `spacer_stiffness_n_per_m`).
 //!
-//! A conductor whose supports are all its own and whose strings have no axial damping is, in the line,
-//! bit for bit the single-conductor scenario (its strings stay the wire's own), provided the line's step is
+//! A conductor whose supports are all its own, without tension strings and without
+//! `line.string_damping_n_s`, is, in the line, bit for bit the single-conductor scenario (its strings stay
+//! the wire's own, damped by their support's own `insulator_damping_n_s` if given), provided the line's step is
 //! its own (the line runs at the smallest step of its conductors, checked against the stable step of every
 //! link, [`crate::scheme::line`]) and the other conductors' events fall at its own event times (every
 //! conductor lands on every event time). Each conductor keeps its own speed bound.
@@ -29,12 +35,14 @@ use super::InputError;
 use super::build::{Plan, Stop, build};
 use super::events::{EventSpec, GroundSpec};
 use super::schema::{
-    ConductorSpec, DurationSpec, InitialSpec, LoadsSpec, NumericsSpec, OutputSpec, Scenario, SectionSpec,
+    ConductorSpec, DurationSpec, InitialSpec, LoadsSpec, NumericsSpec, OutputSpec, Scenario, SectionSpec, SupportSpec,
 };
 use super::validate::{Check, Problem};
 use crate::element::LinkLaw;
 use crate::events::Action;
-use crate::line::{DeadEnd, ElasticSupport, Endpoint, LineConductor, Link, LinkKind, Model, NodeRef, Role, Support};
+use crate::line::{
+    DeadEnd, ElasticSupport, Endpoint, LineConductor, Link, LinkKind, Model, NodeRef, PointMass, Role, Support,
+};
 use crate::scheme::{LineError, LineExplicit, StepParams};
 
 /// A scenario of several conductors.
@@ -102,7 +110,9 @@ pub struct LineSpec {
     #[serde(default)]
     pub towers: Vec<TowerSpec>,
     /// axial damping `BA` [N s] of every suspension string, in [0, 1e7]; default 0 (a string rings on its
-    /// axial mode, about 100 Hz, after a sudden unloading; 1e4 N s damps it in a few periods)
+    /// axial mode, about 100 Hz, after a sudden unloading; 1e4 N s damps it in a few periods). The strings
+    /// then become links of the line; not with a support's own `insulator_damping_n_s`, which its
+    /// conductor's own string carries
     #[serde(default)]
     pub string_damping_n_s: f64,
     /// the conductors (at least one)
@@ -173,6 +183,10 @@ pub struct LineConductorSpec {
     /// every support its own
     #[serde(default)]
     pub towers: Vec<String>,
+    /// dead-ends of the section held by tension (strain) strings in line with the conductor, at most one
+    /// per end; empty: every dead-end a fixed point
+    #[serde(default)]
+    pub tension_strings: Vec<TensionStringSpec>,
     /// a bundle of sub-conductors with spacers; absent: a single conductor
     #[serde(default)]
     pub bundle: Option<BundleToml>,
@@ -183,6 +197,79 @@ pub struct LineConductorSpec {
     /// events act on; empty: all of them
     #[serde(default)]
     pub events_on: Vec<usize>,
+}
+
+/// A tension (dead-end, strain) insulator string: an insulator in line with the conductor between the
+/// dead-end's point and the conductor's end.
+#[derive(Clone, Copy, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct TensionStringSpec {
+    /// the section support it holds: the first (0) or the last, a dead-end; the string hangs from that
+    /// dead-end's `point_m` (on the support's tower if `towers` names one, which may be elastic)
+    pub support: usize,
+    /// unstretched length `L0` [m], in [0.01, 20] (strain strings with their hardware: 2 to 6 m)
+    pub length_m: f64,
+    /// mass [kg], in [0, 5000], lumped at the conductor's end node (strain strings: 50 to 300 kg)
+    pub mass_kg: f64,
+    /// axial stiffness `EA` [N], in [1e4, 1e10] (a spring `EA / L0` [N/m]; long-rod strings about 1e8 N)
+    pub stiffness_n: f64,
+    /// axial damping `BA` [N s], in [0, 1e7] (a damper `BA / L0` [N s/m]); default 0
+    #[serde(default)]
+    pub damping_n_s: f64,
+}
+
+/// The valid tension strings of a conductor: `(support, spec)` for each whose support is an end of the
+/// section and a dead-end, and whose length is valid (others are reported by validation).
+fn valid_tension_strings(c: &LineConductorSpec) -> Vec<TensionStringSpec> {
+    let n = c.section.supports.len();
+    c.tension_strings
+        .iter()
+        .filter(|t| {
+            n >= 2
+                && (t.support == 0 || t.support == n - 1)
+                && matches!(c.section.supports[t.support], SupportSpec::DeadEnd { .. })
+                && t.length_m.is_finite()
+                && (0.01..=20.0).contains(&t.length_m)
+        })
+        .copied()
+        .collect()
+}
+
+/// From the dead-end `support` (an end) of a section to the neighbouring attachment point (the next
+/// dead-end's point or suspension string's plumb clamp): the vector [m].
+fn towards_span(sec: &SectionSpec, support: usize) -> [f64; 3] {
+    let n = sec.supports.len();
+    let other = if support == 0 { 1 } else { n - 2 };
+    let to = match sec.supports[other] {
+        SupportSpec::DeadEnd { point_m } => point_m,
+        SupportSpec::Suspension { pivot_m, insulator_length_m, .. } => {
+            [pivot_m[0], pivot_m[1], pivot_m[2] - insulator_length_m]
+        }
+    };
+    let from = match sec.supports[support] {
+        SupportSpec::DeadEnd { point_m } => point_m,
+        SupportSpec::Suspension { pivot_m, .. } => pivot_m,
+    };
+    [to[0] - from[0], to[1] - from[1], to[2] - from[2]]
+}
+
+/// The conductor's section as its single-conductor code builds it: a dead-end held by a tension string
+/// moves towards the span, along the line to the neighbouring attachment point, by the string's
+/// unstretched length: the conductor starts there (the string's stretch, millimetres, is taken up by the
+/// dynamics or by an equilibrium start).
+fn conductor_section(c: &LineConductorSpec) -> SectionSpec {
+    let mut sec = c.section.clone();
+    for t in valid_tension_strings(c) {
+        let d = towards_span(&sec, t.support);
+        let len = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
+        if let SupportSpec::DeadEnd { point_m } = &mut sec.supports[t.support]
+            && len.is_finite()
+            && len > 2.0 * t.length_m
+        {
+            *point_m = [0, 1, 2].map(|k| point_m[k] + t.length_m * d[k] / len);
+        }
+    }
+    sec
 }
 
 /// A bundle.
@@ -284,7 +371,7 @@ fn single(s: &LineScenario, c: &LineConductorSpec) -> Scenario {
         description: None,
         conductor: c.conductor.clone(),
         geometry: None,
-        section: Some(c.section.clone()),
+        section: Some(conductor_section(c)),
         initial: InitialSpec::default(),
         loads: s.loads.clone(),
         numerics: s.numerics.clone(),
@@ -367,6 +454,56 @@ fn build_line(s: &LineScenario) -> Result<LinePlan, Vec<Problem>> {
                     format!("{t:?}"),
                     "must be \"\" or the name of a tower of line.towers",
                 );
+            }
+        }
+        for (j, t) in cd.tension_strings.iter().enumerate() {
+            let g = |name: &str| f(&format!("tension_strings[{j}].{name}"));
+            let end = n_sup >= 2 && (t.support == 0 || t.support == n_sup - 1);
+            if !end || !matches!(cd.section.supports[t.support], SupportSpec::DeadEnd { .. }) {
+                c.fail(
+                    &g("support"),
+                    t.support,
+                    &format!(
+                        "must be the index of a dead-end at an end of the section: 0 or {}",
+                        n_sup.saturating_sub(1)
+                    ),
+                );
+            } else if cd.tension_strings[..j].iter().any(|o| o.support == t.support) {
+                c.fail(&g("support"), t.support, "must name each end once: one tension string per dead-end");
+            }
+            if c.within(&g("length_m"), t.length_m, 0.01, 20.0, "must be in [0.01, 20] m") && end {
+                let d = towards_span(&cd.section, t.support);
+                let len = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
+                if len.is_finite() && len <= 2.0 * t.length_m {
+                    c.fail(
+                        &g("length_m"),
+                        t.length_m,
+                        &format!("must be under half the distance {len} m to the next attachment point"),
+                    );
+                }
+            }
+            c.within(&g("mass_kg"), t.mass_kg, 0.0, 5000.0, "must be in [0, 5000] kg");
+            c.within(
+                &g("stiffness_n"),
+                t.stiffness_n,
+                1.0e4,
+                1.0e10,
+                "must be in [1e4, 1e10] N (strain strings are about 1e7 to 1e8 N)",
+            );
+            c.within(&g("damping_n_s"), t.damping_n_s, 0.0, 1e7, "must be in [0, 1e7] N s");
+        }
+        if spec.string_damping_n_s > 0.0 {
+            for (j, sp) in cd.section.supports.iter().enumerate() {
+                if let SupportSpec::Suspension { insulator_damping_n_s, .. } = sp
+                    && *insulator_damping_n_s != 0.0
+                {
+                    c.fail(
+                        &f(&format!("section.supports[{j}].insulator_damping_n_s")),
+                        *insulator_damping_n_s,
+                        "give either line.string_damping_n_s (every suspension string, as a link of the line) or \
+                         the supports' own insulator_damping_n_s, not both",
+                    );
+                }
             }
         }
         if let Some(b) = &cd.bundle {
@@ -514,9 +651,36 @@ fn assemble(s: &LineScenario, plans: Vec<Plan>, global_only: Vec<Option<Plan>>) 
             // The clamp node of each of the wire's strings before any becomes a link (the events name a
             // string by its index among them).
             let string_nodes: Vec<usize> = wire.insulators.iter().map(|i| i.node).collect();
-            // Supports on towers, and strings that need axial damping, become links.
+            let member = if offsets.len() > 1 { format!("{}.{}", c.name, i + 1) } else { c.name.clone() };
+            // Supports on towers, strings damped by `line.string_damping_n_s` and tension strings become
+            // links.
             for (j, &node) in support_node.iter().enumerate() {
                 let tower = c.towers.get(j).filter(|t| !t.is_empty()).and_then(|t| tower_index(t));
+                if let Some(ts) = c.tension_strings.iter().find(|t| t.support == j) {
+                    // The string hangs from the dead-end's point (moved with the member), the conductor's end
+                    // node is free and carries the string's mass.
+                    let SupportSpec::DeadEnd { point_m } = c.section.supports[j] else {
+                        unreachable!("validated: a tension string holds a dead-end")
+                    };
+                    let top = [point_m[0] + shift[0], point_m[1] + shift[1], point_m[2] + shift[2]];
+                    let support = match tower {
+                        Some(t) => t,
+                        None => model.add_support(Support::rigid(format!("{member} support {j}"), top)),
+                    };
+                    let p = model.supports[support].position_m;
+                    wire.set_constraint(node, crate::wire::Constraint::Free);
+                    if ts.mass_kg > 0.0 {
+                        model.point_masses.push(PointMass { node: NodeRef::new(index, node), mass_kg: ts.mass_kg });
+                    }
+                    model.links.push(Link {
+                        kind: LinkKind::TensionString,
+                        a: Endpoint::Support { support, offset_m: [top[0] - p[0], top[1] - p[1], top[2] - p[2]] },
+                        b: Endpoint::Node(NodeRef::new(index, node)),
+                        law: LinkLaw::string(ts.length_m, ts.stiffness_n, ts.damping_n_s),
+                        intact: true,
+                    });
+                    continue;
+                }
                 let ins = wire.insulators.iter().position(|s| s.node == node);
                 match (tower, ins) {
                     (Some(t), None) => {
@@ -535,12 +699,12 @@ fn assemble(s: &LineScenario, plans: Vec<Plan>, global_only: Vec<Option<Plan>>) 
                             return Err(problem(
                                 f(&format!("section.supports[{j}].crossarm")),
                                 "a crossarm".into(),
-                                "a string on a tower, or with axial damping (line.string_damping_n_s), is a link of \
-                                 the line: its elasticity is a tower's (`elastic`), not a crossarm of the section"
+                                "a string on a tower, or damped by line.string_damping_n_s, is a link of the line: \
+                                 its elasticity is a tower's (`elastic`), not a crossarm of the section (a \
+                                 support's own insulator_damping_n_s keeps its crossarm)"
                                     .into(),
                             ));
                         }
-                        let member = if offsets.len() > 1 { format!("{}.{}", c.name, i + 1) } else { c.name.clone() };
                         let support = match tower {
                             Some(t) => t,
                             None => model.add_support(Support::rigid(format!("{member} support {j}"), ins.pivot_m)),
@@ -551,7 +715,12 @@ fn assemble(s: &LineScenario, plans: Vec<Plan>, global_only: Vec<Option<Plan>>) 
                             kind: LinkKind::SuspensionString,
                             a: Endpoint::Support { support, offset_m },
                             b: Endpoint::Node(NodeRef::new(index, node)),
-                            law: LinkLaw::string(ins.length_m, ins.stiffness_n, spec.string_damping_n_s),
+                            // The line's damping, or (validated: not both) the support's own.
+                            law: LinkLaw::string(
+                                ins.length_m,
+                                ins.stiffness_n,
+                                spec.string_damping_n_s + ins.damping_n_s,
+                            ),
                             intact: true,
                         });
                     }
@@ -575,12 +744,22 @@ fn assemble(s: &LineScenario, plans: Vec<Plan>, global_only: Vec<Option<Plan>>) 
                             return Err(problem(
                                 f("events"),
                                 format!("a string failure or slip at node {}", node.unwrap_or(0)),
-                                "a string held by a tower, or with axial damping, is a link of the line and cannot \
-                                 fail or slip yet: give that support no tower and no string damping"
+                                "a string held by a tower, or damped by line.string_damping_n_s, is a link of the \
+                                 line and cannot fail or slip yet: give that support no tower, and its string its \
+                                 own insulator_damping_n_s instead"
                                     .into(),
                             ));
                         }
                     }
+                }
+                if let Action::Release { node } = e.action
+                    && c.tension_strings.iter().any(|t| support_node.get(t.support) == Some(&node))
+                {
+                    return Err(problem(
+                        f("events"),
+                        format!("a release at node {node}"),
+                        "a dead-end held by a tension string is a link of the line and cannot be released yet".into(),
+                    ));
                 }
             }
             if s.initial.shape == LineShapeSpec::Equilibrium {
@@ -601,7 +780,7 @@ fn assemble(s: &LineScenario, plans: Vec<Plan>, global_only: Vec<Option<Plan>>) 
                 }
             }
             line_plans.push(own);
-            let name = if offsets.len() > 1 { format!("{}.{}", c.name, i + 1) } else { c.name.clone() };
+            let name = member;
             // Outputs are written under each name's file form: two names may not share it.
             let slug = crate::run::line::slug(&name);
             if names_seen.contains(&slug) {

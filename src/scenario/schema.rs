@@ -188,6 +188,11 @@ pub enum SupportSpec {
         /// string axial stiffness `EA_i` [N], in [1e4, 1e10] (long-rod and cap-and-pin strings: about 1e7
         /// to 1e8 N)
         insulator_stiffness_n: f64,
+        /// string axial damping `BA_i` [N s] (MoorDyn's `BA`: a damper `BA_i / L_i` [N s/m] along the
+        /// string), in [0, 1e7]; default 0 (undamped: a clamp rings on the string's axial mode, about 50 to
+        /// 100 Hz, after a sudden unloading; 1e4 N s damps it in a few periods)
+        #[serde(default)]
+        insulator_damping_n_s: f64,
         /// an elastic crossarm (tower flexibility); default rigid
         #[serde(default)]
         crossarm: Option<CrossarmSpecToml>,

@@ -4,12 +4,13 @@
 //! is derived here once.
 //!
 //! Time step. The conductor's step is `C min_k(l0_k) / c` over the spans' segment lengths. Each clamp's
-//! stable step ([`crate::wire::insulator::clamp_stable_step_s`]) is also multiplied by `C`, and the run
-//! takes the smaller: for real strings the clamp never governs (module doc of the insulator).
+//! stable step ([`crate::wire::insulator::damped_clamp_stable_step_s`], with the string's damper) is also
+//! multiplied by `C`, and the run takes the smaller: for real strings the clamp never governs (module doc
+//! of the insulator), unless their damper is far beyond a string's.
 
 use super::schema::{Scenario, SectionSpec, ShapeSpec, SupportSpec};
 use super::validate::{Check, MAX_SEGMENTS, MAX_SPAN_M, number};
-use crate::wire::insulator::clamp_stable_step_s;
+use crate::wire::insulator::damped_clamp_stable_step_s;
 use crate::wire::section::{self, CrossarmSpec, Layout, Section, Span, Stringing, Support, plumb_clamp};
 use crate::wire::{Conductor, Wire};
 
@@ -61,6 +62,7 @@ pub(crate) fn check(
                 insulator_length_m,
                 insulator_mass_kg,
                 insulator_stiffness_n,
+                insulator_damping_n_s,
                 crossarm,
             } => {
                 if end {
@@ -76,6 +78,13 @@ pub(crate) fn check(
                     1.0e4,
                     1.0e10,
                     "must be in [1e4, 1e10] N (strings are about 1e7 to 1e8 N)",
+                );
+                ok &= c.within(
+                    &f("insulator_damping_n_s"),
+                    *insulator_damping_n_s,
+                    0.0,
+                    1.0e7,
+                    "must be in [0, 1e7] N s (1e4 N s damps a string's ringing in a few periods)",
                 );
                 let arm = crossarm.map(|a| {
                     let g = |name: &str| format!("section.supports[{k}].crossarm.{name}");
@@ -336,6 +345,15 @@ pub(crate) fn check(
             return None;
         }
     };
+    // The strings' axial damping (not part of the stringing): the string of support k is the wire's
+    // string at that support's node.
+    for (k, sp) in sec.supports.iter().enumerate() {
+        if let SupportSpec::Suspension { insulator_damping_n_s, .. } = sp
+            && let Some(ins) = wire.insulators.iter_mut().find(|i| i.node == layout.support_node[k])
+        {
+            ins.damping_n_s = *insulator_damping_n_s;
+        }
+    }
     if stringing_factor != 1.0 {
         // Strung at T0: the stress-free lengths at the initial temperature T_ref are l0 / (1 + alpha (T0 - T_ref));
         // the conductor's mass stays.
@@ -351,7 +369,8 @@ pub(crate) fn check(
     for ins in &wire.insulators {
         let i = ins.node;
         let side = |j: usize| wire.axial_stiffness_n[j] / wire.rest_length[j];
-        let dt = clamp_stable_step_s(wire.mass[i], ins.stiffness_n / ins.length_m, side(i - 1), side(i));
+        let (k, c) = (ins.stiffness_n / ins.length_m, ins.damping_n_s / ins.length_m);
+        let dt = damped_clamp_stable_step_s(wire.mass[i], k, side(i - 1), side(i), c);
         clamp_step_s = clamp_step_s.min(dt);
     }
     let (mut wave_speed_max_m_per_s, mut crossing_time_s) = (0.0_f64, f64::INFINITY);

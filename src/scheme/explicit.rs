@@ -480,12 +480,17 @@ impl Explicit {
     }
 
     /// Pass 1 over segments: tension force and distributed load, dispatched once on (wind, gate, law);
-    /// then the force of each insulator string on its clamp ([`crate::wire::insulator`]).
+    /// then the force of each insulator string on its clamp ([`crate::wire::insulator`]), its damper's
+    /// from the half-step velocities `v^{n-1/2}` of the clamp and of an elastic crossarm's pivot (as the
+    /// segments' Kelvin-Voigt rate).
     fn compute_segment_forces(&mut self) {
         self.segment_and_load_pass();
         self.point_force.clear();
-        for ins in &self.wire.insulators {
-            self.point_force.push((ins.node, ins.force_on_clamp(self.wire.position(ins.node))));
+        let w = &self.wire;
+        for ins in &w.insulators {
+            let i = ins.node;
+            let v = [w.v[0][i], w.v[1][i], w.v[2][i]];
+            self.point_force.push((i, ins.force_on_moving_clamp(w.position(i), v)));
         }
     }
 

@@ -12,12 +12,30 @@
 //! `T_s`). Its elastic energy is `EA_i L_i e_s^2 / 2` for `e_s > 0`. The force the string applies to the
 //! crossarm is `-F_clamp`.
 //!
+//! Axial damping. A string may carry an axial damper `BA_i` [N s] (MoorDyn's `BA`: a damper `BA_i / L_i`
+//! [N s/m] along the string), which damps the clamp's ringing on the string's axial mode after a sudden
+//! unloading:
+//!
+//! ```text
+//! edot_s = (v_c - u) . (c - p) / (L_s L_i),   T_s = max(EA_i e_s + BA_i edot_s, 0) for e_s > 0, else 0,
+//! ```
+//!
+//! with `v_c` the clamp's velocity and `u` the pivot's (an elastic crossarm's; zero for a rigid one), both
+//! the kernel's half-step velocities `v^{n-1/2}`, as for the conductor's own Kelvin-Voigt rate. The force
+//! is that of the line's link element ([`crate::element::LinkLaw`], tension only), evaluated operation for
+//! operation as before for `BA_i = 0` (the velocities are then not read), so an undamped string gives the
+//! same bits as it always did. The damper has no static effect: the static solver's force and Jacobian
+//! ([`Insulator::force_on_clamp`], [`Insulator::stiffness`]) are those of the clamp at rest.
+//!
 //! Time step. The clamp node of mass `m_c` (the string plus its conductor share) is held by the string
 //! and its two conductor segments; by Gershgorin's bound the highest frequency of the linearised system
 //! satisfies `omega^2 <= (EA_i / L_i + 2 EA / l_l + 2 EA / l_r) / m_c`, and leapfrog is stable for
 //! `dt <= 2 / omega` ([`clamp_stable_step_s`]). For the strings of real lines (3 to 5 m, 50 to 150 kg,
 //! `EA_i` about 5e7 N) this is far above the conductor's step `C l0 / c` (a 100 kg clamp on 4 m segments
-//! of Drake: 3.1e-3 s against 8.5e-4 s at Courant 0.9), so the string never shortens the step.
+//! of Drake: 3.1e-3 s against 8.5e-4 s at Courant 0.9), so the string never shortens the step. With a
+//! damper, the damped leapfrog's bound `W dt^2 / 4 + D dt / 2 <= 1` holds, `W` that bound on `omega^2`
+//! and `D = BA_i / (L_i m_c)` ([`damped_clamp_stable_step_s`]); a damper of 1e4 N s on such a string
+//! shortens its step by 2 %, one of 1e6 N s (a dashpot far beyond any string's) to 7e-4 s.
 //!
 //! Elastic crossarm. The pivot may move horizontally on springs along and across the line (a tower's
 //! flexibility, which lowers broken-wire peaks): with rest position `p0`, longitudinal unit vector `e_l`
@@ -31,6 +49,8 @@
 //! taken at the previous half step. The crossarm is rigid vertically. Its energy is the springs'
 //! `k (d . e)^2 / 2` and `M |u|^2 / 2`; its frequency `sqrt(k / M)` (tens of rad/s) is far below the
 //! conductor's, so it sets no step limit of its own.
+
+use crate::element::LinkLaw;
 
 /// Horizontal springs, mass and damping of an elastic crossarm.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -89,6 +109,8 @@ pub struct Insulator {
     pub length_m: f64,
     /// axial stiffness `EA_i` [N]
     pub stiffness_n: f64,
+    /// axial damping `BA_i` [N s] (a damper `BA_i / L_i` [N s/m] along the string); 0: none
+    pub damping_n_s: f64,
     /// mass `m_i` [kg], lumped at the clamp (included in the clamp node's mass by the wire)
     pub mass_kg: f64,
     /// false once the string has failed: it then carries nothing
@@ -109,15 +131,38 @@ impl Insulator {
         self.stiffness_n * (len / self.length_m - 1.0).max(0.0)
     }
 
-    /// Force the string applies to the clamp [N].
+    /// The string's axial law: tension only, of length `L_i`, stiffness `EA_i` and damping `BA_i`.
+    pub fn law(&self) -> LinkLaw {
+        LinkLaw::string(self.length_m, self.stiffness_n, self.damping_n_s)
+    }
+
+    /// Velocity of the pivot [m/s]: an elastic crossarm's (horizontal), zero for a rigid one.
+    pub fn pivot_velocity_m_per_s(&self) -> [f64; 3] {
+        self.crossarm.map_or([0.0; 3], |a| a.velocity_m_per_s)
+    }
+
+    /// Force the string applies to the clamp at rest [N] (no damper force): the statics' force.
     pub fn force_on_clamp(&self, clamp: [f64; 3]) -> [f64; 3] {
-        let d = sub(clamp, self.pivot_m);
-        let len = norm(d);
-        let t = self.tension(clamp);
-        if t == 0.0 || len == 0.0 {
+        self.force_on_moving_clamp(clamp, [0.0; 3])
+    }
+
+    /// Force the string applies to the clamp at `clamp` [m] moving at `clamp_velocity` [m/s] [N], the
+    /// damper's included (module doc). For `BA_i = 0` the velocities are not read, and the operations are
+    /// those of the elastic force `-EA_i max(e_s, 0) (c - p) / L_s`; a slack or failed string exerts `+0`.
+    pub fn force_on_moving_clamp(&self, clamp: [f64; 3], clamp_velocity: [f64; 3]) -> [f64; 3] {
+        if !self.intact {
             return [0.0; 3];
         }
-        std::array::from_fn(|k| -t * d[k] / len)
+        let (u, v) = if self.damping_n_s == 0.0 {
+            ([0.0; 3], [0.0; 3])
+        } else {
+            (self.pivot_velocity_m_per_s(), clamp_velocity)
+        };
+        let (t, f) = self.law().tension_and_force_on_b(self.pivot_m, clamp, u, v);
+        if t == 0.0 {
+            return [0.0; 3];
+        }
+        f
     }
 
     /// Elastic energy of the string [J].
@@ -182,6 +227,25 @@ pub fn clamp_stable_step_s(clamp_mass_kg: f64, string_n_per_m: f64, left_n_per_m
     2.0 * (clamp_mass_kg / (string_n_per_m + 2.0 * left_n_per_m + 2.0 * right_n_per_m)).sqrt()
 }
 
+/// [`clamp_stable_step_s`] with the string's damper `string_n_s_per_m = BA_i / L_i` [N s/m]: the largest
+/// `dt` with `W dt^2 / 4 + D dt / 2 <= 1`, `W` the undamped bound on `omega^2` and `D = BA_i / (L_i m_c)`
+/// (Gershgorin's bound on the damping rate; the conductor's own Kelvin-Voigt friction is the Courant
+/// limit's, as for the undamped clamp). Without a damper it is [`clamp_stable_step_s`], to the bit.
+pub fn damped_clamp_stable_step_s(
+    clamp_mass_kg: f64,
+    string_n_per_m: f64,
+    left_n_per_m: f64,
+    right_n_per_m: f64,
+    string_n_s_per_m: f64,
+) -> f64 {
+    if string_n_s_per_m == 0.0 {
+        return clamp_stable_step_s(clamp_mass_kg, string_n_per_m, left_n_per_m, right_n_per_m);
+    }
+    let w = (string_n_per_m + 2.0 * left_n_per_m + 2.0 * right_n_per_m) / clamp_mass_kg;
+    let d = string_n_s_per_m / clamp_mass_kg;
+    2.0 / (0.5 * d + (0.25 * d * d + w).sqrt())
+}
+
 fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
     [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
 }
@@ -204,6 +268,7 @@ mod tests {
             pivot_m: [0.0, 0.0, 10.0],
             length_m: 3.5,
             stiffness_n: 5.0e7,
+            damping_n_s: 0.0,
             mass_kg: 100.0,
             intact: true,
             along: [0.0, 1.0, 0.0],
@@ -229,6 +294,60 @@ mod tests {
             let de = (s.energy(a) - s.energy(b)) / (2.0 * h);
             assert!((f[k] + de).abs() < 1e-3, "component {k}: {} vs {}", f[k], -de);
         }
+    }
+
+    /// Through the link law, the undamped force is bit for bit the elastic formula it replaced,
+    /// `-EA_i max(e_s, 0) (c - p) / L_s` (zero when slack), whatever the clamp's velocity.
+    #[test]
+    fn the_undamped_force_is_the_elastic_formula_to_the_bit() {
+        let s = string();
+        let old = |c: [f64; 3]| {
+            let d = sub(c, s.pivot_m);
+            let len = norm(d);
+            let t = s.stiffness_n * (len / s.length_m - 1.0).max(0.0);
+            if t == 0.0 || len == 0.0 { [0.0; 3] } else { std::array::from_fn(|k| -t * d[k] / len) }
+        };
+        for k in 0..2000 {
+            let a = k as f64 * 0.37;
+            let r = 3.49 + 0.02 * (a * 1.3).sin().abs();
+            let c = [r * 0.2 * a.sin(), r * 0.3 * a.cos(), 10.0 - r * (1.0 - 0.13 * a.sin().powi(2)).sqrt()];
+            let v = [a.sin(), -a.cos(), 0.5 * a.sin()];
+            let (f, g) = (s.force_on_clamp(c), s.force_on_moving_clamp(c, v));
+            let o = old(c);
+            for i in 0..3 {
+                assert_eq!(f[i].to_bits(), o[i].to_bits(), "at {c:?}");
+                assert_eq!(g[i].to_bits(), o[i].to_bits(), "at {c:?} moving");
+            }
+        }
+    }
+
+    /// A damper `BA` adds `(BA / L_i)` times the opening speed along the string, nothing for a motion
+    /// across it, never a push; the crossarm's velocity counts as the pivot's.
+    #[test]
+    fn the_damper_acts_on_the_opening_speed_and_never_pushes() {
+        let s = Insulator { damping_n_s: 2.0e4, ..string() };
+        let c = [0.0, 0.0, 10.0 - 3.501];
+        let still = s.force_on_moving_clamp(c, [0.0; 3]);
+        assert_eq!(still, string().force_on_clamp(c));
+        let opening = s.force_on_moving_clamp(c, [0.0, 0.0, -0.1]);
+        let expected = 2.0e4 / 3.5 * 0.1;
+        assert!((opening[2] - still[2] - expected).abs() < 1e-9 * expected, "{opening:?}");
+        let across = s.force_on_moving_clamp(c, [0.1, 0.0, 0.0]);
+        assert!((across[2] - still[2]).abs() < 1e-9 * still[2]);
+        // Closing fast: the damper would push; a string does not.
+        assert_eq!(s.force_on_moving_clamp(c, [0.0, 0.0, 10.0]), [0.0; 3]);
+        // A pivot moving with its crossarm as fast as the clamp: no damper force.
+        let arm = Crossarm {
+            rest_m: s.pivot_m,
+            longitudinal: [0.0, 1.0, 0.0],
+            longitudinal_n_per_m: 1e5,
+            transverse_n_per_m: 1e5,
+            mass_kg: 500.0,
+            damping_n_s_per_m: 0.0,
+            velocity_m_per_s: [0.0, 0.0, -0.1],
+        };
+        let moving = Insulator { crossarm: Some(arm), ..s }.force_on_moving_clamp(c, [0.0, 0.0, -0.1]);
+        assert!((moving[2] - still[2]).abs() < 1e-9 * still[2]);
     }
 
     #[test]
@@ -268,5 +387,15 @@ mod tests {
         // Drake on 4 m segments (EA = 2.9e7 N) with a 100 kg string: well above the conductor's 8.5e-4 s.
         let dt = clamp_stable_step_s(100.0 + 6.5, 5.0e7 / 3.5, 2.9e7 / 4.0, 2.9e7 / 4.0);
         assert!(dt > 3.0e-3 && dt < 3.2e-3, "{dt}");
+        // Undamped, the damped bound is the undamped one to the bit; damped, it satisfies
+        // W dt^2 / 4 + D dt / 2 = 1 (module doc's numbers: 2 % shorter at 1e4 N s, 7e-4 s at 1e6 N s).
+        assert_eq!(damped_clamp_stable_step_s(106.5, 5.0e7 / 3.5, 7.25e6, 7.25e6, 0.0).to_bits(), dt.to_bits());
+        let w = (5.0e7 / 3.5 + 4.0 * 7.25e6) / 106.5;
+        for (ba, lo, hi) in [(1.0e4, 0.975, 0.985), (1.0e6, 0.2, 0.23)] {
+            let c = ba / 3.5;
+            let dd = damped_clamp_stable_step_s(106.5, 5.0e7 / 3.5, 7.25e6, 7.25e6, c);
+            assert!((w * dd * dd / 4.0 + c / 106.5 * dd / 2.0 - 1.0).abs() < 1e-12, "{dd}");
+            assert!(dd / dt > lo && dd / dt < hi, "{ba}: {dd} vs {dt}");
+        }
     }
 }

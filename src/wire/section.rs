@@ -357,6 +357,7 @@ pub fn build(section: &Section) -> Result<(Wire, Layout), SectionError> {
                     pivot_m,
                     length_m,
                     stiffness_n,
+                    damping_n_s: 0.0,
                     mass_kg,
                     intact: true,
                     along: along[k],
