@@ -179,7 +179,8 @@ def test_line_run_equals_the_command_line(case: str, end: float, snapshots: str,
 def test_the_least_clearance_is_the_minimum_of_the_clearance_series(tmp_path: Path) -> None:
     # Sampled at every time level (an interval below the step), the series holds every level the tracker
     # saw, so its minimum is the summary's least distance, exactly, at the same time.
-    path = shortened("e_three_phases_wind.toml", 3.0, "[1.0]", tmp_path)
+    # Case (e) to 6 s: the phases' least distance (A - B, at the end towers) passes its minimum near 4.2 s.
+    path = shortened("e_three_phases_wind.toml", 6.0, "[1.0]", tmp_path)
     text = re.sub(r"(?m)^sample_interval_s = .*$", "sample_interval_s = 1e-4", path.read_text())
     sc = ohl.loads_line(text, "e every level")
     assert sc.sample_interval_s < sc.dt_s
@@ -190,6 +191,7 @@ def test_the_least_clearance_is_the_minimum_of_the_clearance_series(tmp_path: Pa
     k, j = np.unravel_index(np.nanargmin(r.clearances_m), r.clearances_m.shape)
     print(f"least clearance {least['least_m']!r} m at {least['time_s']} s between {least['between']}; "
           f"series minimum {r.clearances_m[k, j]!r} m at {r.t_s[k]} s between {r.clearance_pairs[j]}")
+    assert 1.0 < least["time_s"] < 6.0, "a minimum inside the run, not at its end"
     assert r.clearances_m[k, j] == least["least_m"]
     assert r.t_s[k] == least["time_s"]
     assert r.clearance_pairs[j] == tuple(least["between"])
