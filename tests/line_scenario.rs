@@ -452,3 +452,39 @@ fn tension_strings_lie_in_line_with_the_catenary_at_their_exact_stretch() {
     eprintln!("Newton vs settled explicit ({steps} steps, {:.0} s): {worst:.3e} m", steps as f64 * dt);
     assert!(worst < 1e-6, "Newton vs settled: {worst:e} m");
 }
+
+/// `run_line_observed` with `record` keeps the numbers `clearances.csv` and `towers.csv` hold (the same
+/// levels, the same bits), and recording changes nothing else: the summary is that of the run writing the
+/// files, field for field but the wall-clock timings.
+#[test]
+fn recorded_samples_are_the_files_numbers() {
+    use ohl::run::line::{LineRunOptions, run_line_observed};
+    let text = format!("[line]\n{}{}{GLOBAL}", conductor("A", ""), conductor("B", "").replace("[0, ", "[6, "));
+    let plan = line::plan(&line::parse(&text, "two.toml").unwrap(), "two.toml").unwrap();
+    let dir = std::env::temp_dir().join(format!("ohl-line-record-{}", std::process::id()));
+    let files = run_line(plan.clone(), Some(&dir)).unwrap();
+    let opts = LineRunOptions { out_dir: None, record: true };
+    let kept = run_line_observed(plan, &opts, &mut []).unwrap();
+    let s = &kept.samples;
+    let read = |name: &str| -> Vec<Vec<f64>> {
+        let t = std::fs::read_to_string(dir.join(name)).unwrap();
+        t.lines().skip(1).map(|l| l.split(',').map(|x| x.parse().unwrap()).collect()).collect()
+    };
+    let (cl, tw) = (read("clearances.csv"), read("towers.csv"));
+    assert_eq!((cl.len(), tw.len()), (s.t_s.len(), s.t_s.len()));
+    assert_eq!((s.pairs.len(), s.towers.len()), (1, 0));
+    for (k, row) in cl.iter().enumerate() {
+        assert_eq!(row[0].to_bits(), s.t_s[k].to_bits());
+        assert_eq!(row[1].to_bits(), s.clearance_m[k].to_bits(), "row {k}");
+    }
+    let json = |o: &ohl::run::line::LineOutcome| {
+        let mut v = serde_json::to_value(&o.summary).unwrap();
+        let m = v.as_object_mut().unwrap();
+        m.remove("wall_time_s");
+        m.remove("node_steps_per_second");
+        v
+    };
+    assert_eq!(json(&files), json(&kept));
+    assert!(files.samples.t_s.is_empty(), "nothing kept without record");
+    std::fs::remove_dir_all(&dir).unwrap();
+}

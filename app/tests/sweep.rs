@@ -7,7 +7,12 @@
 //! - the shards 0/3, 1/3, 2/3 on one thread, merged, are the unsharded sweep on two threads, bitwise in every
 //!   column but the timings; a cases file and `--vary` make one product;
 //! - merge refuses tables of different sweeps and lists missing and duplicated cases (exit 2);
-//! - malformed arguments exit 2 with a message naming the problem.
+//! - malformed arguments exit 2 with a message naming the problem;
+//! - a line base (`[line]`, a phase and a twin bundle on a shared tower): a conductor named by its name
+//!   (`line.conductors[name=B phase]`) or its index sets the same field; a row's per-conductor columns, least
+//!   clearance and largest tower load are bitwise those of `ohl run`'s summary.json on the same scenario
+//!   with the fields set by hand; an unknown name, a varied name and one field named twice (by name and by
+//!   index) exit 2 naming the file, the field and the names there are.
 
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -440,5 +445,206 @@ fn the_example_sweep_runs() {
     assert_eq!(rows[4]["events[0].time_s"], "5");
     assert_eq!(rows[4]["peaks_from_s"], "5.0", "the peaks count from the (first) event");
     assert_eq!(rows[0]["peaks_from_s"], "1.0");
+    std::fs::remove_dir_all(&d).unwrap();
+}
+
+const LINE_BASE: &str = r#"
+name = "sweep test line"
+
+[line]
+towers = [{ name = "T", position_m = [0.0, 380.0, 30.0] }]
+
+[[line.conductors]]
+name = "A"
+conductor = { axial_stiffness_n = 2.9e7, linear_density_kg_per_m = 1.628, diameter_m = 0.0281 }
+towers = ["", "T", ""]
+section = { horizontal_tension_n = 28000.0, segments_per_span = 12, supports = [
+  { kind = "dead_end", point_m = [-4.0, 0.0, 26.5] },
+  { kind = "suspension", pivot_m = [-4.0, 380.0, 30.0], insulator_length_m = 3.5, insulator_mass_kg = 100.0, insulator_stiffness_n = 5.0e7 },
+  { kind = "dead_end", point_m = [-4.0, 800.0, 28.0] } ] }
+
+[[line.conductors]]
+name = "B phase"
+conductor = { axial_stiffness_n = 2.9e7, linear_density_kg_per_m = 1.628, diameter_m = 0.0281 }
+towers = ["", "T", ""]
+section = { horizontal_tension_n = 27000.0, segments_per_span = 12, supports = [
+  { kind = "dead_end", point_m = [4.0, 0.0, 26.5] },
+  { kind = "suspension", pivot_m = [4.0, 380.0, 30.0], insulator_length_m = 3.5, insulator_mass_kg = 100.0, insulator_stiffness_n = 5.0e7 },
+  { kind = "dead_end", point_m = [4.0, 800.0, 28.0] } ] }
+bundle = { sub_conductors = 2, diameter_m = 0.4, spacers = [{ span = 0, at_fraction = 0.5 }, { span = 1, at_fraction = 0.5 }] }
+
+[loads.wind]
+law = "aerodynamic"
+direction = [1.0, 0.0, 0.0]
+speed_m_per_s = 20.0
+initial_scale = 0.0
+
+[numerics]
+courant = 0.5
+smoothing = 0.01
+eta_n_s = 5000.0
+mu = 1.0
+
+[duration]
+end_time_s = 1.0
+
+[output]
+sample_interval_s = 0.1
+
+[[events]]
+time_s = 0.3
+action = "wind"
+scale = 1.0
+"#;
+
+/// The line's conductors in the order of its summary (the file's order, a bundle's sub-conductors each)
+/// and their column prefixes.
+const LINE_CONDUCTORS: [&str; 3] = ["A", "B_phase.1", "B_phase.2"];
+
+#[test]
+fn a_line_row_is_bitwise_the_run_summary_of_its_scenario() {
+    let d = dir("line");
+    let b = d.join("line.toml");
+    std::fs::write(&b, LINE_BASE).unwrap();
+    let out = d.join("sweep");
+    let tension = "line.conductors[name=B phase].section.horizontal_tension_n";
+    let o = ohl(&[
+        "sweep",
+        s(&b),
+        "--vary",
+        &format!("{tension}=26000,30000"),
+        "--vary",
+        "loads.wind.speed_m_per_s=20,25.5",
+        "--out",
+        s(&out),
+        "--keep-runs",
+        "--threads",
+        "2",
+    ]);
+    assert!(o.status.success(), "{}", text(&o));
+    assert!(text(&o).contains("4 cases in") && text(&o).contains("4 completed"), "{}", text(&o));
+    let rows = table(&out.join("sweep.csv"));
+    let row = &rows[3];
+    assert_eq!((row[tension].as_str(), row["loads.wind.speed_m_per_s"].as_str()), ("30000", "25.5"));
+    let by_hand = LINE_BASE
+        .replace("horizontal_tension_n = 27000.0", "horizontal_tension_n = 30000.0")
+        .replace("speed_m_per_s = 20.0", "speed_m_per_s = 25.5");
+    let run = single_run(&d, "by_hand", &by_hand);
+    let mut compared = 0;
+    for (column, key) in [("final_time_s", "final_time_s"), ("steps", "steps"), ("dt_s", "dt_s")] {
+        assert_eq!(bits(&row[column]), bits(&run[key]), "{column}");
+        compared += 1;
+    }
+    for (i, c) in LINE_CONDUCTORS.iter().enumerate() {
+        let mut pairs = vec![
+            ("peak_max_tension_n".to_string(), "peak_max_tension_n".to_string()),
+            ("peak_max_tension_time_s".into(), "peak_max_tension_time_s".into()),
+            ("final_max_tension_n".into(), "final_max_tension_n".into()),
+        ];
+        for k in 0..3 {
+            pairs.push((format!("peak_mid_dx{}_m", k + 1), format!("peak_midspan_displacement_m[{k}].value_m")));
+            pairs.push((format!("peak_mid_dx{}_time_s", k + 1), format!("peak_midspan_displacement_m[{k}].time_s")));
+            pairs.push((format!("final_mid_dx{}_m", k + 1), format!("final_midspan_displacement_m[{k}]")));
+        }
+        for (column, key) in pairs {
+            let (column, key) = (format!("{c}_{column}"), format!("conductors[{i}].{key}"));
+            assert_eq!(bits(&row[&column]), bits(&run[&key]), "{column}: sweep {} and run {}", row[&column], run[&key]);
+            compared += 1;
+        }
+    }
+    // The least clearance: the least over the pairs of summary.json (here the one pair, A and B phase).
+    let number = |v: &String| v.parse::<f64>().unwrap();
+    let leasts = run.iter().filter(|(p, _)| p.starts_with("clearances[") && p.ends_with(".least_m"));
+    let (key, value) = leasts.min_by(|a, b| number(a.1).total_cmp(&number(b.1))).unwrap();
+    assert_eq!(bits(&row["least_clearance_m"]), bits(value));
+    let at = key.replace(".least_m", ".time_s");
+    assert_eq!(bits(&row["least_clearance_time_s"]), bits(&run[&at]));
+    assert_eq!(row["least_clearance_between"], "A - B phase");
+    // The largest tower load: the largest peak over the towers (here the one tower, T).
+    let peaks = run.iter().filter(|(p, _)| p.starts_with("towers[") && p.ends_with(".peak_force_magnitude_n"));
+    let (key, value) = peaks.max_by(|a, b| number(a.1).total_cmp(&number(b.1))).unwrap();
+    assert_eq!(bits(&row["peak_tower_force_n"]), bits(value));
+    assert_eq!(bits(&row["peak_tower_force_time_s"]), bits(&run[&key.replace("magnitude_n", "time_s")]));
+    assert_eq!(row["peak_tower_force_tower"], "T");
+    println!(
+        "case 3: {compared} columns bitwise those of ohl run, least clearance {} m, tower load {} N",
+        row["least_clearance_m"], row["peak_tower_force_n"]
+    );
+    // The case's own summary.json (--keep-runs) is the run's, number for number (but the timings).
+    let kept = json_numbers(&std::fs::read_to_string(out.join("cases/3/summary.json")).unwrap());
+    let timing = |k: &String| k == "wall_time_s" || k == "node_steps_per_second";
+    assert_eq!(kept.keys().collect::<Vec<_>>(), run.keys().collect::<Vec<_>>());
+    for (key, v) in kept.iter().filter(|(k, _)| !timing(k)) {
+        assert_eq!(bits(v), bits(&run[key]), "{key}");
+    }
+    assert!(out.join("cases/3/conductors/B_phase.2/timeseries.csv").exists());
+
+    // The same conductor by its index, from a cases file: the same row (but the field's column name and the
+    // timings).
+    let cases = d.join("cases.csv");
+    std::fs::write(&cases, "line.conductors[1].section.horizontal_tension_n,loads.wind.speed_m_per_s\n30000,25.5\n")
+        .unwrap();
+    let by_index = d.join("by_index");
+    let o = ohl(&["sweep", s(&b), "--cases", s(&cases), "--out", s(&by_index), "--quiet"]);
+    assert!(o.status.success(), "{}", text(&o));
+    let mut again = table(&by_index.join("sweep.csv")).remove(0);
+    let mut row = row.clone();
+    again.remove("line.conductors[1].section.horizontal_tension_n");
+    row.remove(tension);
+    row.insert("case".into(), "0".into());
+    assert_eq!(without_timings(vec![again]), without_timings(vec![row]));
+    std::fs::remove_dir_all(&d).unwrap();
+}
+
+#[test]
+fn a_line_base_refuses_unknown_names_varied_names_and_a_field_named_twice() {
+    let d = dir("line_args");
+    let b = d.join("line.toml");
+    std::fs::write(&b, LINE_BASE).unwrap();
+    let out = d.join("out");
+    for (args, expected) in [
+        (
+            vec!["--vary", "line.conductors[name=C].section.horizontal_tension_n=26000"],
+            "line.toml: field `line.conductors[name=C].section.horizontal_tension_n`: no entry of `line.conductors` \
+             is named \"C\": its names in the base file are \"A\", \"B phase\"",
+        ),
+        (
+            vec!["--vary", "line.towers[name=T9].position_m[2]=31"],
+            "no entry of `line.towers` is named \"T9\": its names in the base file are \"T\"",
+        ),
+        (
+            vec!["--vary", "line.conductors[0].name=X,Y"],
+            "field `line.conductors[0].name`: sets `line.conductors[0].name`, which names the table's columns",
+        ),
+        (
+            vec!["--vary", "line.conductors[name=B phase].bundle.sub_conductors=3"],
+            "sets `line.conductors[1].bundle.sub_conductors`, which names the table's columns",
+        ),
+        (
+            vec![
+                "--vary",
+                "line.conductors[name=A].section.segments_per_span=10",
+                "--vary",
+                "line.conductors[0].section=1",
+            ],
+            "field `line.conductors[0].section`: is `line.conductors[0].section` in the base file, and field \
+             `line.conductors[name=A].section.segments_per_span` is `line.conductors[0].section.segments_per_span`",
+        ),
+        (
+            vec!["--vary", "line.conductors[name=A].section.segments_per_spam=10"],
+            "the base file does not set it and the scenario format has no such field (unknown field \
+             `segments_per_spam`",
+        ),
+        (
+            vec!["--vary", "line.conductors[nom=A].x=1"],
+            "index [nom=A] is not a whole number >= 0 (nor a name, [name=NAME])",
+        ),
+    ] {
+        let o = ohl(&[&["sweep", s(&b), "--out", s(&out)][..], &args].concat());
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {}", text(&o));
+        assert!(text(&o).contains(expected), "{args:?}: {}", text(&o));
+        assert!(!text(&o).contains("panicked"), "{}", text(&o));
+    }
+    assert!(!out.join("sweep.csv").exists());
     std::fs::remove_dir_all(&d).unwrap();
 }

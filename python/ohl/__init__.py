@@ -7,9 +7,11 @@ and its results come back as NumPy arrays holding exactly the numbers ``ohl run`
 kelvin. ``docs/python.md`` in the repository documents the API.
 
     >>> import ohl
-    >>> r = ohl.run("paper_cases/fig4_weight_release.toml")
+    >>> r = ohl.run("paper_cases/fig3_wind_weight.toml")
     >>> r.t_s, r.mid_displacement_m[:, 2], r.max_tension_n      # [s], [m], [N]
     >>> ohl.ampacity(373.15, conductor="ACSR Drake", weather={...})["current_a"]   # [A]
+    >>> line = ohl.run_line("cases/e_three_phases_wind.toml")   # several conductors ([line])
+    >>> line["A"].max_tension_n, line.least_clearance["least_m"], line.tower_forces_n   # [N], [m], [N]
 """
 
 from __future__ import annotations
@@ -30,11 +32,14 @@ from ._errors import (
     UnstableError,
     WorkBudgetError,
 )
-from ._ohl import Scenario
+from ._ohl import LineScenario, Scenario
 
 __version__: str = _ohl.__version__
 
 __all__ = [
+    "ConductorResult",
+    "LineResult",
+    "LineScenario",
     "Problem",
     "RunResult",
     "Scenario",
@@ -53,14 +58,20 @@ __all__ = [
     "equilibrium",
     "from_dict",
     "heat_terms",
+    "line_equilibrium",
+    "line_from_dict",
     "load",
+    "load_line",
     "loads",
+    "loads_line",
     "run",
+    "run_line",
     "steady_temperature",
     "transient",
 ]
 
 ScenarioLike = Union[Scenario, Mapping, str, "os.PathLike[str]"]
+LineScenarioLike = Union[LineScenario, Mapping, str, "os.PathLike[str]"]
 
 
 # --- scenarios ---------------------------------------------------------------------------------------
@@ -102,6 +113,27 @@ def _plain_list(v: Any) -> Any:
     return v
 
 
+def load_line(path: Union[str, "os.PathLike[str]"]) -> LineScenario:
+    """Read, validate and plan a line scenario file (``[line]``: several conductors on shared towers).
+
+    Raises ``FileNotFoundError`` if the file does not exist and :class:`ScenarioError` with the message
+    ``ohl run`` prints if it is invalid (each field named under ``line.conductors[k]``); warnings are
+    issued as :class:`ScenarioWarning`, ``NAME: message`` for conductor ``NAME``.
+    """
+    return LineScenario.from_file(os.fspath(path))
+
+
+def loads_line(text: str, name: str = "<string>") -> LineScenario:
+    """A line scenario from TOML text; ``name`` stands for the file name in messages."""
+    return LineScenario.from_toml(text, name)
+
+
+def line_from_dict(d: Mapping, name: str = "<dict>") -> LineScenario:
+    """A line scenario from a dict with the tables and keys of a line file (``{"line": {"conductors":
+    [...], "towers": [...]}, "duration": {...}, ...}``), read as :func:`from_dict` reads a scenario."""
+    return LineScenario.from_dict(_plain_dict(d), name)
+
+
 def _as_scenario(source: ScenarioLike) -> Scenario:
     if isinstance(source, Scenario):
         return source
@@ -112,6 +144,19 @@ def _as_scenario(source: ScenarioLike) -> Scenario:
     raise TypeError(
         f"expected an ohl.Scenario, a dict or a path to a scenario file, not {type(source).__name__} "
         "(for TOML text use ohl.loads(text))"
+    )
+
+
+def _as_line_scenario(source: LineScenarioLike) -> LineScenario:
+    if isinstance(source, LineScenario):
+        return source
+    if isinstance(source, Mapping):
+        return line_from_dict(source)
+    if isinstance(source, (str, os.PathLike)):
+        return load_line(source)
+    raise TypeError(
+        f"expected an ohl.LineScenario, a dict or a path to a line scenario file, not {type(source).__name__} "
+        "(for TOML text use ohl.loads_line(text))"
     )
 
 
@@ -148,33 +193,17 @@ class Snapshots:
         return f"Snapshots({len(self)} times, {nodes} nodes)"
 
 
-class RunResult:
-    """What a run produced: the time series, the snapshots, the summary and the events.
+class _Series:
+    """The time series and snapshots of one wire: a run's, or one conductor's of a line run."""
 
-    The time series holds the columns of ``timeseries.csv`` (``columns``; one row per sample interval,
-    at the first time level at or after each multiple of it), the same numbers bit for bit.
-
-    Attributes:
-        scenario: the :class:`Scenario` that ran.
-        status: ``"completed"``, ``"settled"``, ``"not_settled"`` or ``"unstable"``.
-        columns: the column names, in the order of ``timeseries.csv``.
-        table: (rows, columns) array of the time series.
-        timeseries: dict column name -> (rows,) array.
-        snapshots: the :class:`Snapshots`.
-        summary: the summary, a dict with the keys of ``summary.json``.
-        events: the events applied, as (time [s], what) tuples.
-    """
-
-    def __init__(self, raw: dict, scenario: Scenario) -> None:
-        self.scenario = scenario
-        self.status: str = raw["status"]
+    def __init__(self, raw: dict, probes: Sequence[str], supports: int) -> None:
         self.columns: List[str] = list(raw["columns"])
         self.table: np.ndarray = raw["rows"]
         by_column = np.ascontiguousarray(self.table.T)
         self.timeseries: Dict[str, np.ndarray] = {c: by_column[k] for k, c in enumerate(self.columns)}
         self.snapshots = Snapshots(raw)
-        self.summary: Dict[str, Any] = raw["summary"]
-        self.events: List[Tuple[float, str]] = list(raw["events"])
+        self._probe_names: List[str] = list(probes)
+        self._supports: int = supports
 
     def __getitem__(self, column: str) -> np.ndarray:
         """The column ``column`` of the time series (a name of ``timeseries.csv``)."""
@@ -212,13 +241,13 @@ class RunResult:
     @property
     def probes(self) -> Dict[str, np.ndarray]:
         """Probe name -> (rows, 3) displacement [m]: ``"mid"`` and the named probes of the scenario."""
-        return {"mid": self.mid_displacement_m, **{p: self._xyz(f"{p}_dx", "_m") for p in self.scenario.probes[1:]}}
+        return {"mid": self.mid_displacement_m, **{p: self._xyz(f"{p}_dx", "_m") for p in self._probe_names[1:]}}
 
     @property
     def support_forces_n(self) -> np.ndarray:
         """(rows, supports, 3) force the wire applies to each support, ``F1`` across the line, ``F2`` along
         it, ``F3`` up [N] (supports in node order, as ``Scenario.supports``)."""
-        n = len(self.scenario.supports)
+        n = self._supports
         if n == 0:
             return np.zeros((len(self.t_s), 0, 3))
         return np.stack([self._xyz(f"support{s}_f", "_n") for s in range(n)], axis=1)
@@ -234,10 +263,123 @@ class RunResult:
 
         return pd.DataFrame(self.timeseries, columns=self.columns)
 
+
+class RunResult(_Series):
+    """What a run produced: the time series, the snapshots, the summary and the events.
+
+    The time series holds the columns of ``timeseries.csv`` (``columns``; one row per sample interval,
+    at the first time level at or after each multiple of it), the same numbers bit for bit.
+
+    Attributes:
+        scenario: the :class:`Scenario` that ran.
+        status: ``"completed"``, ``"settled"``, ``"not_settled"`` or ``"unstable"``.
+        columns: the column names, in the order of ``timeseries.csv``.
+        table: (rows, columns) array of the time series.
+        timeseries: dict column name -> (rows,) array.
+        snapshots: the :class:`Snapshots`.
+        summary: the summary, a dict with the keys of ``summary.json``.
+        events: the events applied, as (time [s], what) tuples.
+    """
+
+    def __init__(self, raw: dict, scenario: Scenario) -> None:
+        super().__init__(raw, scenario.probes, len(scenario.supports))
+        self.scenario = scenario
+        self.status: str = raw["status"]
+        self.summary: Dict[str, Any] = raw["summary"]
+        self.events: List[Tuple[float, str]] = list(raw["events"])
+
     def __repr__(self) -> str:
         return (
             f"RunResult(name={self.summary.get('name')!r}, status={self.status!r}, "
             f"rows={len(self.t_s)}, columns={len(self.columns)}, snapshots={len(self.snapshots)})"
+        )
+
+
+class ConductorResult(_Series):
+    """One conductor of a line run: its time series and snapshots, as a single run's (the numbers of its
+    ``conductors/NAME/timeseries.csv`` and ``snapshots.csv``), and its entry of the line's summary.
+
+    Attributes:
+        name: the conductor's name (a bundle's sub-conductors are ``NAME.1``, ``NAME.2``, ...).
+        role: ``"phase"``, ``"earth_wire"`` or ``"sub_conductor"``.
+        columns, table, timeseries, snapshots: as :class:`RunResult`'s; ``support_forces_n`` holds the
+            supports its own wire holds (a support on a tower is the tower's: ``LineResult.tower_forces_n``).
+        summary: its entry of ``summary.json``'s ``conductors`` (peak tension, mid-span peaks).
+    """
+
+    def __init__(self, raw: dict, summary: Dict[str, Any], probes: Sequence[str], supports: int) -> None:
+        super().__init__(raw, probes, supports)
+        self.name: str = raw["name"]
+        self.role: str = summary["role"]
+        self.summary: Dict[str, Any] = summary
+
+    def __repr__(self) -> str:
+        return f"ConductorResult(name={self.name!r}, role={self.role!r}, rows={len(self.t_s)}, snapshots={len(self.snapshots)})"
+
+
+class LineResult:
+    """What a line run produced: each conductor's results, the clearances and the tower loads.
+
+    The clearances and the tower loads are sampled as ``clearances.csv`` and ``towers.csv`` (one row per
+    sample interval, the same numbers bit for bit); the least distances and peak loads of ``summary`` are
+    tracked at every time level.
+
+    Attributes:
+        scenario: the :class:`LineScenario` that ran.
+        status: ``"completed"``, ``"settled"``, ``"not_settled"`` or ``"unstable"``.
+        conductors: dict conductor name -> :class:`ConductorResult`, in the line's order.
+        t_s: (rows,) sample times of the clearances and tower loads [s].
+        clearance_pairs: the pairs of conductor groups (phases, earth wires, bundles), in column order.
+        clearances_m: (rows, pairs) least distance of each pair [m] (NaN where none can be measured).
+        towers: the towers' names.
+        tower_forces_n: (rows, towers, 3) resultant of every attachment on each tower, ``F1, F2, F3`` [N].
+        tower_displacements_m: (rows, towers, 2) horizontal displacement ``u1, u2`` of an elastic top [m].
+        summary: the line's summary, a dict with the keys of ``summary.json``.
+        events: the events applied, as (time [s], conductor, what) tuples.
+    """
+
+    def __init__(self, raw: dict, scenario: "LineScenario") -> None:
+        self.scenario = scenario
+        self.status: str = raw["status"]
+        self.summary: Dict[str, Any] = raw["summary"]
+        probes = scenario.probes
+        supports = scenario.supports
+        by_name = {c["name"]: c for c in self.summary["conductors"]}
+        self.conductors: Dict[str, ConductorResult] = {
+            c["name"]: ConductorResult(c, by_name[c["name"]], probes[c["name"]], len(supports[c["name"]])) for c in raw["conductors"]
+        }
+        self.t_s: np.ndarray = raw["sample_t_s"]
+        self.clearance_pairs: List[Tuple[str, str]] = [tuple(p) for p in raw["clearance_pairs"]]
+        self.clearances_m: np.ndarray = raw["clearance_m"]
+        self.towers: List[str] = list(raw["towers"])
+        self.tower_forces_n: np.ndarray = raw["tower_force_n"]
+        self.tower_displacements_m: np.ndarray = raw["tower_displacement_m"]
+        self.events: List[Tuple[float, str, str]] = [(e["time_s"], e["conductor"], e["what"]) for e in self.summary["events"]]
+
+    def __getitem__(self, conductor: str) -> ConductorResult:
+        """The results of the conductor ``conductor`` (a name of ``LineScenario.conductors``)."""
+        return self.conductors[conductor]
+
+    def clearance_m(self, a: str, b: str) -> np.ndarray:
+        """(rows,) least distance between the groups ``a`` and ``b`` (in either order) [m]."""
+        for k, p in enumerate(self.clearance_pairs):
+            if p == (a, b) or p == (b, a):
+                return self.clearances_m[:, k]
+        raise KeyError(f"no clearance between {a!r} and {b!r}: the pairs are {self.clearance_pairs}")
+
+    @property
+    def least_clearance(self) -> Optional[Dict[str, Any]]:
+        """The least distance between any two groups over the run (tracked at every time level), as its
+        entry of ``summary["clearances"]``: ``least_m`` [m], ``time_s`` [s], ``between`` (the two groups),
+        ``conductors`` and ``at_fraction`` (where on each, as a fraction of its unstretched length),
+        ``points_m``, ``initial_m``, ``final_m``; None for a line of one group."""
+        pairs = self.summary["clearances"]
+        return min(pairs, key=lambda p: p["least_m"]) if pairs else None
+
+    def __repr__(self) -> str:
+        return (
+            f"LineResult(name={self.summary.get('name')!r}, status={self.status!r}, "
+            f"conductors={list(self.conductors)}, rows={len(self.t_s)})"
         )
 
 
@@ -250,7 +392,7 @@ def run(
     """Run a scenario to its end and return its :class:`RunResult`.
 
     ``scenario`` is an :class:`ohl.Scenario`, a dict (:func:`from_dict`) or the path of a scenario file
-    (:func:`load`). The run releases the GIL, so runs in threads (``concurrent.futures``, Dask's threaded
+    (:func:`load`); an :class:`ohl.LineScenario` is run by :func:`run_line`. The run releases the GIL, so runs in threads (``concurrent.futures``, Dask's threaded
     scheduler) run in parallel. With ``out_dir`` it also writes ``timeseries.csv``, ``snapshots.csv``
     and ``summary.json`` there, as ``ohl run --out`` does.
 
@@ -258,12 +400,40 @@ def run(
     --allow-large``), :class:`UnstableError` (with the result so far in ``.result``) if the scheme goes
     unstable, ``KeyboardInterrupt`` on Ctrl-C.
     """
+    if isinstance(scenario, LineScenario):
+        return run_line(scenario, out_dir=out_dir, allow_large=allow_large)
     sc = _as_scenario(scenario)
     raw = _ohl.run_raw(sc, None if out_dir is None else os.fspath(out_dir), allow_large)
     result = RunResult(raw, sc)
     u = raw["instability"]
     if u is not None:
         raise UnstableError(u["message"], u["time_s"], u["node"], u["reason"], result)
+    return result
+
+
+def run_line(
+    scenario: LineScenarioLike,
+    *,
+    out_dir: Optional[Union[str, "os.PathLike[str]"]] = None,
+    allow_large: bool = False,
+) -> LineResult:
+    """Run a line scenario to its end and return its :class:`LineResult`.
+
+    ``scenario`` is an :class:`ohl.LineScenario`, a dict (:func:`line_from_dict`) or the path of a line
+    scenario file (:func:`load_line`). The run releases the GIL. With ``out_dir`` it also writes the files
+    of ``ohl run --out`` (``summary.json``, ``clearances.csv``, ``towers.csv`` and
+    ``conductors/NAME/``).
+
+    Raises :class:`WorkBudgetError` above the work budget unless ``allow_large``, :class:`UnstableError`
+    (with the result so far in ``.result`` and the conductor in ``.conductor``) if the scheme goes
+    unstable, ``KeyboardInterrupt`` on Ctrl-C.
+    """
+    sc = _as_line_scenario(scenario)
+    raw = _ohl.run_line_raw(sc, None if out_dir is None else os.fspath(out_dir), allow_large)
+    result = LineResult(raw, sc)
+    u = raw["instability"]
+    if u is not None:
+        raise UnstableError(u["message"], u["time_s"], u["node"], u["reason"], result, u["conductor"])
     return result
 
 
@@ -283,7 +453,29 @@ def equilibrium(scenario: ScenarioLike, *, tolerance_n: Optional[float] = None, 
       support [N];
     - ``iterations``, ``residual_n``, ``tolerance_n`` [N], ``residual_history_n``.
     """
+    if isinstance(scenario, LineScenario):
+        return line_equilibrium(scenario, tolerance_n=tolerance_n, max_iterations=max_iterations)
     return _ohl.equilibrium(_as_scenario(scenario), tolerance_n, max_iterations)
+
+
+def line_equilibrium(
+    scenario: LineScenarioLike, *, tolerance_n: Optional[float] = None, max_iterations: int = 100
+) -> Dict[str, Any]:
+    """The static equilibrium of the whole line under its loads at ``t = 0`` (before any event): spacers,
+    strings, towers and elastic tower tops included.
+
+    Newton's method on the line's own discrete equations at rest (the library's ``statics::solve_line``,
+    the solve of ``[initial] shape = "equilibrium"``) from the scenario's initial state. Raises
+    :class:`StaticsError` if it does not converge. Returns a dict:
+
+    - ``conductors``: conductor name -> the dict :func:`equilibrium` gives for one wire (``x_m``, ``s_m``,
+      ``segment_tension_n``, ``node_tension_n``, ``max_tension_n``, ``midspan_displacement_m``,
+      ``support_nodes`` and ``support_forces_n`` of its own supports);
+    - ``towers``, ``tower_forces_n`` (towers, 3): the resultant of every attachment on each tower [N], and
+      ``tower_displacements_m`` (towers, 3) of the elastic tops [m];
+    - ``iterations``, ``residual_n``, ``tolerance_n`` [N], ``residual_history_n``.
+    """
+    return _ohl.line_equilibrium(_as_line_scenario(scenario), tolerance_n, max_iterations)
 
 
 # --- thermal -----------------------------------------------------------------------------------------

@@ -2,7 +2,7 @@
 
 import os
 from collections.abc import Mapping
-from typing import Any, Dict, List, NamedTuple, Optional, Sequence, Tuple, TypedDict, Union
+from typing import Any, Dict, List, NamedTuple, Optional, Sequence, Tuple, TypedDict, Union, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -45,13 +45,23 @@ class WorkBudgetError(ValueError):
     def __init__(self, message: str, estimate: Optional[Dict[str, Any]] = ...) -> None: ...
 
 class UnstableError(RuntimeError):
-    """The scheme went unstable at ``time_s`` [s], ``node``; ``result`` holds the run up to then."""
+    """The scheme went unstable at ``time_s`` [s], ``node`` (of ``conductor`` in a line); ``result`` holds
+    the run up to then."""
 
     time_s: float
     node: int
     reason: str
-    result: RunResult
-    def __init__(self, message: str, time_s: float = ..., node: int = ..., reason: str = ..., result: Any = ...) -> None: ...
+    result: Union[RunResult, LineResult]
+    conductor: Optional[str]
+    def __init__(
+        self,
+        message: str,
+        time_s: float = ...,
+        node: int = ...,
+        reason: str = ...,
+        result: Any = ...,
+        conductor: Optional[str] = ...,
+    ) -> None: ...
 
 class StaticsError(RuntimeError): ...
 class ThermalError(RuntimeError): ...
@@ -107,11 +117,68 @@ class Scenario:
     def initial_equilibrium(self) -> Optional[Dict[str, Any]]: ...
     def work_estimate(self) -> Dict[str, Any]: ...
 
+class LineScenario:
+    """A line scenario (``[line]``: several conductors), parsed, validated and planned: ready to run."""
+
+    @staticmethod
+    def from_file(path: PathLike) -> LineScenario: ...
+    @staticmethod
+    def from_toml(text: str, name: str = "<string>") -> LineScenario: ...
+    @staticmethod
+    def from_dict(d: Mapping[str, Any], name: str = "<dict>") -> LineScenario: ...
+    @property
+    def name(self) -> str: ...
+    @property
+    def file(self) -> str: ...
+    @property
+    def toml(self) -> str: ...
+    @property
+    def conductors(self) -> List[str]:
+        """The line's conductors; a bundle's sub-conductors are ``NAME.1``, ``NAME.2``, ..."""
+    @property
+    def roles(self) -> List[str]:
+        """"phase", "earth_wire" or "sub_conductor", per conductor."""
+    @property
+    def groups(self) -> Dict[str, List[str]]:
+        """Declared conductor (phase, earth wire, bundle) -> the line's conductors it is made of."""
+    @property
+    def clearance_pairs(self) -> List[Tuple[str, str]]: ...
+    @property
+    def towers(self) -> List[str]: ...
+    @property
+    def segments(self) -> Dict[str, int]: ...
+    @property
+    def supports(self) -> Dict[str, List[Tuple[int, List[float]]]]:
+        """Conductor -> (node, position [m]) of each of its own supports."""
+    @property
+    def probes(self) -> Dict[str, List[str]]: ...
+    @property
+    def columns(self) -> Dict[str, List[str]]:
+        """Conductor -> the columns of its time series (``conductors/NAME/timeseries.csv``)."""
+    @property
+    def dt_s(self) -> float:
+        """The line's time step [s]."""
+    @property
+    def end_time_s(self) -> float: ...
+    @property
+    def sample_interval_s(self) -> float: ...
+    @property
+    def snapshot_times_s(self) -> List[float]: ...
+    @property
+    def warnings(self) -> List[str]: ...
+    @property
+    def initial_equilibrium(self) -> Optional[Dict[str, Any]]: ...
+    def work_estimate(self) -> Dict[str, Any]: ...
+
 ScenarioLike = Union[Scenario, Mapping[str, Any], PathLike]
+LineScenarioLike = Union[LineScenario, Mapping[str, Any], PathLike]
 
 def load(path: PathLike) -> Scenario: ...
 def loads(text: str, name: str = "<string>") -> Scenario: ...
 def from_dict(d: Mapping[str, Any], name: str = "<dict>") -> Scenario: ...
+def load_line(path: PathLike) -> LineScenario: ...
+def loads_line(text: str, name: str = "<string>") -> LineScenario: ...
+def line_from_dict(d: Mapping[str, Any], name: str = "<dict>") -> LineScenario: ...
 
 # --- runs --------------------------------------------------------------------------------------------
 
@@ -126,15 +193,13 @@ class Snapshots:
     tension_n: FloatArray  # (k, N+1) node tension [N]
     def __len__(self) -> int: ...
 
-class RunResult:
-    scenario: Scenario
-    status: str
+class _Series:
+    """The time series and snapshots of one wire."""
+
     columns: List[str]
     table: FloatArray  # (rows, columns)
     timeseries: Dict[str, FloatArray]
     snapshots: Snapshots
-    summary: Dict[str, Any]
-    events: List[Tuple[float, str]]
     def __getitem__(self, column: str) -> FloatArray: ...
     @property
     def t_s(self) -> FloatArray:
@@ -161,9 +226,45 @@ class RunResult:
         """(rows,) conductor temperature [K], with a [thermal] table."""
     def to_pandas(self) -> Any: ...
 
-def run(scenario: ScenarioLike, *, out_dir: Optional[PathLike] = None, allow_large: bool = False) -> RunResult: ...
+class RunResult(_Series):
+    scenario: Scenario
+    status: str
+    summary: Dict[str, Any]
+    events: List[Tuple[float, str]]
 
-class Equilibrium(TypedDict):
+class ConductorResult(_Series):
+    """One conductor of a line run."""
+
+    name: str
+    role: str
+    summary: Dict[str, Any]  # its entry of summary.json's "conductors"
+
+class LineResult:
+    scenario: LineScenario
+    status: str
+    summary: Dict[str, Any]
+    conductors: Dict[str, ConductorResult]
+    t_s: FloatArray  # (rows,) sample times [s]
+    clearance_pairs: List[Tuple[str, str]]
+    clearances_m: FloatArray  # (rows, pairs) [m]
+    towers: List[str]
+    tower_forces_n: FloatArray  # (rows, towers, 3) [N]
+    tower_displacements_m: FloatArray  # (rows, towers, 2) [m]
+    events: List[Tuple[float, str, str]]  # (time [s], conductor, what)
+    def __getitem__(self, conductor: str) -> ConductorResult: ...
+    def clearance_m(self, a: str, b: str) -> FloatArray:
+        """(rows,) least distance between two groups [m]."""
+    @property
+    def least_clearance(self) -> Optional[Dict[str, Any]]:
+        """The least distance over the run (least_m, time_s, between, conductors, at_fraction, points_m)."""
+
+@overload
+def run(scenario: LineScenario, *, out_dir: Optional[PathLike] = None, allow_large: bool = False) -> LineResult: ...
+@overload
+def run(scenario: ScenarioLike, *, out_dir: Optional[PathLike] = None, allow_large: bool = False) -> RunResult: ...
+def run_line(scenario: LineScenarioLike, *, out_dir: Optional[PathLike] = None, allow_large: bool = False) -> LineResult: ...
+
+class WireState(TypedDict):
     x_m: FloatArray  # (N+1, 3) [m]
     s_m: FloatArray  # (N+1,) [m]
     segment_tension_n: FloatArray  # (N,) [N]
@@ -172,12 +273,30 @@ class Equilibrium(TypedDict):
     midspan_displacement_m: List[float]
     support_nodes: List[int]
     support_forces_n: FloatArray  # (supports, 3) [N]
+
+class Equilibrium(WireState):
     iterations: int
     residual_n: float
     tolerance_n: float
     residual_history_n: FloatArray
 
+class LineEquilibrium(TypedDict):
+    conductors: Dict[str, WireState]
+    towers: List[str]
+    tower_forces_n: FloatArray  # (towers, 3) [N]
+    tower_displacements_m: FloatArray  # (towers, 3) [m]
+    iterations: int
+    residual_n: float
+    tolerance_n: float
+    residual_history_n: FloatArray
+
+@overload
+def equilibrium(scenario: LineScenario, *, tolerance_n: Optional[float] = None, max_iterations: int = 100) -> LineEquilibrium: ...
+@overload
 def equilibrium(scenario: ScenarioLike, *, tolerance_n: Optional[float] = None, max_iterations: int = 100) -> Equilibrium: ...
+def line_equilibrium(
+    scenario: LineScenarioLike, *, tolerance_n: Optional[float] = None, max_iterations: int = 100
+) -> LineEquilibrium: ...
 
 # --- thermal -----------------------------------------------------------------------------------------
 

@@ -74,20 +74,31 @@ class UnstableError(RuntimeError):
 
     Attributes:
         time_s: the time of the failure [s].
-        node: the node where it was detected.
+        node: the node where it was detected (of ``conductor`` in a line).
         reason: why (the speed or the value that was not finite).
-        result: the :class:`ohl.RunResult` up to the failure (time series, snapshots, summary).
+        result: the :class:`ohl.RunResult` up to the failure (time series, snapshots, summary), or the
+            :class:`ohl.LineResult` of a line run.
+        conductor: the conductor of a line run that went unstable (None for a single run).
     """
 
-    def __init__(self, message: str, time_s: float = float("nan"), node: int = -1, reason: str = "", result: Any = None) -> None:
+    def __init__(
+        self,
+        message: str,
+        time_s: float = float("nan"),
+        node: int = -1,
+        reason: str = "",
+        result: Any = None,
+        conductor: Optional[str] = None,
+    ) -> None:
         super().__init__(message)
         self.time_s = time_s
         self.node = node
         self.reason = reason
         self.result = result
+        self.conductor = conductor
 
     def __reduce__(self):
-        return (type(self), (str(self), self.time_s, self.node, self.reason, self.result))
+        return (type(self), (str(self), self.time_s, self.node, self.reason, self.result, self.conductor))
 
 
 class StaticsError(RuntimeError):

@@ -2,11 +2,14 @@
 //! line: scenarios are parsed, validated and planned by `ohl::scenario`, run by `ohl::run::run_observed`
 //! with the GIL released, and the numbers come back as NumPy arrays taken from the same code that writes
 //! `timeseries.csv` and `snapshots.csv` (`ohl::output::timeseries::Columns`,
-//! `ohl::output::snapshots::node_rows`). The pure-Python half (`python/ohl/__init__.py`) holds the result
-//! class and the exceptions; `docs/python.md` documents the API.
+//! `ohl::output::snapshots::node_rows`). Line scenarios (`[line]`, several conductors) are run by
+//! `ohl::run::line::run_line_observed` with the same observer on each conductor ([`line`]). The pure-Python
+//! half (`python/ohl/__init__.py`) holds the result classes and the exceptions; `docs/python.md` documents
+//! the API.
 
 mod convert;
 mod errors;
+mod line;
 mod scenario;
 mod thermal;
 
@@ -18,6 +21,9 @@ fn _ohl(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<scenario::Scenario>()?;
     m.add_function(wrap_pyfunction!(scenario::run_raw, m)?)?;
     m.add_function(wrap_pyfunction!(scenario::equilibrium, m)?)?;
+    m.add_class::<line::LineScenario>()?;
+    m.add_function(wrap_pyfunction!(line::run_line_raw, m)?)?;
+    m.add_function(wrap_pyfunction!(line::line_equilibrium, m)?)?;
     m.add_function(wrap_pyfunction!(thermal::conductors, m)?)?;
     m.add_function(wrap_pyfunction!(thermal::conductor, m)?)?;
     m.add_function(wrap_pyfunction!(thermal::heat_terms, m)?)?;

@@ -9,7 +9,8 @@ use ohl::output::snapshots::node_rows;
 use ohl::output::timeseries::Columns;
 use ohl::run::{Control, Ending, Level, Observer, OutputError, RunError, RunOptions, run_observed, timeseries_columns};
 use ohl::scenario::{self, Plan, WorkEstimate};
-use ohl::statics::{self, StaticOptions};
+use ohl::scheme::Explicit;
+use ohl::statics::{self, StaticOptions, StaticReport};
 use pyo3::exceptions::{PyKeyboardInterrupt, PyOSError, PyTypeError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
@@ -197,7 +198,7 @@ impl Scenario {
     }
 }
 
-fn estimate_dict<'py>(py: Python<'py>, e: &WorkEstimate) -> PyResult<Bound<'py, PyDict>> {
+pub(crate) fn estimate_dict<'py>(py: Python<'py>, e: &WorkEstimate) -> PyResult<Bound<'py, PyDict>> {
     let d = PyDict::new(py);
     d.set_item("segments", e.segments)?;
     d.set_item("dt_s", e.dt_s)?;
@@ -217,7 +218,7 @@ fn estimate_dict<'py>(py: Python<'py>, e: &WorkEstimate) -> PyResult<Bound<'py, 
 
 /// Records in memory what `ohl run` writes to `timeseries.csv` and `snapshots.csv`, on the same clocks
 /// and from the same code ([`Columns`], [`node_rows`]), so the numbers are the files' numbers.
-struct Record {
+pub(crate) struct Record {
     columns: Columns,
     samples: SampleClock,
     rows: Vec<f64>,
@@ -232,7 +233,7 @@ struct Record {
 }
 
 impl Record {
-    fn new(plan: &Plan) -> Self {
+    pub(crate) fn new(plan: &Plan) -> Self {
         Record {
             columns: timeseries_columns(plan),
             samples: SampleClock::new(plan.sample_interval_s),
@@ -246,6 +247,25 @@ impl Record {
             snap_tension: Vec::new(),
             tension: Vec::new(),
         }
+    }
+
+    /// The time series (`columns`, `rows`) and the snapshots (`snapshot_*`) as NumPy arrays in `d`, for
+    /// a wire of `nodes` nodes.
+    pub(crate) fn into_dict(self, d: &Bound<'_, PyDict>, nodes: usize) -> PyResult<()> {
+        let py = d.py();
+        let header = self.columns.header().to_vec();
+        let cols = header.len();
+        let n_rows = self.rows.len() / cols.max(1);
+        d.set_item("columns", header)?;
+        d.set_item("rows", array2(py, self.rows, n_rows, cols)?)?;
+        let k = self.snap_t.len();
+        d.set_item("snapshot_t_s", array1(py, self.snap_t))?;
+        d.set_item("snapshot_tau", array1(py, self.snap_tau))?;
+        d.set_item("snapshot_s_m", array2(py, self.snap_s, k, nodes)?)?;
+        d.set_item("snapshot_x_m", array3(py, self.snap_x, (k, nodes, 3))?)?;
+        d.set_item("snapshot_v_m_per_s", array3(py, self.snap_v, (k, nodes, 3))?)?;
+        d.set_item("snapshot_tension_n", array2(py, self.snap_tension, k, nodes)?)?;
+        Ok(())
     }
 
     fn snapshot(&mut self, level: &Level) {
@@ -286,11 +306,24 @@ impl Observer for Record {
 /// Stops a run when Python has a pending signal (Ctrl-C): every 4096 time levels it looks at the clock,
 /// and every 0.2 s it takes the GIL for `PyErr_CheckSignals`. Observers cannot change the state, so this
 /// changes no number.
-struct Interrupt {
+pub(crate) struct Interrupt {
     levels: u64,
     last: Instant,
-    error: Option<PyErr>,
+    pub(crate) error: Option<PyErr>,
 }
+
+impl Interrupt {
+    pub(crate) fn new() -> Self {
+        Interrupt { levels: 0, last: Instant::now(), error: None }
+    }
+}
+
+/// Whether an output error is the one [`Interrupt`] stops a run with.
+pub(crate) fn interrupted(e: &OutputError) -> bool {
+    e.path == INTERRUPTED
+}
+
+const INTERRUPTED: &str = "<interrupted>";
 
 impl Observer for Interrupt {
     fn observe(&mut self, _level: &Level) -> Result<Control, OutputError> {
@@ -300,7 +333,7 @@ impl Observer for Interrupt {
             if let Err(e) = Python::attach(|py| py.check_signals()) {
                 self.error = Some(e);
                 return Err(OutputError {
-                    path: "<interrupted>".into(),
+                    path: INTERRUPTED.into(),
                     source: std::io::Error::other("interrupted by a signal"),
                 });
             }
@@ -326,7 +359,7 @@ pub fn run_raw<'py>(
     }
     let plan = sc.plan.clone();
     let mut record = Record::new(&plan);
-    let mut interrupt = Interrupt { levels: 0, last: Instant::now(), error: None };
+    let mut interrupt = Interrupt::new();
     let opts = RunOptions { out_dir, record: false };
     let result = py.detach(|| {
         let mut extra: [&mut dyn Observer; 2] = [&mut record, &mut interrupt];
@@ -338,25 +371,13 @@ pub fn run_raw<'py>(
     let (outcome, instability) = match result {
         Ok(o) => (o, None),
         Err(RunError::Unstable { instability, outcome }) => (*outcome, Some(instability)),
-        Err(RunError::Io(e)) if e.path == "<interrupted>" => {
+        Err(RunError::Io(e)) if interrupted(&e) => {
             return Err(PyKeyboardInterrupt::new_err("the run was interrupted"));
         }
         Err(RunError::Io(e)) => return Err(PyOSError::new_err(e.to_string())),
     };
     let d = PyDict::new(py);
-    let header = record.columns.header().to_vec();
-    let cols = header.len();
-    let n_rows = record.rows.len() / cols.max(1);
-    d.set_item("columns", header)?;
-    d.set_item("rows", array2(py, record.rows, n_rows, cols)?)?;
-    let k = record.snap_t.len();
-    let nodes = sc.plan.solver.wire().segments() + 1;
-    d.set_item("snapshot_t_s", array1(py, record.snap_t))?;
-    d.set_item("snapshot_tau", array1(py, record.snap_tau))?;
-    d.set_item("snapshot_s_m", array2(py, record.snap_s, k, nodes)?)?;
-    d.set_item("snapshot_x_m", array3(py, record.snap_x, (k, nodes, 3))?)?;
-    d.set_item("snapshot_v_m_per_s", array3(py, record.snap_v, (k, nodes, 3))?)?;
-    d.set_item("snapshot_tension_n", array2(py, record.snap_tension, k, nodes)?)?;
+    record.into_dict(&d, sc.plan.solver.wire().segments() + 1)?;
     d.set_item("summary", to_py(py, &outcome.summary)?)?;
     d.set_item("status", outcome.summary.status.clone())?;
     let events = PyList::empty(py);
@@ -397,12 +418,20 @@ pub fn equilibrium<'py>(
         r
     });
     let report = solved.map_err(|e| raise(py, "StaticsError", (format!("{}: {e}", sc.file),)))?;
+    let d = state_dict(py, &solver)?;
+    report_into(&d, report)?;
+    Ok(d)
+}
+
+/// A wire at rest as `ohl.equilibrium` gives it: `x_m`, `s_m`, `segment_tension_n`, `node_tension_n`,
+/// `midspan_displacement_m`, `max_tension_n`, `support_nodes`, `support_forces_n` (forces evaluated).
+pub(crate) fn state_dict<'py>(py: Python<'py>, solver: &Explicit) -> PyResult<Bound<'py, PyDict>> {
     let w = solver.wire();
     let (n, nodes) = (w.segments(), w.segments() + 1);
     let x: Vec<f64> = (0..nodes).flat_map(|i| [w.x[0][i], w.x[1][i], w.x[2][i]]).collect();
     let segment_tension: Vec<f64> = (0..n).map(|j| solver.segment_tension(j)).collect();
     let (mut s_m, mut node_tension, mut scratch) = (Vec::new(), Vec::new(), Vec::new());
-    node_rows(&solver, &mut scratch, |r| {
+    node_rows(solver, &mut scratch, |r| {
         s_m.push(r.s_m);
         node_tension.push(r.tension_n);
     });
@@ -419,9 +448,14 @@ pub fn equilibrium<'py>(
     d.set_item("support_nodes", forces.iter().map(|f| f.0).collect::<Vec<_>>())?;
     let f: Vec<f64> = forces.iter().flat_map(|f| f.1).collect();
     d.set_item("support_forces_n", array2(py, f, forces.len(), 3)?)?;
+    Ok(d)
+}
+
+/// A Newton solve's report in `d`: `iterations`, `residual_n`, `tolerance_n` [N], `residual_history_n`.
+pub(crate) fn report_into(d: &Bound<'_, PyDict>, report: StaticReport) -> PyResult<()> {
     d.set_item("iterations", report.iterations)?;
     d.set_item("residual_n", report.residual_n)?;
     d.set_item("tolerance_n", report.tolerance_n)?;
-    d.set_item("residual_history_n", array1(py, report.residual_history))?;
-    Ok(d)
+    d.set_item("residual_history_n", array1(d.py(), report.residual_history))?;
+    Ok(())
 }

@@ -13,15 +13,17 @@
 //!   its displacement, sampled in `towers.csv`.
 //!
 //! Asking for more output never changes the trajectory: samples are taken at the first level at or after
-//! their time; only events land the clock.
+//! their time; only events land the clock. [`run_line_observed`] takes further observers per conductor and
+//! can keep the line's samples in memory ([`LineSamples`]: the numbers of `clearances.csv` and
+//! `towers.csv`), for a caller that wants arrays rather than files (the Python package).
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use serde::Serialize;
 
 use crate::events::EventState;
-use crate::line::clearance::ClearanceTracker;
+use crate::line::clearance::{ClearanceTracker, LeastClearance};
 use crate::line::{LinkKind, Role};
 use crate::output::clock::{LANDING, SampleClock};
 use crate::output::peaks::Peak;
@@ -29,6 +31,7 @@ use crate::output::rows::{RowFile, write_atomically};
 use crate::output::{Peaks, ProbePoint, Snapshots, Timeseries};
 use crate::scenario::build::Stop;
 use crate::scenario::line::LinePlan;
+use crate::scenario::work::{BUDGET_NODE_STEPS, BUDGET_OUTPUT_BYTES, BYTES_PER_NUMBER, THROUGHPUT_NODE_STEPS_PER_S};
 use crate::scheme::{LineExplicit, LineInstability};
 
 use super::{Control, Ending, Level, Observer, OutputError, Settle, timeseries_columns};
@@ -157,8 +160,37 @@ pub struct LineSummary {
 pub struct LineOutcome {
     /// its summary
     pub summary: LineSummary,
+    /// the line's samples, if [`LineRunOptions::record`] was set (else empty)
+    pub samples: LineSamples,
     /// the line at the end
     pub line: LineExplicit,
+}
+
+/// How to run a line ([`run_line_observed`]).
+#[derive(Clone, Debug, Default)]
+pub struct LineRunOptions {
+    /// directory for the line's files (none: nothing is written)
+    pub out_dir: Option<PathBuf>,
+    /// keep the line's samples in memory ([`LineOutcome::samples`])
+    pub record: bool,
+}
+
+/// The line's samples kept in memory: the rows of `clearances.csv` and `towers.csv`, the same numbers
+/// at the same levels (the first level at or after each multiple of the sample interval).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct LineSamples {
+    /// the pairs of conductor groups, by name, in the order of the clearance columns
+    pub pairs: Vec<[String; 2]>,
+    /// the towers' names, in the order of their columns
+    pub towers: Vec<String>,
+    /// sample times [s]
+    pub t_s: Vec<f64>,
+    /// the least distance of each pair [m] (NaN where none can be measured), row-major `(samples, pairs)`
+    pub clearance_m: Vec<f64>,
+    /// each tower's resultant `f1, f2, f3` [N], row-major `(samples, towers, 3)`
+    pub tower_force_n: Vec<f64>,
+    /// each tower top's horizontal displacement `u1, u2` [m], row-major `(samples, towers, 2)`
+    pub tower_displacement_m: Vec<f64>,
 }
 
 /// Why a line run failed.
@@ -175,6 +207,95 @@ pub enum LineRunError {
         /// the state at that time
         outcome: Box<LineOutcome>,
     },
+}
+
+/// The work of a line run, estimated before it runs as for one conductor ([`crate::scenario::work`]):
+/// every conductor's nodes at every step of the line, `steps = ceil(T / dt) + 1`; the output is every
+/// conductor's time series and snapshots, the clearances and the towers, at most
+/// [`BYTES_PER_NUMBER`] bytes a number.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LineWorkEstimate {
+    /// conductors of the line (a bundle's sub-conductors each) [-]
+    pub conductors: usize,
+    /// nodes of all the conductors [-]
+    pub nodes: usize,
+    /// the line's time step [s]
+    pub dt_s: f64,
+    /// the latest time the run may reach [s]
+    pub horizon_s: f64,
+    /// time steps [-]
+    pub steps: f64,
+    /// node-steps of all the conductors [node-steps]
+    pub node_steps: f64,
+    /// bytes of all the output files (upper bound) [bytes]
+    pub output_bytes: f64,
+}
+
+/// Why a line run is refused before it starts.
+#[derive(Clone, Copy, Debug, PartialEq, thiserror::Error)]
+pub enum LineRefusal {
+    /// The step does not advance the clock: the run could never end (no flag allows it).
+    #[error("the time step {:e} s does not advance the clock at the end time {:e} s", .0.dt_s, .0.horizon_s)]
+    TimeStalls(LineWorkEstimate),
+    /// Above [`BUDGET_NODE_STEPS`] or [`BUDGET_OUTPUT_BYTES`].
+    #[error(
+        "the run needs {:.3e} node-steps (budget {BUDGET_NODE_STEPS:.1e}) and up to {:.3e} bytes of output \
+         (budget {BUDGET_OUTPUT_BYTES:.1e}): use coarser grids, a shorter end time or a longer sample interval, \
+         or pass --allow-large",
+        .0.node_steps,
+        .0.output_bytes
+    )]
+    Budget(LineWorkEstimate),
+}
+
+impl LineWorkEstimate {
+    /// The estimate of a run of `plan`.
+    pub fn of(plan: &LinePlan) -> LineWorkEstimate {
+        let nodes: usize = plan.line.conductors().iter().map(|c| c.wire().nodes()).sum();
+        let (dt, horizon) = (plan.line.params().dt_s, plan.stop.horizon_s());
+        let steps = (horizon / dt).ceil() + 1.0;
+        let rows = (horizon / plan.sample_interval_s).ceil() + 2.0;
+        let mut numbers = 0.0;
+        for p in &plan.plans {
+            let columns = timeseries_columns(p).header().len() as f64;
+            numbers += rows * columns + (p.snapshot_times_s.len() + 1) as f64 * p.solver.wire().nodes() as f64 * 11.0;
+        }
+        let pairs = plan.groups.len() * plan.groups.len().saturating_sub(1) / 2;
+        numbers += rows * (1 + pairs + 5 * plan.line.supports().count()) as f64;
+        LineWorkEstimate {
+            conductors: plan.line.conductors().len(),
+            nodes,
+            dt_s: dt,
+            horizon_s: horizon,
+            steps,
+            node_steps: nodes as f64 * steps,
+            output_bytes: BYTES_PER_NUMBER * numbers,
+        }
+    }
+
+    /// Estimated wall time at [`THROUGHPUT_NODE_STEPS_PER_S`] [s].
+    pub fn wall_time_s(&self) -> f64 {
+        self.node_steps / THROUGHPUT_NODE_STEPS_PER_S
+    }
+
+    /// `Err` if the run cannot end: its step does not advance the clock at the horizon.
+    pub fn check_resolvable(&self) -> Result<(), LineRefusal> {
+        let (dt, horizon) = (self.dt_s, self.horizon_s);
+        if dt > 0.0 && horizon.is_finite() && horizon + dt > horizon {
+            Ok(())
+        } else {
+            Err(LineRefusal::TimeStalls(*self))
+        }
+    }
+
+    /// `Err` if the run cannot end, or is above [`BUDGET_NODE_STEPS`] or [`BUDGET_OUTPUT_BYTES`].
+    pub fn check(&self) -> Result<(), LineRefusal> {
+        self.check_resolvable()?;
+        if self.node_steps > BUDGET_NODE_STEPS || self.output_bytes > BUDGET_OUTPUT_BYTES {
+            return Err(LineRefusal::Budget(*self));
+        }
+        Ok(())
+    }
 }
 
 /// A conductor's name as a file or column name: letters, digits, '-' and '.', the rest '_'.
@@ -204,6 +325,19 @@ impl ConductorOutputs {
 /// Run the line to its end (or until every conductor has settled after the last event), writing into
 /// `out_dir` if given.
 pub fn run_line(plan: LinePlan, out_dir: Option<&Path>) -> Result<LineOutcome, LineRunError> {
+    let opts = LineRunOptions { out_dir: out_dir.map(Path::to_path_buf), record: false };
+    run_line_observed(plan, &opts, &mut [])
+}
+
+/// [`run_line`] with further observers of each conductor (`extra[c]` after conductor `c`'s standard
+/// outputs; `extra` may be shorter than the line) and, with [`LineRunOptions::record`], the line's samples
+/// kept in memory. Observers cannot change the state: the run is the same with or without them.
+pub fn run_line_observed<'o>(
+    plan: LinePlan,
+    opts: &LineRunOptions,
+    extra: &mut [Vec<&mut (dyn Observer + 'o)>],
+) -> Result<LineOutcome, LineRunError> {
+    let out_dir = opts.out_dir.as_deref();
     let mut line = plan.line.clone();
     let n = line.conductors().len();
     let names: Vec<String> = line.names().to_vec();
@@ -255,6 +389,11 @@ pub fn run_line(plan: LinePlan, out_dir: Option<&Path>) -> Result<LineOutcome, L
         None => None,
     };
     let mut clock = SampleClock::new(plan.sample_interval_s);
+    let mut samples = opts.record.then(|| LineSamples {
+        pairs: pair_names.clone(),
+        towers: towers.clone(),
+        ..LineSamples::default()
+    });
     // The largest tension magnitude of each link kind: (link, tension, time).
     let kinds = [LinkKind::SuspensionString, LinkKind::TensionString, LinkKind::Spacer, LinkKind::InterphaseSpacer];
     let mut link_peak: Vec<Option<(usize, f64, f64)>> = vec![None; kinds.len()];
@@ -273,6 +412,9 @@ pub fn run_line(plan: LinePlan, out_dir: Option<&Path>) -> Result<LineOutcome, L
                 let tl = &timelines[c].log;
                 let what = tl[tl.len() - applied..].iter().map(|(_, w)| w.as_str()).collect::<Vec<_>>().join("; ");
                 outputs[c].each().for_each(|o| o.event(t, &what));
+                if let Some(x) = extra.get_mut(c) {
+                    x.iter_mut().for_each(|o| o.event(t, &what));
+                }
                 log.push(LineEventRecord { time_s: t, conductor: names[c].clone(), what });
             }
             timelines[c].before_step(line.conductor_mut(c), t);
@@ -285,9 +427,13 @@ pub fn run_line(plan: LinePlan, out_dir: Option<&Path>) -> Result<LineOutcome, L
             for o in outputs[c].each() {
                 settled |= o.observe(&level)? == Control::Settled;
             }
+            for o in extra.get_mut(c).into_iter().flatten() {
+                settled |= o.observe(&level)? == Control::Settled;
+            }
             all_settled &= settled;
         }
-        let sample_due = files.is_some() && clock.next_s() <= t + tol;
+        let sampling = files.is_some() || samples.is_some();
+        let sample_due = sampling && clock.next_s() <= t + tol;
         let first = line.steps() == 0;
         clearance.observe_bounded(&line.wires(), t, sample_due || first);
         if first {
@@ -310,24 +456,34 @@ pub fn run_line(plan: LinePlan, out_dir: Option<&Path>) -> Result<LineOutcome, L
                 tower_peak[s] = (f, m, t);
             }
         }
-        if let Some((cl, tw)) = files.as_mut()
-            && clock.due(t, tol)
-        {
-            cl.number(t);
-            for c in clearance.current() {
-                cl.number(c.map_or(f64::NAN, |c| c.closest.distance_m));
+        if sampling && clock.due(t, tol) {
+            let distance = |c: &Option<LeastClearance>| c.map_or(f64::NAN, |c| c.closest.distance_m);
+            if let Some((cl, tw)) = files.as_mut() {
+                cl.number(t);
+                for c in clearance.current() {
+                    cl.number(distance(c));
+                }
+                cl.end_row();
+                tw.number(t);
+                for (s, &f) in resultants.iter().enumerate() {
+                    let u = line.support_displacement_m(s);
+                    for v in [f[0], f[1], f[2], u[0], u[1]] {
+                        tw.number(v);
+                    }
+                }
+                tw.end_row();
+                cl.commit().map_err(OutputError::at(&out_dir.unwrap_or(Path::new(".")).join("clearances.csv")))?;
+                tw.commit().map_err(OutputError::at(&out_dir.unwrap_or(Path::new(".")).join("towers.csv")))?;
             }
-            cl.end_row();
-            tw.number(t);
-            for (s, &f) in resultants.iter().enumerate() {
-                let u = line.support_displacement_m(s);
-                for v in [f[0], f[1], f[2], u[0], u[1]] {
-                    tw.number(v);
+            if let Some(r) = samples.as_mut() {
+                r.t_s.push(t);
+                r.clearance_m.extend(clearance.current().iter().map(distance));
+                for (s, f) in resultants.iter().enumerate() {
+                    let u = line.support_displacement_m(s);
+                    r.tower_force_n.extend_from_slice(f);
+                    r.tower_displacement_m.extend_from_slice(&u[..2]);
                 }
             }
-            tw.end_row();
-            cl.commit().map_err(OutputError::at(&out_dir.unwrap_or(Path::new(".")).join("clearances.csv")))?;
-            tw.commit().map_err(OutputError::at(&out_dir.unwrap_or(Path::new(".")).join("towers.csv")))?;
         }
         let pending = timelines.iter().any(|tl| tl.next_time().is_some());
         if all_settled && !pending {
@@ -359,6 +515,9 @@ pub fn run_line(plan: LinePlan, out_dir: Option<&Path>) -> Result<LineOutcome, L
     for c in 0..n {
         let level = Level { solver: &line.conductors()[c], t_s: line.time_s(), tau_per_s: plan.plans[c].tau(1.0) };
         for o in outputs[c].each() {
+            o.finish(&level, &ending)?;
+        }
+        for o in extra.get_mut(c).into_iter().flatten() {
             o.finish(&level, &ending)?;
         }
     }
@@ -464,7 +623,7 @@ pub fn run_line(plan: LinePlan, out_dir: Option<&Path>) -> Result<LineOutcome, L
         let path = d.join("summary.json");
         write_atomically(&path, &text).map_err(OutputError::at(&path))?;
     }
-    let outcome = LineOutcome { summary, line };
+    let outcome = LineOutcome { summary, samples: samples.unwrap_or_default(), line };
     match failure {
         Some(instability) => Err(LineRunError::Unstable { instability, outcome: Box::new(outcome) }),
         None => Ok(outcome),

@@ -327,6 +327,8 @@ pub struct LinePlan {
     pub stop: Stop,
     /// interval between time-series rows [s]
     pub sample_interval_s: f64,
+    /// the static solve of `[initial] shape = "equilibrium"`, if it was asked for
+    pub initial_equilibrium: Option<crate::statics::StaticReport>,
 }
 
 /// Parse a line scenario from TOML text (`file` names it in messages). Each conductor's `conductor`
@@ -825,14 +827,16 @@ fn assemble(s: &LineScenario, plans: Vec<Plan>, global_only: Vec<Option<Plan>>) 
         LineError::Model(m) => problem("line".into(), "(model)".into(), m.to_string()),
     })?;
     let mut line = line;
+    let mut initial_equilibrium = None;
     if s.initial.shape == LineShapeSpec::Equilibrium {
-        crate::statics::solve_line(&mut line, &crate::statics::StaticOptions::default()).map_err(|e| {
+        let report = crate::statics::solve_line(&mut line, &crate::statics::StaticOptions::default()).map_err(|e| {
             problem(
                 "initial.shape".into(),
                 "\"equilibrium\"".into(),
                 format!("the static equilibrium of the line at t = 0 was not found: {e}"),
             )
         })?;
+        initial_equilibrium = Some(report);
     }
     // Ground contact, as each conductor's plan has it (switched on after the equilibrium, as for one).
     for (c, p) in line_plans.iter().enumerate() {
@@ -859,5 +863,6 @@ fn assemble(s: &LineScenario, plans: Vec<Plan>, global_only: Vec<Option<Plan>>) 
         group_names,
         stop: plans[0].stop,
         sample_interval_s: plans[0].sample_interval_s,
+        initial_equilibrium,
     })
 }

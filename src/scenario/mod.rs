@@ -79,7 +79,8 @@ pub fn parse(text: &str, file: &str) -> Result<Scenario, InputError> {
         return Err(InputError::Parse {
             file: file.to_string(),
             message: "a line scenario ([line]: several conductors) is not a single-conductor scenario: run it with \
-                      `ohl run` or `ohl cases` (docs/line.md); the Python package and `ohl sweep` do not take lines yet"
+                      `ohl run`, `ohl cases` or `ohl sweep`, or in Python with `ohl.load_line` and `ohl.run_line` \
+                      (docs/line.md)"
                 .into(),
         });
     }

@@ -137,8 +137,8 @@ fn heat_case_refusal(path: &std::path::Path) -> Option<String> {
 
 /// `ohl run` on a line scenario (a file with `[line]`: several conductors, [`ohl::scenario::line`]).
 fn run_line(path: &std::path::Path, out: &std::path::Path, quiet: bool, dry_run: bool, allow_large: bool) -> ExitCode {
-    use ohl::run::line::{LineRunError, run_line};
-    use ohl::scenario::work::{BUDGET_NODE_STEPS, BUDGET_OUTPUT_BYTES, BYTES_PER_NUMBER, THROUGHPUT_NODE_STEPS_PER_S};
+    use ohl::run::line::{LineRunError, LineWorkEstimate, run_line};
+    use ohl::scenario::work::{BUDGET_NODE_STEPS, BUDGET_OUTPUT_BYTES, THROUGHPUT_NODE_STEPS_PER_S};
     let file = path.display().to_string();
     let plan = match scenario::read_text(path)
         .and_then(|t| scenario::line::parse(&t, &file))
@@ -155,46 +155,21 @@ fn run_line(path: &std::path::Path, out: &std::path::Path, quiet: bool, dry_run:
             eprintln!("warning: {file}: {name}: {w}");
         }
     }
-    // Work: every conductor's nodes, every step of the line; output: every conductor's time series and
-    // snapshots, the clearances and the towers, `BYTES_PER_NUMBER` a number (the single-conductor estimate's).
-    let nodes: usize = plan.line.conductors().iter().map(|c| c.wire().nodes()).sum();
-    let (dt, horizon) = (plan.line.params().dt_s, plan.stop.horizon_s());
-    if !(dt > 0.0 && horizon.is_finite() && horizon + dt > horizon) {
-        eprintln!("error: {file}: the time step {dt:e} s does not advance the clock at the end time {horizon:e} s");
+    let work = LineWorkEstimate::of(&plan);
+    if let Err(refusal) = work.check_resolvable() {
+        eprintln!("error: {file}: {refusal}");
         return ExitCode::from(2);
     }
-    let steps = (horizon / dt).ceil() + 1.0;
-    let node_steps = nodes as f64 * steps;
-    let rows = (horizon / plan.sample_interval_s).ceil() + 2.0;
-    let mut numbers = 0.0;
-    for p in &plan.plans {
-        let columns = ohl::run::timeseries_columns(p).header().len() as f64;
-        numbers += rows * columns + (p.snapshot_times_s.len() + 1) as f64 * p.solver.wire().nodes() as f64 * 11.0;
-    }
-    let pairs = plan.groups.len() * plan.groups.len().saturating_sub(1) / 2;
-    numbers += rows * (1 + pairs + 5 * plan.line.supports().count()) as f64;
-    let output_bytes = BYTES_PER_NUMBER * numbers;
     if dry_run {
         println!("{}: dry run, nothing run", plan.name);
-        println!(
-            "  conductors: {}, nodes: {nodes}, time step: {:.6e} s",
-            plan.line.conductors().len(),
-            plan.line.params().dt_s
-        );
-        println!("  steps: {steps:.6e}, node-steps: {node_steps:.6e} (budget {BUDGET_NODE_STEPS:.1e})");
-        println!("  output: at most {output_bytes:.3e} bytes (budget {BUDGET_OUTPUT_BYTES:.1e})");
-        println!(
-            "  wall time: about {:.3e} s at {THROUGHPUT_NODE_STEPS_PER_S:.1e} node-steps/s",
-            node_steps / THROUGHPUT_NODE_STEPS_PER_S
-        );
+        println!("  conductors: {}, nodes: {}, time step: {:.6e} s", work.conductors, work.nodes, work.dt_s);
+        println!("  steps: {:.6e}, node-steps: {:.6e} (budget {BUDGET_NODE_STEPS:.1e})", work.steps, work.node_steps);
+        println!("  output: at most {:.3e} bytes (budget {BUDGET_OUTPUT_BYTES:.1e})", work.output_bytes);
+        println!("  wall time: about {:.3e} s at {THROUGHPUT_NODE_STEPS_PER_S:.1e} node-steps/s", work.wall_time_s());
         return ExitCode::SUCCESS;
     }
-    if (node_steps > BUDGET_NODE_STEPS || output_bytes > BUDGET_OUTPUT_BYTES) && !allow_large {
-        eprintln!(
-            "error: {file}: the run needs {node_steps:.3e} node-steps (budget {BUDGET_NODE_STEPS:.1e}) and up to \
-             {output_bytes:.3e} bytes of output (budget {BUDGET_OUTPUT_BYTES:.1e}): use coarser grids, a shorter end \
-             time or a longer sample interval, or pass --allow-large"
-        );
+    if !allow_large && let Err(refusal) = work.check() {
+        eprintln!("error: {file}: {refusal}");
         return ExitCode::from(2);
     }
     match run_line(plan, Some(out)) {

@@ -51,11 +51,14 @@ enum SweepCommand {
 
 #[derive(clap::Args)]
 struct RunArgs {
-    /// the base scenario (TOML); every case is this file with the varied fields set
+    /// the base scenario (TOML: one conductor, or a line with [line]); every case is this file with the
+    /// varied fields set
     #[arg(required = true, value_name = "BASE.toml")]
     base: Option<PathBuf>,
     /// a field and its values: FIELD=V1,V2,... or FIELD=START:STOP:STEP (inclusive); FIELD is a path such
-    /// as loads.wind.speed_m_per_s, events[0].time_s, geometry.right_support_m[1]; repeat for a product
+    /// as loads.wind.speed_m_per_s, events[0].time_s, geometry.right_support_m[1], or in a line
+    /// line.conductors[name=A].section.tension_fraction_of_rts (a conductor by name or index); repeat for a
+    /// product
     #[arg(long, value_name = "FIELD=VALUES")]
     vary: Vec<String>,
     /// a CSV file of cases: a header of field paths, one row per case (combined with --vary as one more

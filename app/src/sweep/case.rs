@@ -1,25 +1,27 @@
 //! One case of a sweep: the base document with the case's values set ([`super::overrides`]), written back
 //! to TOML text and read by the same parser, validation and plan as `ohl run` (so a case is exactly the
-//! scenario `OUT/cases/<id>/scenario.toml` that `--keep-runs` writes), checked against the work budget,
-//! then run on the calling thread. Whatever happens becomes the case's [`Row`]: a value that does not fit
-//! its field, an invalid scenario, a refused or unstable run are rows with their status and reason, never
-//! the end of the sweep.
+//! scenario `OUT/cases/<id>/scenario.toml` that `--keep-runs` writes; a line by the line's, run by
+//! `run_line`), checked against the work budget, then run on the calling thread. Whatever happens becomes
+//! the case's [`Row`]: a value that does not fit its field, an invalid scenario, a refused or unstable run
+//! are rows with their status and reason, never the end of the sweep.
 
 use std::path::Path;
 use std::time::Instant;
 
+use ohl::run::line::{LineRunError, LineWorkEstimate, run_line};
 use ohl::run::{RunError, RunOptions, run};
-use ohl::scenario;
+use ohl::scenario::{self, line};
 
-use super::Sweep;
-use super::table::{Row, Status, result_cells};
+use super::table::{Row, Status, line_result_cells, result_cells};
+use super::{Kind, Sweep};
 
 /// The scenario text of case `id`, or why its values do not fit.
 pub fn scenario_text(sweep: &Sweep, id: usize) -> Result<String, String> {
     let mut doc = sweep.base.clone();
-    for (field, value) in sweep.spec.fields().zip(sweep.spec.case(id)) {
+    for ((field, place), value) in sweep.spec.fields().zip(&sweep.places).zip(sweep.spec.case(id)) {
         if let Some(v) = value {
-            super::overrides::apply(&mut doc, field, v).map_err(|e| e.to_string())?;
+            // The place (a name resolved in the base file), named in messages as written.
+            super::overrides::apply(&mut doc, place, v).map_err(|e| e.named(field).to_string())?;
         }
     }
     toml::to_string(&doc).map_err(|e| format!("the scenario cannot be written as TOML: {e}"))
@@ -62,6 +64,9 @@ fn run_into(sweep: &Sweep, id: usize, keep: Option<&Path>, row: &mut Row) {
         }
     }
     let file = format!("case {id}");
+    if let Kind::Line { conductors } = &sweep.kind {
+        return run_line_into(sweep, &text, &file, conductors, dir.as_deref(), row);
+    }
     let plan = match scenario::parse(&text, &file).and_then(|sc| scenario::plan(&sc, &file)) {
         Ok(p) => p,
         Err(e) => {
@@ -93,6 +98,47 @@ fn run_into(sweep: &Sweep, id: usize, keep: Option<&Path>, row: &mut Row) {
         row.reason = "reached duration.until_settled.max_time_s before the wire settled".into();
     }
     row.results = Some(result_cells(&summary));
+    row.loop_timing = Some((summary.wall_time_s, summary.node_steps_per_second));
+}
+
+/// [`run_into`] for a line: parse, validate and plan it as `ohl run` does, check the line's work budget, run
+/// it (into `dir` with `--keep-runs`) and fill the row from its summary.
+fn run_line_into(sweep: &Sweep, text: &str, file: &str, conductors: &[String], dir: Option<&Path>, row: &mut Row) {
+    let plan = match line::parse(text, file).and_then(|s| line::plan(&s, file)) {
+        Ok(p) => p,
+        Err(e) => {
+            row.reason = input_reason(e);
+            return;
+        }
+    };
+    let warnings = plan
+        .plans
+        .iter()
+        .zip(plan.line.names())
+        .flat_map(|(p, name)| p.warnings.iter().map(move |w| format!("{name}: {w}")));
+    row.warnings = warnings.collect::<Vec<_>>().join("; ");
+    let estimate = LineWorkEstimate::of(&plan);
+    let checked = if sweep.allow_large { estimate.check_resolvable() } else { estimate.check() };
+    if let Err(refusal) = checked {
+        (row.status, row.reason) = (Status::Refused, refusal.to_string());
+        return;
+    }
+    let summary = match run_line(plan, dir) {
+        Ok(o) => o.summary,
+        Err(LineRunError::Unstable { instability, outcome }) => {
+            row.reason = instability.to_string();
+            outcome.summary
+        }
+        Err(e @ LineRunError::Io(_)) => {
+            (row.status, row.reason) = (Status::Failed, e.to_string());
+            return;
+        }
+    };
+    row.status = Status::of_summary(&summary.status);
+    if row.status == Status::NotSettled {
+        row.reason = "reached duration.until_settled.max_time_s before every conductor settled".into();
+    }
+    row.results = Some(line_result_cells(&summary, conductors));
     row.loop_timing = Some((summary.wall_time_s, summary.node_steps_per_second));
 }
 

@@ -97,7 +97,8 @@ pub fn run_sweep(
     let stem = stem(opts.shard);
     let table_path = opts.out.join(format!("{stem}.csv"));
     let fields: Vec<String> = sweep.spec.fields().map(|f| f.to_string()).collect();
-    table::write(&table_path, &table::header(&fields), rows.iter().map(table::cells))
+    let results = sweep.result_columns();
+    table::write(&table_path, &table::header(&fields, &results), rows.iter().map(|r| table::cells(r, results.len())))
         .map_err(write_err(&table_path))?;
     let cases_per_second = if wall_time_s > 0.0 { rows.len() as f64 / wall_time_s } else { 0.0 };
     let (base_fnv1a64, spec_fnv1a64) = sweep.fingerprints();

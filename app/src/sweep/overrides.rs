@@ -7,10 +7,11 @@
 //! table is replaced by a TOML literal (`[0.0, 150.0, 0.0]`, in a cases file cell in double quotes); one
 //! component is simpler to vary by its index (`geometry.right_support_m[1]`).
 //!
-//! Every table and array on the way to the field must be in the base file, and an index must be within its
-//! array; only the last key may be missing, and its value's type is then read from the text (a whole
-//! number, a number, `true`/`false`, a TOML array or inline table, otherwise text). Such a field is checked
-//! once before the sweep: a key that the scenario format does not know is refused then ([`super::Sweep`]).
+//! Every table and array on the way to the field must be in the base file, an index must be within its
+//! array and a name (`[name=A]`) must name one of its tables; only the last key may be missing, and its
+//! value's type is then read from the text (a whole number, a number, `true`/`false`, a TOML array or
+//! inline table, otherwise text). Such a field is checked once before the sweep: a key that the scenario
+//! format does not know is refused then ([`super::Sweep`]).
 
 use toml::{Table, Value};
 
@@ -49,6 +50,17 @@ pub enum OverrideError {
     Value(#[from] ValueError),
 }
 
+impl OverrideError {
+    /// The same error about the field as written `field` (a path with names, where the error was found at
+    /// the place it resolves to).
+    pub fn named(self, field: &FieldPath) -> OverrideError {
+        match self {
+            OverrideError::Path(e) => OverrideError::Path(PathError { field: field.to_string(), ..e }),
+            OverrideError::Value(e) => OverrideError::Value(ValueError { field: field.to_string(), ..e }),
+        }
+    }
+}
+
 /// What a value is, in the words of the scenario reference.
 fn kind(v: &Value) -> &'static str {
     match v {
@@ -80,11 +92,61 @@ fn parent<'a>(root: &'a mut Value, path: &FieldPath) -> Result<&'a mut Value, Pa
                 let n = a.len();
                 a.get_mut(*i).ok_or_else(|| fail(index_reason(&here, *i, n)))?
             }
+            (Step::Name(name), Value::Array(a)) => {
+                let i = named(a, name, &here).map_err(fail)?;
+                &mut a[i]
+            }
             (Step::Key(_), other) => return Err(fail(format!("`{here}` is {}, not a table", kind(other)))),
-            (Step::Index(_), other) => return Err(fail(format!("`{here}` is {}, not an array", kind(other)))),
+            (_, other) => return Err(fail(format!("`{here}` is {}, not an array", kind(other)))),
         };
     }
     Ok(v)
+}
+
+/// The index of the table of `array` (at the path `at`) whose `name` is `name`, or why there is none.
+fn named(array: &[Value], name: &str, at: &str) -> Result<usize, String> {
+    let name_of = |v: &Value| v.as_table().and_then(|t| t.get("name")).and_then(Value::as_str).map(str::to_string);
+    let found: Vec<usize> = (0..array.len()).filter(|&i| name_of(&array[i]).as_deref() == Some(name)).collect();
+    match found[..] {
+        [i] => Ok(i),
+        [] => {
+            let names: Vec<String> = array.iter().filter_map(name_of).map(|n| format!("{n:?}")).collect();
+            let held = if names.is_empty() {
+                "none of its entries has a `name`".to_string()
+            } else {
+                format!("its names in the base file are {}", names.join(", "))
+            };
+            Err(format!("no entry of `{at}` is named {name:?}: {held}"))
+        }
+        _ => Err(format!("{} entries of `{at}` are named {name:?}: select one by its index", found.len())),
+    }
+}
+
+/// `path` with every name (`[name=A]`) replaced by the index of the table it names in `doc`: the place a
+/// path names, whatever its form (two paths of the same place are the same field).
+pub fn resolve(doc: &Table, path: &FieldPath) -> Result<FieldPath, PathError> {
+    let fail = |reason: String| PathError { field: path.to_string(), reason };
+    let mut steps = Vec::with_capacity(path.steps.len());
+    let root = Value::Table(doc.clone());
+    let mut at = Some(&root);
+    for (k, step) in path.steps.iter().enumerate() {
+        let here = path.prefix(k);
+        let resolved = match (step, at) {
+            (Step::Name(name), Some(Value::Array(a))) => Step::Index(named(a, name, &here).map_err(fail)?),
+            (Step::Name(_), Some(other)) => {
+                return Err(fail(format!("`{here}` is {}, not an array", kind(other))));
+            }
+            (Step::Name(_), None) => return Err(fail(format!("the base file has no `{here}`"))),
+            (other, _) => other.clone(),
+        };
+        at = match (&resolved, at) {
+            (Step::Key(key), Some(Value::Table(t))) => t.get(key),
+            (Step::Index(i), Some(Value::Array(a))) => a.get(*i),
+            _ => None,
+        };
+        steps.push(resolved);
+    }
+    Ok(FieldPath { steps })
 }
 
 fn index_reason(array: &str, i: usize, n: usize) -> String {
@@ -108,8 +170,9 @@ pub fn existing(doc: &Table, path: &FieldPath) -> Result<Option<Value>, PathErro
         (Step::Index(i), Value::Array(a)) => {
             a.get(*i).cloned().map(Some).ok_or_else(|| fail(index_reason(&path.prefix(n - 1), *i, a.len())))
         }
+        (Step::Name(name), Value::Array(a)) => Ok(Some(a[named(a, name, &path.prefix(n - 1)).map_err(fail)?].clone())),
         (Step::Key(_), other) => Err(fail(format!("`{}` is {}, not a table", path.prefix(n - 1), kind(other)))),
-        (Step::Index(_), other) => Err(fail(format!("`{}` is {}, not an array", path.prefix(n - 1), kind(other)))),
+        (_, other) => Err(fail(format!("`{}` is {}, not an array", path.prefix(n - 1), kind(other)))),
     }
 }
 
@@ -137,10 +200,14 @@ fn set(root: &mut Value, path: &FieldPath, text: &str) -> Result<(), OverrideErr
             let len = a.len();
             a.get_mut(*i).ok_or_else(|| fail(index_reason(&path.prefix(n - 1), *i, len)))?
         }
+        (Step::Name(name), Value::Array(a)) => {
+            let i = named(a, name, &path.prefix(n - 1)).map_err(fail)?;
+            &mut a[i]
+        }
         (Step::Key(_), other) => {
             return Err(fail(format!("`{}` is {}, not a table", path.prefix(n - 1), kind(other))).into());
         }
-        (Step::Index(_), other) => {
+        (_, other) => {
             return Err(fail(format!("`{}` is {}, not an array", path.prefix(n - 1), kind(other))).into());
         }
     };
@@ -265,11 +332,59 @@ action = "break"
             assert!(e.to_string().contains(reason), "{field}: {e}");
             assert!(matches!(set_to(field, "1"), Err(OverrideError::Path(_))), "{field}");
         }
+        // a name must name exactly one table of its array
+        for (field, reason) in [
+            ("events[name=x].time_s", "no entry of `events` is named \"x\": none of its entries has a `name`"),
+            ("geometry[name=x]", "`geometry` is a table, not an array"),
+        ] {
+            let e = existing(&doc(), &p(field)).unwrap_err();
+            assert!(e.to_string().contains(reason), "{field}: {e}");
+            assert!(matches!(set_to(field, "1"), Err(OverrideError::Path(_))), "{field}");
+        }
         // a missing last key is allowed; its type is read from the text
         assert_eq!(existing(&doc(), &p("loads.wind.air_density_kg_per_m3")).unwrap(), None);
         let d = set_to("loads.wind.air_density_kg_per_m3", "1.2").unwrap();
         assert_eq!(at(&d, "loads.wind.air_density_kg_per_m3"), Value::Float(1.2));
         let d = set_to("geometry.tension_law", "linear").unwrap();
         assert_eq!(at(&d, "geometry.tension_law"), Value::String("linear".into()));
+    }
+
+    const NAMED: &str = r#"
+[line]
+towers = [{ name = "T2", position_m = [0.0, 400.0, 30.0] }]
+[[line.conductors]]
+name = "A"
+section = { segments_per_span = 10 }
+[[line.conductors]]
+name = "earth wire"
+section = { segments_per_span = 12 }
+[[line.conductors]]
+name = "twin"
+section = { segments_per_span = 12 }
+[[line.conductors]]
+name = "twin"
+"#;
+
+    #[test]
+    fn names_select_a_table_of_an_array() {
+        let mut d: Table = NAMED.parse().unwrap();
+        let field = p("line.conductors[name=earth wire].section.segments_per_span");
+        assert_eq!(existing(&d, &field).unwrap(), Some(Value::Integer(12)));
+        assert_eq!(resolve(&d, &field).unwrap(), p("line.conductors[1].section.segments_per_span"));
+        apply(&mut d, &field, "16").unwrap();
+        assert_eq!(existing(&d, &p("line.conductors[1].section.segments_per_span")).unwrap(), Some(Value::Integer(16)));
+        assert_eq!(resolve(&d, &p("line.towers[name=T2].position_m[1]")).unwrap(), p("line.towers[0].position_m[1]"));
+        // an index path resolves to itself
+        assert_eq!(resolve(&d, &p("line.conductors[0].name")).unwrap(), p("line.conductors[0].name"));
+        let e = existing(&d, &p("line.conductors[name=B].section")).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "field `line.conductors[name=B].section`: no entry of `line.conductors` is named \"B\": its names in \
+             the base file are \"A\", \"earth wire\", \"twin\", \"twin\""
+        );
+        let e = resolve(&d, &p("line.conductors[name=twin].section")).unwrap_err();
+        assert!(e.reason.contains("2 entries of `line.conductors` are named \"twin\""), "{e}");
+        let e = resolve(&d, &p("line.towers[0].name[name=x]")).unwrap_err();
+        assert!(e.reason.contains("`line.towers[0].name` is text, not an array"), "{e}");
     }
 }

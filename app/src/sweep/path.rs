@@ -5,6 +5,12 @@
 //! `geometry.right_support_m[1]` (the second component of an array), `section.supports[1].pivot_m[2]`.
 //! Inline tables are tables (`duration.until_settled.max_time_s`). Keys are bare TOML keys (letters,
 //! digits, `_` and `-`).
+//!
+//! In an array of tables that have a `name` (a line's `line.conductors` and `line.towers`, the probes of
+//! `output.probes`), `[name=NAME]` selects the table with that name instead of an index:
+//! `line.conductors[name=A].section.tension_fraction_of_rts` is `line.conductors[0]...` when the first
+//! conductor is `A`. NAME is the text as written in the file, without quotes (spaces and dots included); it
+//! cannot contain `]` (such a table is selected by its index).
 
 use std::fmt;
 
@@ -15,6 +21,8 @@ pub enum Step {
     Key(String),
     /// a 0-based index into an array (of values or of tables)
     Index(usize),
+    /// the table of an array of tables whose `name` is this text (`[name=A]`)
+    Name(String),
 }
 
 /// A path into the scenario document ([module docs](self)).
@@ -34,8 +42,9 @@ pub struct PathSyntaxError {
     pub reason: String,
 }
 
-const FORM: &str = "a path is keys separated by dots, each optionally followed by 0-based indices, e.g. \
-                    `loads.wind.speed_m_per_s`, `events[2].time_s`, `geometry.right_support_m[1]`";
+const FORM: &str = "a path is keys separated by dots, each optionally followed by 0-based indices or a name in \
+                    brackets, e.g. `loads.wind.speed_m_per_s`, `events[2].time_s`, `geometry.right_support_m[1]`, \
+                    `line.conductors[name=A].section.tension_fraction_of_rts`";
 
 impl FieldPath {
     /// Parse a path ([module docs](self)).
@@ -45,8 +54,12 @@ impl FieldPath {
             return Err(fail("empty".into()));
         }
         let mut steps = Vec::new();
-        for part in text.split('.') {
-            let (key, mut rest) = part.split_at(part.find('[').unwrap_or(part.len()));
+        let mut rest = text;
+        loop {
+            // A key, up to the next dot or bracket.
+            let end = rest.find(['.', '[']).unwrap_or(rest.len());
+            let key = &rest[..end];
+            let part = &rest[..rest[end..].find('.').map_or(rest.len(), |d| end + d)];
             if key.is_empty() {
                 return Err(fail(format!("missing key in {part:?}")));
             }
@@ -54,18 +67,19 @@ impl FieldPath {
                 return Err(fail(format!("{c:?} cannot be part of a key")));
             }
             steps.push(Step::Key(key.to_string()));
-            while !rest.is_empty() {
-                let Some(close) = rest.find(']').filter(|_| rest.starts_with('[')) else {
+            rest = &rest[end..];
+            // Its indices or names, each in brackets.
+            while rest.starts_with('[') {
+                let Some(close) = rest.find(']') else {
                     return Err(fail(format!("{rest:?} is not an index in brackets")));
                 };
-                let digits = &rest[1..close];
-                let index = digits
-                    .parse::<usize>()
-                    .ok()
-                    .filter(|_| digits.bytes().all(|b| b.is_ascii_digit()))
-                    .ok_or_else(|| fail(format!("index [{digits}] is not a whole number >= 0")))?;
-                steps.push(Step::Index(index));
+                steps.push(selector(&rest[1..close]).map_err(fail)?);
                 rest = &rest[close + 1..];
+            }
+            match rest.strip_prefix('.') {
+                Some(next) => rest = next,
+                None if rest.is_empty() => break,
+                None => return Err(fail(format!("{rest:?} is not an index in brackets"))),
             }
         }
         Ok(FieldPath { steps })
@@ -84,6 +98,19 @@ impl FieldPath {
     }
 }
 
+/// What is between brackets: a 0-based index, or `name=NAME`.
+fn selector(inside: &str) -> Result<Step, String> {
+    if let Some(name) = inside.strip_prefix("name=") {
+        return if name.is_empty() { Err("[name=] names nothing".into()) } else { Ok(Step::Name(name.to_string())) };
+    }
+    inside
+        .parse::<usize>()
+        .ok()
+        .filter(|_| inside.bytes().all(|b| b.is_ascii_digit()))
+        .map(Step::Index)
+        .ok_or_else(|| format!("index [{inside}] is not a whole number >= 0 (nor a name, [name=NAME])"))
+}
+
 impl fmt::Display for FieldPath {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         for (k, s) in self.steps.iter().enumerate() {
@@ -91,6 +118,7 @@ impl fmt::Display for FieldPath {
                 Step::Key(key) if k == 0 => write!(f, "{key}")?,
                 Step::Key(key) => write!(f, ".{key}")?,
                 Step::Index(i) => write!(f, "[{i}]")?,
+                Step::Name(name) => write!(f, "[name={name}]")?,
             }
         }
         Ok(())
@@ -103,11 +131,20 @@ mod tests {
 
     #[test]
     fn paths_parse_and_print_back() {
-        for text in ["loads.wind.speed_m_per_s", "events[2].time_s", "geometry.right_support_m[1]", "a[0][3].b-c"] {
+        for text in [
+            "loads.wind.speed_m_per_s",
+            "events[2].time_s",
+            "geometry.right_support_m[1]",
+            "a[0][3].b-c",
+            "line.conductors[name=earth wire.2].section.supports[1].pivot_m[2]",
+        ] {
             assert_eq!(FieldPath::parse(text).unwrap().to_string(), text);
         }
         let p = FieldPath::parse("events[2].time_s").unwrap();
         assert_eq!(p.steps, vec![Step::Key("events".into()), Step::Index(2), Step::Key("time_s".into())]);
+        let p = FieldPath::parse("line.conductors[name=A.b c].name").unwrap();
+        let key = |k: &str| Step::Key(k.into());
+        assert_eq!(p.steps, vec![key("line"), key("conductors"), Step::Name("A.b c".into()), key("name")]);
     }
 
     #[test]
@@ -121,6 +158,11 @@ mod tests {
             ("events[1", "not an index"),
             ("events[1]x", "not an index"),
             ("loads wind", "' ' cannot be part of a key"),
+            ("line.conductors[name=].x", "[name=] names nothing"),
+            ("line.conductors[nom=A].x", "index [nom=A]"),
+            ("line.conductors[name=A", "not an index"),
+            ("line.conductors[name=A]x", "not an index"),
+            ("a.", "missing key"),
         ] {
             let e = FieldPath::parse(text).unwrap_err();
             assert!(e.to_string().contains(reason), "{text:?}: {e}");

@@ -140,7 +140,18 @@ impl Spec {
 
 /// The axis of one `--vary FIELD=VALUES`.
 pub fn vary_axis(arg: &str) -> Result<Axis, SpecError> {
-    let (field, values) = arg.split_once('=').ok_or_else(|| SpecError::NoEquals(arg.to_string()))?;
+    // The first `=` outside brackets: a name in a path (`line.conductors[name=A].x=1,2`) has one of its own.
+    let mut depth = 0_i32;
+    let equals = arg.char_indices().find_map(|(i, c)| {
+        depth += match c {
+            '[' => 1,
+            ']' => -1,
+            _ => 0,
+        };
+        (c == '=' && depth <= 0).then_some(i)
+    });
+    let (field, values) =
+        equals.map(|i| (&arg[..i], &arg[i + 1..])).ok_or_else(|| SpecError::NoEquals(arg.to_string()))?;
     let path = FieldPath::parse(field.trim())?;
     let values = parse_values(field.trim(), values.trim())?;
     Ok(Axis {
@@ -210,6 +221,10 @@ mod tests {
         assert_eq!(all[3], [Some("2"), Some("10")]);
         assert_eq!(all[5], [Some("2"), Some("30")]);
         assert_eq!(s.fields().map(|f| f.to_string()).collect::<Vec<_>>(), ["a", "b.c"]);
+        // the `=` of a name in brackets is part of the path
+        let s = vary(&["line.conductors[name=A].section.segments_per_span=10,12"]).unwrap();
+        assert_eq!(s.fields().next().unwrap().to_string(), "line.conductors[name=A].section.segments_per_span");
+        assert_eq!(s.case(1), [Some("12")]);
     }
 
     #[test]

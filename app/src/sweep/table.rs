@@ -2,7 +2,9 @@
 //!
 //! Columns: `case` (the id, from 0), one column per varied field named by its path (the value as written;
 //! empty where a cases file left the base value), `status`, `reason`, then the scalar results of the run's
-//! summary ([`RESULT_COLUMNS`], units in the names), `warnings`, and last the timings ([`TIMING_COLUMNS`],
+//! summary ([`RESULT_COLUMNS`], units in the names; for a line, [`line_columns`]: each conductor's peaks
+//! prefixed by its name, the least clearance and the largest tower load), `warnings`, and last the timings
+//! ([`TIMING_COLUMNS`],
 //! which differ from run to run; every other column is the same for the same case on any thread count,
 //! shard or machine with the same build). Numbers are written in the shortest form that reads back to the
 //! same `f64` (ryu), so a table's values are bitwise those of the runs. A cell is empty where the run has
@@ -13,6 +15,7 @@ use std::io::Write;
 use std::path::Path;
 
 use ohl::output::Summary;
+use ohl::run::line::{ClearanceSummary, LineSummary, TowerSummary, slug};
 
 /// Status of a case.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
@@ -100,7 +103,7 @@ pub struct Row {
     pub status: Status,
     /// why it did not complete (empty when it did)
     pub reason: String,
-    /// the summary's values, one per [`RESULT_COLUMNS`] entry (none when the case did not run)
+    /// the summary's values, one per result column (none when the case did not run)
     pub results: Option<Vec<String>>,
     /// the plan's warnings (valid but doubtful values), `; `-separated
     pub warnings: String,
@@ -158,26 +161,112 @@ pub fn result_cells(s: &Summary) -> Vec<String> {
     cells
 }
 
-/// The header of a table varying `fields`.
-pub fn header(fields: &[String]) -> Vec<String> {
+/// A line's quantities per conductor, each column `NAME_QUANTITY` ([`line_columns`]).
+pub const LINE_CONDUCTOR_COLUMNS: [&str; 12] = [
+    "peak_max_tension_n",
+    "peak_max_tension_time_s",
+    "peak_mid_dx1_m",
+    "peak_mid_dx1_time_s",
+    "peak_mid_dx2_m",
+    "peak_mid_dx2_time_s",
+    "peak_mid_dx3_m",
+    "peak_mid_dx3_time_s",
+    "final_max_tension_n",
+    "final_mid_dx1_m",
+    "final_mid_dx2_m",
+    "final_mid_dx3_m",
+];
+
+/// The result columns of a line whose conductors (a bundle's sub-conductors each: `A.1`, `A.2`) are
+/// `conductors`: `final_time_s`, `steps`, `dt_s`; per conductor [`LINE_CONDUCTOR_COLUMNS`], each prefixed
+/// by the conductor's name as its output folder writes it (`earth wire` -> `earth_wire_peak_max_tension_n`);
+/// the least distance between any two conductor groups and when and which (`least_clearance_m`,
+/// `least_clearance_time_s`, `least_clearance_between`); the largest tower load and when and where
+/// (`peak_tower_force_n`, `peak_tower_force_time_s`, `peak_tower_force_tower`).
+pub fn line_columns(conductors: &[String]) -> Vec<String> {
+    let mut h: Vec<String> = ["final_time_s", "steps", "dt_s"].map(String::from).to_vec();
+    for c in conductors {
+        let c = slug(c);
+        h.extend(LINE_CONDUCTOR_COLUMNS.iter().map(|q| format!("{c}_{q}")));
+    }
+    h.extend(
+        [
+            "least_clearance_m",
+            "least_clearance_time_s",
+            "least_clearance_between",
+            "peak_tower_force_n",
+            "peak_tower_force_time_s",
+            "peak_tower_force_tower",
+        ]
+        .map(String::from),
+    );
+    h
+}
+
+/// The values of [`line_columns`] from a line run's summary (a conductor missing from it: empty cells).
+pub fn line_result_cells(s: &LineSummary, conductors: &[String]) -> Vec<String> {
+    let n = number;
+    let mut cells = vec![n(s.final_time_s), s.steps.to_string(), n(s.dt_s)];
+    for name in conductors {
+        match s.conductors.iter().find(|c| c.name == *name) {
+            Some(c) => {
+                let (p, d) = (&c.peak_midspan_displacement_m, &c.final_midspan_displacement_m);
+                cells.extend([n(c.peak_max_tension_n), n(c.peak_max_tension_time_s)]);
+                for k in 0..3 {
+                    cells.extend([n(p[k].value_m), n(p[k].time_s)]);
+                }
+                cells.extend([n(c.final_max_tension_n), n(d[0]), n(d[1]), n(d[2])]);
+            }
+            None => cells.extend(LINE_CONDUCTOR_COLUMNS.map(|_| String::new())),
+        }
+    }
+    // The least of the pairs' least distances, and the tower of the largest peak load (the first of equal
+    // ones).
+    let least = s.clearances.iter().fold(None, |best: Option<&ClearanceSummary>, c| match best {
+        Some(b) if c.least_m.partial_cmp(&b.least_m) != Some(std::cmp::Ordering::Less) => best,
+        _ => Some(c),
+    });
+    match least {
+        Some(c) => cells.extend([n(c.least_m), n(c.time_s), format!("{} - {}", c.between[0], c.between[1])]),
+        None => cells.extend(["", "", ""].map(String::from)),
+    }
+    let tower = s.towers.iter().fold(None, |best: Option<&TowerSummary>, t| match best {
+        Some(b)
+            if t.peak_force_magnitude_n.partial_cmp(&b.peak_force_magnitude_n) != Some(std::cmp::Ordering::Greater) =>
+        {
+            best
+        }
+        _ => Some(t),
+    });
+    match tower {
+        Some(t) => cells.extend([n(t.peak_force_magnitude_n), n(t.peak_force_time_s), t.name.clone()]),
+        None => cells.extend(["", "", ""].map(String::from)),
+    }
+    debug_assert_eq!(cells.len(), line_columns(conductors).len());
+    cells
+}
+
+/// The header of a table varying `fields`, with the result columns `results` ([`RESULT_COLUMNS`] for a
+/// single-conductor base, [`line_columns`] for a line).
+pub fn header(fields: &[String], results: &[String]) -> Vec<String> {
     let mut h = vec!["case".to_string()];
     h.extend(fields.iter().cloned());
     h.extend(["status", "reason"].map(String::from));
-    h.extend(RESULT_COLUMNS.map(String::from));
+    h.extend(results.iter().cloned());
     h.push("warnings".into());
     h.extend(TIMING_COLUMNS.map(String::from));
     h
 }
 
-/// The cells of a row, in [`header`] order.
-pub fn cells(row: &Row) -> Vec<String> {
+/// The cells of a row, in [`header`] order, with `results` result columns.
+pub fn cells(row: &Row, results: usize) -> Vec<String> {
     let mut c = vec![row.case.to_string()];
     c.extend(row.values.iter().cloned());
     c.push(row.status.as_str().into());
     c.push(row.reason.clone());
     match &row.results {
         Some(r) => c.extend(r.iter().cloned()),
-        None => c.extend(RESULT_COLUMNS.map(|_| String::new())),
+        None => c.extend((0..results).map(|_| String::new())),
     }
     c.push(row.warnings.clone());
     match row.loop_timing {
