@@ -12,9 +12,9 @@
 //! - [`pair`]: the least distance between two segments, the geometry of every pair element between two
 //!   conductors (clearances now; the electromagnetic forces of a short circuit next).
 //!
-//! Not yet elements: the single-conductor insulator string with its crossarm ([`crate::wire::insulator`],
-//! whose force and stiffness are written out by hand and checked against each other) and the ground
-//! contact of the node pass.
+//! The single-conductor insulator string ([`crate::wire::insulator`]) takes its force from the link
+//! element; its stiffness for the static solver is still written out by hand (checked against the force
+//! by finite differences), as are its crossarm spring and the ground contact of the node pass.
 
 pub mod aero;
 pub mod link;
