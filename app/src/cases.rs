@@ -169,7 +169,11 @@ pub fn run_case(path: &Path, out: &Path) -> Result<CaseOutcome, CaseError> {
     let sc = scenario::load(path)?;
     let plan = scenario::plan(&sc, &file)?;
     for w in &plan.warnings {
-        eprintln!("warning: {file}: {w}");
+        {
+            use std::io::Write as _;
+            // Dropped if stderr is closed, as every line of the `ohl` commands.
+            let _ = writeln!(std::io::stderr(), "warning: {file}: {w}");
+        }
     }
     let dir = out.join(&name);
     let o = run(plan, &RunOptions { out_dir: Some(dir.clone()), record: false }).map_err(Box::new)?;

@@ -54,14 +54,14 @@ fn replot(args: &BenchArgs, current: &std::path::Path) -> ExitCode {
     let (rows, label) = match labelled_rows(current) {
         Ok(x) => x,
         Err(e) => {
-            eprintln!("error: --replot: {e}");
+            err!("error: --replot: {e}");
             return ExitCode::from(2);
         }
     };
     let baseline = match args.baseline.as_deref().map(labelled_rows).transpose() {
         Ok(b) => b,
         Err(e) => {
-            eprintln!("error: --baseline: {e}");
+            err!("error: --baseline: {e}");
             return ExitCode::from(2);
         }
     };
@@ -69,11 +69,11 @@ fn replot(args: &BenchArgs, current: &std::path::Path) -> ExitCode {
     let base = baseline.as_ref().map(|(r, l)| (r.as_slice(), l.as_str()));
     match bench::plot_throughput(&rows, &label, base, &stem) {
         Ok(()) => {
-            println!("drawn {}.png and .svg from {}", stem.display(), current.display());
+            out!("drawn {}.png and .svg from {}", stem.display(), current.display());
             ExitCode::SUCCESS
         }
         Err(e) => {
-            eprintln!("error: {e}");
+            err!("error: {e}");
             ExitCode::from(1)
         }
     }
@@ -88,7 +88,7 @@ fn fixed(spec: &str) -> ExitCode {
     match parsed {
         Some(((c, n), steps)) if n >= 2 => {
             let s = bench::run_fixed_steps(c, n, steps);
-            println!(
+            out!(
                 "{} N = {n}: {} steps, t = {:.6e} s, x3[N/2] = {:.15e} m, state hash {:016x}",
                 c.name(),
                 s.steps(),
@@ -100,7 +100,7 @@ fn fixed(spec: &str) -> ExitCode {
         }
         _ => {
             let names: Vec<&str> = Config::ALL.iter().map(|c| c.name()).collect();
-            eprintln!(
+            err!(
                 "error: --fixed {spec}: expected CONFIG:N:STEPS with CONFIG one of {}, N >= 2 and STEPS >= 0",
                 names.join(", ")
             );
@@ -119,7 +119,7 @@ pub fn main(args: BenchArgs) -> ExitCode {
         return replot(&args, current);
     }
     if args.reps == 0 || args.node_steps.is_nan() || args.node_steps < 1.0e3 {
-        eprintln!("error: --reps must be >= 1 and --node-steps >= 1000 (got {} and {})", args.reps, args.node_steps);
+        err!("error: --reps must be >= 1 and --node-steps >= 1000 (got {} and {})", args.reps, args.node_steps);
         return ExitCode::from(2);
     }
     let (reps, node_steps) = if args.quick { (3, 2.0e6) } else { (args.reps, args.node_steps) };
@@ -129,26 +129,23 @@ pub fn main(args: BenchArgs) -> ExitCode {
         (false, "avx2") => "release, baseline build, kernel passes in their avx2 copies (runtime detected)",
         _ => "release, baseline build (sse2), kernel passes in their baseline copies",
     };
-    println!("ohl bench: {} ({build}), load {}, {}, git {}", machine.cpu, machine.load, machine.date, machine.git);
+    out!("ohl bench: {} ({build}), load {}, {}, git {}", machine.cpu, machine.load, machine.date, machine.git);
 
     let p = bench::measure_primitives();
-    println!(
+    out!(
         "core clock ~{:.2} GHz (dependent adds); sqrt {:.2} cycles/double, division {:.2} cycles/double (throughput, as compiled)",
         p.clock_hz * 1e-9,
         p.sqrt_cycles,
         p.div_cycles
     );
 
-    println!(
-        "\n{:<16} {:>6} {:>8} {:>14} {:>10} {:>8}  load",
-        "config", "N", "steps", "node-steps/s", "ns/node", "cycles"
-    );
+    out!("\n{:<16} {:>6} {:>8} {:>14} {:>10} {:>8}  load", "config", "N", "steps", "node-steps/s", "ns/node", "cycles");
     let mut rows = Vec::new();
     for c in Config::ALL {
         for n in bench::SIZES {
             let load = bench::load_average();
             let r = bench::measure_kernel(c, n, node_steps, reps);
-            println!(
+            out!(
                 "{:<16} {:>6} {:>8} {:>14.4e} {:>10.3} {:>8.1}  {load}",
                 r.config,
                 r.n,
@@ -167,7 +164,7 @@ pub fn main(args: BenchArgs) -> ExitCode {
     let mut failed = false;
     let kernel_csv = args.out.join(format!("{}.csv", args.label));
     if let Err(e) = bench::write_kernel_csv(&kernel_csv, &args.label, &machine, &rows, build) {
-        eprintln!("error: cannot write {}: {e}", kernel_csv.display());
+        err!("error: cannot write {}: {e}", kernel_csv.display());
         failed = true;
     }
     let prim_csv = args.out.join(format!("{}_primitives.csv", args.label));
@@ -176,22 +173,27 @@ pub fn main(args: BenchArgs) -> ExitCode {
         p.clock_hz, p.sqrt_cycles, p.div_cycles, machine.cpu, machine.load, machine.date
     );
     if let Err(e) = std::fs::write(&prim_csv, prim) {
-        eprintln!("error: cannot write {}: {e}", prim_csv.display());
+        err!("error: cannot write {}: {e}", prim_csv.display());
         failed = true;
     }
 
     if !args.no_run {
-        println!("\nohl run, weight release (section 4.2), 10 s simulated, Courant 0.9, a row every 0.05 s:");
-        println!(
+        out!("\nohl run, weight release (section 4.2), 10 s simulated, Courant 0.9, a row every 0.05 s:");
+        out!(
             "{:>5} {:>7} {:>12} {:>14} {:>10} {:>14}",
-            "N", "steps", "run wall [s]", "bare steps [s]", "overhead", "diagnostics [s]"
+            "N",
+            "steps",
+            "run wall [s]",
+            "bare steps [s]",
+            "overhead",
+            "diagnostics [s]"
         );
         let scratch = bench::scratch_dir();
         let mut timings = Vec::new();
         for n in bench::RUN_SIZES {
             match bench::measure_run(n, reps.min(5), &scratch) {
                 Ok(t) => {
-                    println!(
+                    out!(
                         "{:>5} {:>7} {:>12.4e} {:>14.4e} {:>9.1}% {:>7} x {:.2e}",
                         t.n,
                         t.steps,
@@ -204,7 +206,7 @@ pub fn main(args: BenchArgs) -> ExitCode {
                     timings.push(t);
                 }
                 Err(e) => {
-                    eprintln!("error: weight release N = {n}: {e}");
+                    err!("error: weight release N = {n}: {e}");
                     failed = true;
                 }
             }
@@ -212,7 +214,7 @@ pub fn main(args: BenchArgs) -> ExitCode {
         let _ = std::fs::remove_dir_all(&scratch);
         let run_csv = args.out.join(format!("{}_run.csv", args.label));
         if let Err(e) = bench::write_run_csv(&run_csv, &args.label, &machine, &timings) {
-            eprintln!("error: cannot write {}: {e}", run_csv.display());
+            err!("error: cannot write {}: {e}", run_csv.display());
             failed = true;
         }
     }
@@ -226,7 +228,7 @@ pub fn main(args: BenchArgs) -> ExitCode {
                 b.file_stem().map(|s| s.to_string_lossy().to_string()).unwrap_or_else(|| "baseline".into()),
             )),
             Err(e) => {
-                eprintln!("error: baseline: {e}");
+                err!("error: baseline: {e}");
                 return ExitCode::from(2);
             }
         },
@@ -235,9 +237,9 @@ pub fn main(args: BenchArgs) -> ExitCode {
     let stem = args.out.join("throughput");
     let base = baseline.as_ref().map(|(r, l)| (r.as_slice(), l.as_str()));
     match bench::plot_throughput(&current, &args.label, base, &stem) {
-        Ok(()) => println!("\nwritten to {} ({}.csv, throughput.png)", args.out.display(), args.label),
+        Ok(()) => out!("\nwritten to {} ({}.csv, throughput.png)", args.out.display(), args.label),
         Err(e) => {
-            eprintln!("error: {e}");
+            err!("error: {e}");
             failed = true;
         }
     }

@@ -33,14 +33,14 @@ pub fn main(args: CasesArgs) -> ExitCode {
         match ohl_app::paper::case_files(&args.cases) {
             Ok(v) if !v.is_empty() => v,
             _ => {
-                eprintln!("error: no case files (*.toml) in {}", args.cases.display());
+                err!("error: no case files (*.toml) in {}", args.cases.display());
                 return ExitCode::from(2);
             }
         }
     } else {
         let p = args.cases.join(format!("{}.toml", args.case));
         if !p.exists() {
-            eprintln!("error: no case `{}` ({} does not exist)", args.case, p.display());
+            err!("error: no case `{}` ({} does not exist)", args.case, p.display());
             return ExitCode::from(2);
         }
         vec![p]
@@ -49,18 +49,18 @@ pub fn main(args: CasesArgs) -> ExitCode {
     for p in &paths {
         if ohl_app::line_cases::is_line_case(p) {
             match ohl_app::line_cases::run_line_case(p, &args.out) {
-                Ok(c) => println!("{}", ohl_app::line_cases::format_line_table(&c)),
+                Ok(c) => out!("{}", ohl_app::line_cases::format_line_table(&c)),
                 Err(e) => {
-                    eprintln!("error: {e}");
+                    err!("error: {e}");
                     code = code.max(if matches!(e, CaseError::Input(_)) { 2 } else { 1 });
                 }
             }
             continue;
         }
         match cases::run_case(p, &args.out) {
-            Ok(c) => println!("{}", cases::format_table(&c)),
+            Ok(c) => out!("{}", cases::format_table(&c)),
             Err(e) => {
-                eprintln!("error: {e}");
+                err!("error: {e}");
                 code = code.max(if matches!(e, CaseError::Input(_)) { 2 } else { 1 });
             }
         }

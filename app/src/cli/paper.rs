@@ -41,11 +41,11 @@ pub fn main(args: PaperArgs) -> ExitCode {
         match paper::case_files(&args.cases) {
             Ok(v) if !v.is_empty() => v,
             Ok(_) => {
-                eprintln!("error: no case files (*.toml) in {}", args.cases.display());
+                err!("error: no case files (*.toml) in {}", args.cases.display());
                 return ExitCode::from(2);
             }
             Err(e) => {
-                eprintln!("error: cannot read {}: {e}", args.cases.display());
+                err!("error: cannot read {}: {e}", args.cases.display());
                 return ExitCode::from(2);
             }
         }
@@ -55,12 +55,7 @@ pub fn main(args: PaperArgs) -> ExitCode {
             let known = paper::case_files(&args.cases).unwrap_or_default();
             let names: Vec<String> =
                 known.iter().filter_map(|p| p.file_stem().and_then(|s| s.to_str()).map(String::from)).collect();
-            eprintln!(
-                "error: no case `{}` ({} does not exist); cases: {}, all",
-                args.case,
-                p.display(),
-                names.join(", ")
-            );
+            err!("error: no case `{}` ({} does not exist); cases: {}, all", args.case, p.display(), names.join(", "));
             return ExitCode::from(2);
         }
         vec![p]
@@ -73,31 +68,31 @@ pub fn main(args: PaperArgs) -> ExitCode {
     for r in results {
         match r {
             Ok(c) => {
-                println!("== {} (paper section {}): {}", c.name, c.section, c.title);
-                println!("   run {} in {:.2} s", c.status, c.wall_s);
+                out!("== {} (paper section {}): {}", c.name, c.section, c.title);
+                out!("   run {} in {:.2} s", c.status, c.wall_s);
                 if let Some(e) = &c.estimate {
-                    println!("   estimated before the run: {e}");
+                    out!("   estimated before the run: {e}");
                 }
                 for (t, e) in &c.events {
-                    println!("   event at t = {t:.3} s: {e}");
+                    out!("   event at t = {t:.3} s: {e}");
                 }
                 for n in &c.notes {
-                    println!("   note: {n}");
+                    out!("   note: {n}");
                 }
                 if let Some(f) = &c.figure {
-                    println!("   figure: {}.png, .svg; data: {}.csv", f.display(), f.display());
+                    out!("   figure: {}.png, .svg; data: {}.csv", f.display(), f.display());
                 }
                 rows.extend(c.rows);
             }
             Err(e) => {
-                eprintln!("error: {e}");
+                err!("error: {e}");
                 code = code.max(if matches!(e, PaperError::Input(_) | PaperError::NotACase(_)) { 2 } else { 1 });
             }
         }
     }
-    println!();
+    out!();
     let table = table::format(&rows);
-    print!("{table}");
+    out_text!("{table}");
     let missed = rows.iter().filter(|r| r.compare == CompareSpec::Match && !r.within_tolerance()).count();
     let summary = format!(
         "{} values checked, {} equilibria/exact values not reproduced; wall time {:.2} s",
@@ -105,7 +100,7 @@ pub fn main(args: PaperArgs) -> ExitCode {
         missed,
         started.elapsed().as_secs_f64()
     );
-    println!("\n{summary}");
+    out!("\n{summary}");
     // `all` also keeps the table, stamped, beside the figures.
     if args.case == "all" {
         let path = args.out.join("paper_table.md");
@@ -113,9 +108,9 @@ pub fn main(args: PaperArgs) -> ExitCode {
             "# The paper's values against this code\n\nWritten by `ohl paper all`. {stamp}\n\n{table}\n{summary}\n"
         );
         match std::fs::write(&path, text) {
-            Ok(()) => println!("table written to {}", path.display()),
+            Ok(()) => out!("table written to {}", path.display()),
             Err(e) => {
-                eprintln!("error: cannot write {}: {e}", path.display());
+                err!("error: cannot write {}: {e}", path.display());
                 code = code.max(1);
             }
         }

@@ -34,18 +34,18 @@ pub fn main(args: PlotArgs) -> ExitCode {
     match plot_run(&run_dir, &PlotOptions { out, from_s: from, to_s: to }) {
         Ok(report) => {
             for n in &report.notes {
-                eprintln!("note: {n}");
+                err!("note: {n}");
             }
             if !quiet {
-                println!("{}: {} files written", run_dir.display(), report.files.len());
+                out!("{}: {} files written", run_dir.display(), report.files.len());
                 for f in &report.files {
-                    println!("  {}", f.display());
+                    out!("  {}", f.display());
                 }
             }
             ExitCode::SUCCESS
         }
         Err(e) => {
-            eprintln!("error: {e}");
+            err!("error: {e}");
             ExitCode::from(e.exit_code())
         }
     }

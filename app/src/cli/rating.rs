@@ -28,36 +28,36 @@ pub fn main(args: RatingArgs) -> ExitCode {
     let s = match scenario::load(&args.scenario) {
         Ok(s) => s,
         Err(e) => {
-            eprintln!("error: {e}");
+            err!("error: {e}");
             return ExitCode::from(2);
         }
     };
     let r = match rate(&s, &file) {
         Ok(r) => r,
         Err(RatingError::Input(e)) => {
-            eprintln!("error: {e}");
+            err!("error: {e}");
             return ExitCode::from(2);
         }
         Err(e) => {
-            eprintln!("error: {file}: {e}");
+            err!("error: {file}: {e}");
             return ExitCode::from(1);
         }
     };
     let name = s.name.clone().unwrap_or_else(|| "rating".into());
     let unit = if r.quantity == "clearance" { "least clearance" } else { "largest sag" };
-    println!("{name}: rating by {} (limit {} m)", r.quantity, r.limit_m);
-    println!("  {unit} at the air temperature: {:.3} m", r.at_air_m);
+    out!("{name}: rating by {} (limit {} m)", r.quantity, r.limit_m);
+    out!("  {unit} at the air temperature: {:.3} m", r.at_air_m);
     match r.limit_temperature_k {
-        Some(t) => println!("  the limit is reached at a conductor temperature of {:.3} C", t - C),
-        None => println!("  the limit is not reached below the maximum temperature"),
+        Some(t) => out!("  the limit is reached at a conductor temperature of {:.3} C", t - C),
+        None => out!("  the limit is not reached below the maximum temperature"),
     }
     if let Some(a) = r.clearance_ampacity_a {
-        println!("  steady ampacity for the {}: {a:.1} A", r.quantity);
+        out!("  steady ampacity for the {}: {a:.1} A", r.quantity);
     }
     if let Some(a) = r.temperature_ampacity_a {
-        println!("  steady ampacity for the maximum temperature: {a:.1} A");
+        out!("  steady ampacity for the maximum temperature: {a:.1} A");
     }
-    println!(
+    out!(
         "  rating: {:.1} A (governing temperature {:.3} C, {unit} there {:.3} m; {} static solves)",
         r.rating_a,
         r.governing_temperature_k - C,
@@ -66,13 +66,13 @@ pub fn main(args: RatingArgs) -> ExitCode {
     );
     if let Some((from, to, start, when)) = r.step {
         match when {
-            Some(t) => println!(
+            Some(t) => out!(
                 "  after a step {from} A -> {to} A (from {:.2} C): reaches {:.2} C after {t:.0} s ({:.1} min)",
                 start - C,
                 r.governing_temperature_k - C,
                 t / 60.0
             ),
-            None => println!("  after a step {from} A -> {to} A: does not reach the limit within 24 h"),
+            None => out!("  after a step {from} A -> {to} A: does not reach the limit within 24 h"),
         }
     }
     let doc = json!({
@@ -86,9 +86,9 @@ pub fn main(args: RatingArgs) -> ExitCode {
     if let Err(e) = std::fs::create_dir_all(&args.out).and_then(|_| {
         std::fs::write(args.out.join("rating.json"), serde_json::to_string_pretty(&doc).unwrap_or_default())
     }) {
-        eprintln!("error: {}: {e}", args.out.display());
+        err!("error: {}: {e}", args.out.display());
         return ExitCode::from(1);
     }
-    println!("  written to {}", args.out.display());
+    out!("  written to {}", args.out.display());
     ExitCode::SUCCESS
 }

@@ -42,7 +42,7 @@ const ANNOUNCE_NODE_STEPS: f64 = 1.0e9;
 pub fn main(args: RunArgs) -> ExitCode {
     let RunArgs { scenario: path, out, quiet, dry_run, allow_large } = args;
     if let Some(message) = heat_case_refusal(&path) {
-        eprintln!("error: {}: {message}", path.display());
+        err!("error: {}: {message}", path.display());
         return ExitCode::from(2);
     }
     if std::fs::read_to_string(&path).is_ok_and(|t| scenario::line::is_line(&t)) {
@@ -51,12 +51,12 @@ pub fn main(args: RunArgs) -> ExitCode {
     let plan = match scenario::load(&path).and_then(|sc| scenario::plan(&sc, &path.display().to_string())) {
         Ok(p) => p,
         Err(e) => {
-            eprintln!("error: {e}");
+            err!("error: {e}");
             return ExitCode::from(2);
         }
     };
     for w in &plan.warnings {
-        eprintln!("warning: {}: {w}", path.display());
+        err!("warning: {}: {w}", path.display());
     }
     let estimate = plan.work_estimate();
     if dry_run {
@@ -65,14 +65,14 @@ pub fn main(args: RunArgs) -> ExitCode {
     }
     let checked = if allow_large { estimate.check_resolvable() } else { estimate.check() };
     if let Err(refusal) = checked {
-        eprintln!("error: {}: {refusal}", path.display());
+        err!("error: {}: {refusal}", path.display());
         return ExitCode::from(2);
     }
     let opts = RunOptions { out_dir: Some(out.clone()), record: false };
     let mut bar = Bar::for_plan(&plan);
     // No bar: stderr is not a terminal (a script, a log file).
     if bar.is_none() && estimate.work_node_steps() > ANNOUNCE_NODE_STEPS {
-        eprintln!("running: {:.0} steps, about {:.0} s", estimate.steps, estimate.wall_time_s());
+        err!("running: {:.0} steps, about {:.0} s", estimate.steps, estimate.wall_time_s());
     }
     let mut extra: Vec<&mut dyn ohl::run::Observer> =
         bar.iter_mut().map(|b| b as &mut dyn ohl::run::Observer).collect();
@@ -81,25 +81,31 @@ pub fn main(args: RunArgs) -> ExitCode {
             if !quiet {
                 let s = &o.summary;
                 let d = s.final_midspan_displacement_m;
-                println!(
+                out!(
                     "{}: {} at t = {:.4} s (tau = {:.4}) after {} steps of {:.4e} s",
-                    s.name, s.status, s.final_time_s, s.final_tau, s.steps, s.dt_s
+                    s.name,
+                    s.status,
+                    s.final_time_s,
+                    s.final_tau,
+                    s.steps,
+                    s.dt_s
                 );
-                println!("  mid-span displacement [m]: x1 = {:.6}, x2 = {:.6}, x3 = {:.6}", d[0], d[1], d[2]);
-                println!(
+                out!("  mid-span displacement [m]: x1 = {:.6}, x2 = {:.6}, x3 = {:.6}", d[0], d[1], d[2]);
+                out!(
                     "  max tension: {:.2} N; throughput {:.3e} node-steps/s",
-                    s.final_max_tension_n, s.node_steps_per_second
+                    s.final_max_tension_n,
+                    s.node_steps_per_second
                 );
-                println!("  written to {}", out.display());
+                out!("  written to {}", out.display());
             }
             ExitCode::SUCCESS
         }
         Err(RunError::Unstable { instability, .. }) => {
-            eprintln!("error: {}: {instability}; output so far is in {}", path.display(), out.display());
+            err!("error: {}: {instability}; output so far is in {}", path.display(), out.display());
             ExitCode::from(1)
         }
         Err(e) => {
-            eprintln!("error: {e}");
+            err!("error: {e}");
             ExitCode::from(1)
         }
     }
@@ -109,20 +115,17 @@ pub fn main(args: RunArgs) -> ExitCode {
 fn print_estimate(name: &str, e: &WorkEstimate) {
     use ohl::scenario::work::{BUDGET_NODE_STEPS, BUDGET_OUTPUT_BYTES, THROUGHPUT_NODE_STEPS_PER_S};
     let within = if e.check().is_ok() { "within the budget" } else { "ABOVE the budget: needs --allow-large" };
-    println!("{name}: dry run, nothing run ({within})");
-    println!("  segments: {}, time step: {:.6e} s, end (or time cap): {} s", e.segments, e.dt_s, e.horizon_s);
-    println!("  steps: {:.6e}", e.steps);
-    println!("  node-steps: {:.6e} (budget {BUDGET_NODE_STEPS:.1e})", e.node_steps);
+    out!("{name}: dry run, nothing run ({within})");
+    out!("  segments: {}, time step: {:.6e} s, end (or time cap): {} s", e.segments, e.dt_s, e.horizon_s);
+    out!("  steps: {:.6e}", e.steps);
+    out!("  node-steps: {:.6e} (budget {BUDGET_NODE_STEPS:.1e})", e.node_steps);
     if e.heat_substeps > 0.0 {
-        println!("  heat conduction: {:.6e} sub-steps, {:.6e} node updates", e.heat_substeps, e.heat_node_updates);
+        out!("  heat conduction: {:.6e} sub-steps, {:.6e} node updates", e.heat_substeps, e.heat_node_updates);
     }
-    println!("  timeseries.csv: {:.6e} rows of {} numbers", e.timeseries_rows, e.timeseries_columns);
-    println!("  snapshots.csv: {:.6e} rows", e.snapshot_rows);
-    println!("  output: at most {:.3e} bytes (budget {BUDGET_OUTPUT_BYTES:.1e})", e.output_bytes);
-    println!(
-        "  wall time: about {:.3e} s at {THROUGHPUT_NODE_STEPS_PER_S:.1e} node-steps/s (one core)",
-        e.wall_time_s()
-    );
+    out!("  timeseries.csv: {:.6e} rows of {} numbers", e.timeseries_rows, e.timeseries_columns);
+    out!("  snapshots.csv: {:.6e} rows", e.snapshot_rows);
+    out!("  output: at most {:.3e} bytes (budget {BUDGET_OUTPUT_BYTES:.1e})", e.output_bytes);
+    out!("  wall time: about {:.3e} s at {THROUGHPUT_NODE_STEPS_PER_S:.1e} node-steps/s (one core)", e.wall_time_s());
 }
 
 /// A heat-conduction case (a file with a `[rod]` section) is not a wire scenario: the message points to
@@ -146,30 +149,30 @@ fn run_line(path: &std::path::Path, out: &std::path::Path, quiet: bool, dry_run:
     {
         Ok(p) => p,
         Err(e) => {
-            eprintln!("error: {e}");
+            err!("error: {e}");
             return ExitCode::from(2);
         }
     };
     for (p, name) in plan.plans.iter().zip(plan.line.names()) {
         for w in &p.warnings {
-            eprintln!("warning: {file}: {name}: {w}");
+            err!("warning: {file}: {name}: {w}");
         }
     }
     let work = LineWorkEstimate::of(&plan);
     if let Err(refusal) = work.check_resolvable() {
-        eprintln!("error: {file}: {refusal}");
+        err!("error: {file}: {refusal}");
         return ExitCode::from(2);
     }
     if dry_run {
-        println!("{}: dry run, nothing run", plan.name);
-        println!("  conductors: {}, nodes: {}, time step: {:.6e} s", work.conductors, work.nodes, work.dt_s);
-        println!("  steps: {:.6e}, node-steps: {:.6e} (budget {BUDGET_NODE_STEPS:.1e})", work.steps, work.node_steps);
-        println!("  output: at most {:.3e} bytes (budget {BUDGET_OUTPUT_BYTES:.1e})", work.output_bytes);
-        println!("  wall time: about {:.3e} s at {THROUGHPUT_NODE_STEPS_PER_S:.1e} node-steps/s", work.wall_time_s());
+        out!("{}: dry run, nothing run", plan.name);
+        out!("  conductors: {}, nodes: {}, time step: {:.6e} s", work.conductors, work.nodes, work.dt_s);
+        out!("  steps: {:.6e}, node-steps: {:.6e} (budget {BUDGET_NODE_STEPS:.1e})", work.steps, work.node_steps);
+        out!("  output: at most {:.3e} bytes (budget {BUDGET_OUTPUT_BYTES:.1e})", work.output_bytes);
+        out!("  wall time: about {:.3e} s at {THROUGHPUT_NODE_STEPS_PER_S:.1e} node-steps/s", work.wall_time_s());
         return ExitCode::SUCCESS;
     }
     if !allow_large && let Err(refusal) = work.check() {
-        eprintln!("error: {file}: {refusal}");
+        err!("error: {file}: {refusal}");
         return ExitCode::from(2);
     }
     match run_line(plan, Some(out)) {
@@ -180,11 +183,11 @@ fn run_line(path: &std::path::Path, out: &std::path::Path, quiet: bool, dry_run:
             ExitCode::SUCCESS
         }
         Err(LineRunError::Unstable { instability, .. }) => {
-            eprintln!("error: {file}: {instability}; output so far is in {}", out.display());
+            err!("error: {file}: {instability}; output so far is in {}", out.display());
             ExitCode::from(1)
         }
         Err(e) => {
-            eprintln!("error: {e}");
+            err!("error: {e}");
             ExitCode::from(1)
         }
     }
@@ -192,15 +195,19 @@ fn run_line(path: &std::path::Path, out: &std::path::Path, quiet: bool, dry_run:
 
 /// The summary of a line run, a few lines per conductor, pair and tower.
 fn print_line_summary(s: &ohl::run::line::LineSummary, out: &std::path::Path) {
-    println!("{}: {} at t = {:.4} s after {} steps of {:.4e} s", s.name, s.status, s.final_time_s, s.steps, s.dt_s);
+    out!("{}: {} at t = {:.4} s after {} steps of {:.4e} s", s.name, s.status, s.final_time_s, s.steps, s.dt_s);
     for c in &s.conductors {
-        println!(
+        out!(
             "  {} ({}): peak tension {:.1} N at {:.3} s, final {:.1} N",
-            c.name, c.role, c.peak_max_tension_n, c.peak_max_tension_time_s, c.final_max_tension_n
+            c.name,
+            c.role,
+            c.peak_max_tension_n,
+            c.peak_max_tension_time_s,
+            c.final_max_tension_n
         );
     }
     for c in &s.clearances {
-        println!(
+        out!(
             "  clearance {} - {}: least {:.3} m at {:.3} s ({} at {:.3}, {} at {:.3} of their lengths); initial {:.3} m, final {:.3} m",
             c.between[0],
             c.between[1],
@@ -216,16 +223,26 @@ fn print_line_summary(s: &ohl::run::line::LineSummary, out: &std::path::Path) {
     }
     for t in &s.towers {
         let f = t.final_force_n;
-        println!(
+        out!(
             "  tower {}: peak |F| {:.1} N at {:.3} s; final F = [{:.1}, {:.1}, {:.1}] N",
-            t.name, t.peak_force_magnitude_n, t.peak_force_time_s, f[0], f[1], f[2]
+            t.name,
+            t.peak_force_magnitude_n,
+            t.peak_force_time_s,
+            f[0],
+            f[1],
+            f[2]
         );
     }
     for a in &s.attachments {
-        println!(
+        out!(
             "  {} x {}: largest tension {:.1} N at {:.3} s ({} - {})",
-            a.count, a.kind, a.peak_tension_n, a.time_s, a.ends[0], a.ends[1]
+            a.count,
+            a.kind,
+            a.peak_tension_n,
+            a.time_s,
+            a.ends[0],
+            a.ends[1]
         );
     }
-    println!("  throughput {:.3e} node-steps/s; written to {}", s.node_steps_per_second, out.display());
+    out!("  throughput {:.3e} node-steps/s; written to {}", s.node_steps_per_second, out.display());
 }

@@ -15,23 +15,6 @@ use std::time::Instant;
 use ohl_app::sweep::table::Status;
 use ohl_app::sweep::{Options, Shard, Spec, Sweep, merge, run_sweep};
 
-/// A line on stdout; a closed stdout (`ohl sweep ... | head -1`) is not an error of the sweep, whose files
-/// are written: the line is dropped instead of the panic of `println!`.
-macro_rules! out {
-    ($($arg:tt)*) => {{
-        use std::io::Write as _;
-        let _ = writeln!(std::io::stdout(), $($arg)*);
-    }};
-}
-
-/// A line on stderr, dropped if stderr is closed (see `out!`).
-macro_rules! err {
-    ($($arg:tt)*) => {{
-        use std::io::Write as _;
-        let _ = writeln!(std::io::stderr(), $($arg)*);
-    }};
-}
-
 /// Arguments of `ohl sweep`.
 #[derive(clap::Args)]
 #[command(args_conflicts_with_subcommands = true, subcommand_negates_reqs = true)]

@@ -32,14 +32,14 @@ pub fn main(args: ThermalArgs) -> ExitCode {
     let case = match scenario::read_text(&args.case).and_then(|t| thermal::parse_case(&t, &file)) {
         Ok(c) => c,
         Err(e) => {
-            eprintln!("error: {e}");
+            err!("error: {e}");
             return ExitCode::from(2);
         }
     };
     match evaluate(&case, &args.out) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
-            eprintln!("error: {file}: {e}");
+            err!("error: {file}: {e}");
             ExitCode::from(1)
         }
     }
@@ -57,7 +57,7 @@ fn evaluate(case: &ThermalCase, out: &std::path::Path) -> Result<(), String> {
     let model = case.model().map_err(|e| e.to_string())?;
     std::fs::create_dir_all(out).map_err(|e| format!("{}: {e}", out.display()))?;
     let name = case.name.clone().unwrap_or_else(|| "thermal".into());
-    println!(
+    out!(
         "{name}: {} in air at {:.2} C, wind {} m/s at {} deg",
         case.conductor,
         case.weather.air_temperature_k - C,
@@ -67,7 +67,7 @@ fn evaluate(case: &ThermalCase, out: &std::path::Path) -> Result<(), String> {
     let mut steady_rows = Vec::new();
     for &i in &case.current_a {
         let s = steady::temperature(&model, i).map_err(|e| e.to_string())?;
-        println!(
+        out!(
             "  steady temperature at {i:8.1} A: {:8.3} C  (q_J {:.3}, q_S {:.3}, q_c {:.3}, q_r {:.3} W/m)",
             s.temperature_k - C,
             s.terms.joule_w_per_m,
@@ -82,7 +82,7 @@ fn evaluate(case: &ThermalCase, out: &std::path::Path) -> Result<(), String> {
     let mut ampacity_rows = Vec::new();
     for &t in &case.max_temperature_k {
         let a = steady::ampacity(&model, t).map_err(|e| e.to_string())?;
-        println!("  steady ampacity at {:7.2} C: {:9.2} A", t - C, a.current_a);
+        out!("  steady ampacity at {:7.2} C: {:9.2} A", t - C, a.current_a);
         ampacity_rows.push(
             json!({"max_temperature_k": t, "current_a": a.current_a, "terms": terms_json(&model, t, a.current_a)}),
         );
@@ -107,7 +107,7 @@ fn evaluate(case: &ThermalCase, out: &std::path::Path) -> Result<(), String> {
         w.flush().map_err(|e| e.to_string())?;
         let last = samples.last().map_or(t0, |s| s.temperature_k);
         let reach = t.limit_k.map(|l| time_to_reach(&tr, 0.0, t0, l, t.end_time_s));
-        println!(
+        out!(
             "  transient: {:.3} C at t = 0, {:.3} C at {} s ({} samples in {})",
             t0 - C,
             last - C,
@@ -117,8 +117,8 @@ fn evaluate(case: &ThermalCase, out: &std::path::Path) -> Result<(), String> {
         );
         if let (Some(l), Some(r)) = (t.limit_k, reach) {
             match r {
-                Some(s) => println!("  reaches {:.2} C at {s:.1} s ({:.2} min)", l - C, s / 60.0),
-                None => println!("  does not reach {:.2} C within {} s", l - C, t.end_time_s),
+                Some(s) => out!("  reaches {:.2} C at {s:.1} s ({:.2} min)", l - C, s / 60.0),
+                None => out!("  does not reach {:.2} C within {} s", l - C, t.end_time_s),
             }
         }
         transient = json!({"initial_temperature_k": t0, "final_temperature_k": last, "limit_k": t.limit_k, "time_to_limit_s": reach.flatten()});
@@ -127,7 +127,7 @@ fn evaluate(case: &ThermalCase, out: &std::path::Path) -> Result<(), String> {
     if let (Some(de), Some(d)) = (case.deicing().map_err(|e| e.to_string())?, &case.deicing) {
         let opts = DeicingOptions { step_s: d.step_s, record_every_s: 10.0, ..Default::default() };
         let min = de.minimum_current_a().map_err(|e| e.to_string())?;
-        println!(
+        out!(
             "  de-icing {} mm of ice ({:.3} kg/m; {:?}): least current that melts {min:.1} A",
             d.thickness_m * 1e3,
             de.ice_mass_kg_per_m(),
@@ -137,7 +137,7 @@ fn evaluate(case: &ThermalCase, out: &std::path::Path) -> Result<(), String> {
         for (k, &i) in d.current_a.iter().enumerate() {
             let r = de.run(i, &opts).map_err(|e| e.to_string())?;
             let e = &r.energy;
-            println!(
+            out!(
                 "    {i:8.1} A: melting from {:.1} s, sheds at {:.1} s ({:.2} min); energy closure {:.2e} of the Joule heat",
                 r.warm_time_s,
                 r.shed_time_s,
@@ -164,7 +164,7 @@ fn evaluate(case: &ThermalCase, out: &std::path::Path) -> Result<(), String> {
         let mut within = Vec::new();
         for &t in &d.shed_within_s {
             let i = de.current_to_shed_in(t, &opts).map_err(|e| e.to_string())?;
-            println!("    sheds within {t} s ({:.1} min) from {i:.1} A", t / 60.0);
+            out!("    sheds within {t} s ({:.1} min) from {i:.1} A", t / 60.0);
             within.push(json!({"time_s": t, "current_a": i}));
         }
         deicing = json!({"ice_kg_per_m": de.ice_mass_kg_per_m(), "minimum_current_a": min, "runs": runs, "shed_within": within});
@@ -176,6 +176,6 @@ fn evaluate(case: &ThermalCase, out: &std::path::Path) -> Result<(), String> {
     let path = out.join("thermal.json");
     std::fs::write(&path, serde_json::to_string_pretty(&doc).map_err(|e| e.to_string())?)
         .map_err(|e| format!("{}: {e}", path.display()))?;
-    println!("  written to {}", out.display());
+    out!("  written to {}", out.display());
     Ok(())
 }

@@ -106,7 +106,11 @@ pub fn run_case(path: &Path, out_dir: Option<&Path>) -> Result<CaseReport, Paper
     let sc = scenario::parse(&text, &file)?;
     let plan = scenario::plan(&sc, &file)?;
     for w in &plan.warnings {
-        eprintln!("warning: {file}: {w}");
+        {
+            use std::io::Write as _;
+            // Dropped if stderr is closed, as every line of the `ohl` commands.
+            let _ = writeln!(std::io::stderr(), "warning: {file}: {w}");
+        }
     }
     let Some(spec) = spec::parse(&text, &file, plan.stop.horizon_s())? else {
         return Err(PaperError::NotACase(file));
