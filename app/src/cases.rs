@@ -9,7 +9,10 @@
 //!   snapshot times;
 //! - `<case>_table.csv` and the printed table: per support, the longitudinal load at the start, its peak
 //!   (largest magnitude) and time, the residual static load and the ratio of peak to residual; per span
-//!   the jump of its mid-span point (highest rise above its starting height).
+//!   the jump of its mid-span point (highest rise above its starting height). The ratio is left empty
+//!   (`-` in the printed table) where the support carries no residual longitudinal load: a residual below
+//!   [`NO_RESIDUAL`] of the peak is zero to the static solver's tolerance (a support that symmetry or a
+//!   break unloads), and the ratio would be rounding over rounding (it printed `4.7e15`, `inf`, `NaN`).
 //!
 //! The residual static load is the static equilibrium after the event, solved by Newton
 //! ([`ohl::statics`]) from the run's final state: the design quantity of a broken-conductor or
@@ -22,6 +25,16 @@
 
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
+
+/// A residual longitudinal load below this fraction of the peak counts as none (module doc): the static
+/// solve's residual is about 1e-10 of the largest load, so anything this small is no load at all.
+pub const NO_RESIDUAL: f64 = 1e-6;
+
+/// The ratio of peak to residual load, or `None` where there is no residual load ([`NO_RESIDUAL`]).
+pub fn peak_over_residual(peak_n: f64, residual_n: f64) -> Option<f64> {
+    let ratio = peak_n / residual_n;
+    (residual_n.abs() >= NO_RESIDUAL * peak_n.abs() && residual_n != 0.0 && ratio.is_finite()).then_some(ratio)
+}
 
 use ohl::run::{RunOptions, run};
 use ohl::scenario;
@@ -345,7 +358,7 @@ fn write_table(path: &Path, supports: &[SupportRow], jumps: &[(f64, f64)]) -> Re
     ])
     .map_err(|e| io(&e))?;
     for s in supports {
-        let ratio = s.peak_n / s.residual_n;
+        let ratio = peak_over_residual(s.peak_n, s.residual_n).map_or(String::new(), |r| format!("{r:.4}"));
         let swing = s.peak_swing_deg.map_or(String::new(), |v| format!("{v:.3}"));
         w.write_record([
             format!("support {}", s.support),
@@ -353,7 +366,7 @@ fn write_table(path: &Path, supports: &[SupportRow], jumps: &[(f64, f64)]) -> Re
             format!("{:.3}", s.peak_n),
             format!("{:.4}", s.peak_time_s),
             format!("{:.3}", s.residual_n),
-            format!("{ratio:.4}"),
+            ratio,
             format!("{:.3}", s.residual_vertical_n),
             swing,
             String::new(),
@@ -388,13 +401,13 @@ pub fn format_table(c: &CaseOutcome) -> String {
     for r in &c.supports {
         let swing = r.peak_swing_deg.map_or("-".into(), |v| format!("{v:.1}"));
         s.push_str(&format!(
-            "| {} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} | {} |\n",
+            "| {} | {:.2} | {:.2} | {:.2} | {:.2} | {} | {:.2} | {} |\n",
             r.support,
             r.initial_n / 1e3,
             r.peak_n / 1e3,
             r.peak_time_s,
             r.residual_n / 1e3,
-            r.peak_n / r.residual_n,
+            peak_over_residual(r.peak_n, r.residual_n).map_or("-".into(), |v| format!("{v:.2}")),
             r.residual_vertical_n / 1e3,
             swing
         ));

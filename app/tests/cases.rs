@@ -107,4 +107,27 @@ fn deicing_case_sheds_when_the_deicing_model_says_and_balances_after() {
     assert!((c.supports[0].residual_n + c.supports[3].residual_n).abs() < 1e-6 * c.supports[0].residual_n.abs());
     // The shedding span jumps; its neighbours barely move.
     assert!(c.jumps[1].0 > 1.0 && c.jumps[0].0 < 0.1 * c.jumps[1].0, "jumps {:?}", c.jumps);
+    // The two suspension supports of the symmetric, bare section carry no residual longitudinal load
+    // (zero up to the solver's tolerance): no peak-to-residual ratio, where the table printed `inf` before.
+    for s in &c.supports[1..3] {
+        assert!(s.residual_n.abs() < ohl_app::cases::NO_RESIDUAL * s.peak_n.abs(), "{s:?}");
+        assert_eq!(ohl_app::cases::peak_over_residual(s.peak_n, s.residual_n), None);
+    }
+    let table = std::fs::read_to_string(c.dir.join("d_deicing_table.csv")).unwrap();
+    assert!(!table.contains("inf") && !table.contains("NaN"), "{table}");
+}
+
+/// A case given as a file path is that file, not `<cases>/<path>.toml` (which printed `NAME.toml.toml`).
+#[test]
+fn a_case_is_found_by_name_or_by_path() {
+    let repo = Path::new(env!("CARGO_MANIFEST_DIR")).parent().unwrap().to_path_buf();
+    let missing = std::env::temp_dir().join("ohl-no-such-case.toml");
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_ohl"))
+        .args(["cases", missing.to_str().unwrap()])
+        .current_dir(&repo)
+        .output()
+        .unwrap();
+    let text = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{text}");
+    assert!(text.contains(&format!("{} does not exist", missing.display())) && !text.contains(".toml.toml"), "{text}");
 }

@@ -12,7 +12,7 @@ use ohl_app::cases::{self, CaseError};
 /// Arguments of `ohl cases`.
 #[derive(clap::Args)]
 pub struct CasesArgs {
-    /// case name (a file `<cases>/<case>.toml`) or `all`
+    /// case name (a file `<cases>/<case>.toml`), a case file (`PATH.toml`), or `all`
     case: String,
     /// directory of the case files
     #[arg(long, default_value = "cases")]
@@ -38,7 +38,14 @@ pub fn main(args: CasesArgs) -> ExitCode {
             }
         }
     } else {
-        let p = args.cases.join(format!("{}.toml", args.case));
+        // A case is named (`b_ice_shedding`, looked up in the cases folder) or given as a file.
+        let given = PathBuf::from(&args.case);
+        let name = args.case.strip_suffix(".toml").unwrap_or(&args.case);
+        let p = if given.extension().is_some_and(|e| e == "toml") && given.is_file() {
+            given
+        } else {
+            args.cases.join(format!("{name}.toml"))
+        };
         if !p.exists() {
             err!("error: no case `{}` ({} does not exist)", args.case, p.display());
             return ExitCode::from(2);
