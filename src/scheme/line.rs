@@ -342,6 +342,15 @@ impl LineExplicit {
         self.fresh = false;
     }
 
+    /// Set the velocity of support `s`'s reference point to `u` [m/s], an implicit integrator's state (the
+    /// links' dampers and the support's own damper read it where the explicit step reads the half-step
+    /// velocity; an elastic support moves horizontally only, so `u[2]` should be 0); the forces of the
+    /// level are evaluated again.
+    pub fn set_support_velocity(&mut self, s: usize, u: [f64; 3]) {
+        self.supports[s].velocity_m_per_s = u;
+        self.fresh = false;
+    }
+
     /// The sum of the link forces on each support [N] (without its own springs), from the last link pass
     /// ([`LineExplicit::evaluate_links`] or [`LineExplicit::evaluate_forces`]).
     pub fn support_link_loads_n(&self) -> &[[f64; 3]] {

@@ -38,9 +38,7 @@ use faer::sparse::Pair;
 pub fn solve_line(line: &mut LineExplicit, opts: &StaticOptions) -> Result<StaticReport, StaticError> {
     check_supported(line)?;
     line.stop();
-    let free: Vec<&[f64]> = line.conductors().iter().map(|c| &c.wire().free[..]).collect();
-    let elastic: Vec<bool> = line.supports().map(|s| s.elastic.is_some()).collect();
-    let dofs = DofMap::new(&free, &elastic);
+    let dofs = line_dofs(line);
     let pat = line_pattern(line, &dofs);
     let scales = line_scales(line, opts);
     let mut eqs = LineEquations { line, dofs, f: Vec::new(), local: Vec::new() };
@@ -98,10 +96,23 @@ fn line_scales(line: &LineExplicit, opts: &StaticOptions) -> Scales {
     Scales { tolerance_n: tol, tension_n: f_sum, load_n: if f_max > 0.0 { f_max } else { 1.0 } }
 }
 
-/// The sparsity pattern, in the order [`LineEquations::jacobian`] writes the values: each conductor's own
-/// pattern shifted to its block, then each link's blocks (row end, column end), then each elastic
-/// support's 2x2 spring block.
-fn line_pattern(line: &LineExplicit, dofs: &DofMap) -> Vec<Pair<usize, usize>> {
+/// The unknowns of the line as [`solve_line`] numbers them: each conductor's free nodes, then the two
+/// horizontal translations of each elastic support ([`DofMap`]).
+pub fn line_dofs(line: &LineExplicit) -> DofMap {
+    let free: Vec<&[f64]> = line.conductors().iter().map(|c| &c.wire().free[..]).collect();
+    let elastic: Vec<bool> = line.supports().map(|s| s.elastic.is_some()).collect();
+    DofMap::new(&free, &elastic)
+}
+
+/// The sparsity pattern of the line's Jacobian over the unknowns `dofs` ([`line_dofs`]), in the order
+/// [`solve_line`] writes the values, which an implicit integrator may follow with values of its own:
+/// each conductor's own pattern ([`pattern`], in the order of [`values`]) shifted to its block; then, for
+/// each intact link in model order, the blocks of its ends that move (row end `a` then `b`, and within
+/// each the column end `a` then `b`; 3 components for a node, 2 for a support, row-major); then each
+/// elastic support's 2x2 block (row-major) in support order. A position appears once per contribution
+/// (the sparse matrix sums them). It depends only on the topology: which nodes are free, which links are
+/// intact, which supports are elastic.
+pub fn line_pattern(line: &LineExplicit, dofs: &DofMap) -> Vec<Pair<usize, usize>> {
     let mut out = Vec::new();
     for (c, s) in line.conductors().iter().enumerate() {
         let base = dofs.conductor_start(c);

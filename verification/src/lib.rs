@@ -6,8 +6,8 @@
 //! pass/fail verdict. `verify all` collects them in `REPORT.md`.
 //!
 //! Shared machinery: [`setup`] (the paper's test wire and loads), [`convergence`] (least-squares order,
-//! Richardson extrapolation, Grid Convergence Index), [`implicit`] (Newmark integrator on the library's
-//! Jacobian and sparse LU, `ohl::statics`), [`report`].
+//! Richardson extrapolation, Grid Convergence Index), [`implicit`] (Newmark integrators, for one conductor and
+//! for a whole line, on the library's Jacobian and sparse LU, `ohl::statics`), [`report`].
 //! Independent exact references: [`exact_section`] (static equilibrium of a section on suspension strings),
 //! [`exact_line`] (three-dimensional statics of a bundle with spacers and of phases on a shared elastic tower top).
 

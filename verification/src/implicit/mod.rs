@@ -14,5 +14,9 @@
 //!
 //! * [`newmark`]: Newmark's average-acceleration rule (trapezoidal, second order, unconditionally stable
 //!   for linear problems) with Newton iterations on each step.
+//! * [`line_newmark`]: the same rule for a whole line of conductors (`ohl::scheme::LineExplicit` as the
+//!   force evaluator: conductors, links, elastic supports), on the line's degree-of-freedom map and
+//!   sparsity pattern (`ohl::statics::line`).
 
+pub mod line_newmark;
 pub mod newmark;

@@ -3,6 +3,7 @@
 pub mod energy_budget;
 pub mod exact_references;
 pub mod implicit_reference;
+pub mod line_implicit;
 pub mod line_statics;
 pub mod manufactured;
 pub mod section_energy;
@@ -49,6 +50,11 @@ pub const STUDIES: &[Study] = &[
         name: "line_statics",
         about: "bundles with spacers and phases on a shared elastic tower vs exact_line",
         run: line_statics::run,
+    },
+    Study {
+        name: "line_implicit",
+        about: "explicit line scheme vs Newmark on the whole line: orders in time, rest state vs line statics",
+        run: line_implicit::run,
     },
     Study {
         name: "energy",
