@@ -149,7 +149,7 @@ const CASES: &[(&str, &[&str])] = &[
     ("normal_coefficient_huge", &["field `loads.wind.normal_coefficient` = 100", "at most 10"]),
     ("ramp_absurd", &["field `events[0].ramp_s` = 1e300", "1e8 s"]),
     ("thermal_expansion_too_large", &["field `conductor.thermal_expansion_per_k` = 1", "[0, 1e-3] 1/K"]),
-    ("reference_temperature_zero", &["field `conductor.reference_temperature_k` = 0", "(0, 5000] K"]),
+    ("reference_temperature_zero", &["field `conductor.reference_temperature_k` = 0", "[173.15, 5000] K"]),
     ("heat_time_too_large", &["field `events[0].heat_time_per_s` = 1000000000", "(0, 1000] 1/s"]),
     ("event_gate_unknown", &["line 26, column 8", "unknown variant `sideways`"]),
     ("event_number_as_text", &["line 20, column 15", "invalid type: string \"half\", expected a number"]),
@@ -169,12 +169,64 @@ const CASES: &[(&str, &[&str])] = &[
     ("rating_clearance_without_ground", &["field `rating.min_clearance_m` = 8", "needs a [ground]"]),
     ("deicing_varying_current", &["field `thermal.current_a`", "must be constant with [thermal.deicing]"]),
     ("thermal_history_too_long", &["field `thermal.step_s` = 1", "must be at least 10.000 s"]),
+    // Issue 22: messages that name the field as written (with its array index, at the value's line, every
+    // missing field), and inputs that were accepted silently.
+    (
+        "section_support_fields_missing",
+        &[
+            "line 12, column 3",
+            "field `section.supports[1]`: missing fields `insulator_length_m`, `insulator_mass_kg`, \
+             `insulator_stiffness_n`",
+        ],
+    ),
+    (
+        "section_support_value_as_text",
+        &["line 13, column 26", "field `section.supports[1].insulator_length_m`: invalid type: string \"3.5\""],
+    ),
+    ("section_segments_per_span_zero", &["field `section.segments_per_span` = 0", "[2, 1000000]"]),
+    (
+        "section_tension_above_rts",
+        &["field `section.horizontal_tension_n` = 150000", "below conductor.rated_tensile_strength_n = 140000 N"],
+    ),
+    ("reference_temperature_in_celsius", &["field `conductor.reference_temperature_k` = 15", "not Celsius"]),
+    (
+        "heat_conduction_without_expansion",
+        &["field `events[0].action` = \"heat_conduction\"", "thermal_expansion_per_k > 0"],
+    ),
+    ("heat_conduction_above_budget", &["heat node updates", "lower events[].heat_time_per_s"]),
+    (
+        "ground_profile_point_with_three_numbers",
+        &["line 15, column 13", "field `ground.profile_m`: point [1] has 3 numbers"],
+    ),
+    ("thermal_case_given_to_run", &["a thermal case", "`ohl thermal`"]),
+];
+
+/// Cases for `ohl thermal` (file stem, message substrings; exit code 2).
+const THERMAL_CASES: &[(&str, &[&str])] = &[
+    ("thermal_case_asks_nothing", &["field `current_a` = (missing)", "the case asks nothing"]),
+    (
+        "thermal_case_max_below_air",
+        &["field `max_temperature_k[1]` = 303.15", "above the air temperature weather.air_temperature_k = 313.15 K"],
+    ),
+    (
+        "thermal_case_schedule_point_with_three_numbers",
+        &["line 26, column 13", "field `transient.current_a`: point [1] has 3 numbers"],
+    ),
+    ("thermal_case_transient_above_budget", &["field `transient.step_s` = 0.001", "at least 1 s"]),
+    ("thermal_case_deicing_step_tiny", &["field `deicing.step_s` = 0.001", "at least 0.00864 s"]),
+    ("scenario_given_to_thermal", &["a wire scenario ([conductor]), not a thermal case", "`ohl run`"]),
+    (
+        "thermal_case_measured_radiation_under_ieee",
+        &["field `weather.sun.measured_global_w_per_m2` = 900", "only with standard = \"cigre601\""],
+    ),
 ];
 
 /// Heat-conduction cases (`ohl paper CASE --cases tests/bad_inputs`): (file stem, message substrings).
 const PAPER_CASES: &[(&str, &[&str])] = &[
     ("heat_tiny_temperature_scale", &["field `rod.temperature_scale_k` = 1e-300", "[1, 1e4] K", "overflow"]),
     ("heat_temperature_absurd", &["field `rod.left_temperature_k` = 1e300", "1e4 K"]),
+    ("heat_segments_above_budget", &["field `rod.segments` = 100000", "2.000e16 node updates", "budget"]),
+    ("heat_step_ratio_above_budget", &["field `runs[3].step_ratio` = 0.000000001", "at least 0.00006375"]),
 ];
 
 fn dir() -> PathBuf {
@@ -228,8 +280,40 @@ fn every_invalid_heat_case_is_refused_with_a_precise_message() {
 }
 
 #[test]
+fn every_invalid_thermal_case_is_refused_with_a_precise_message() {
+    let out = tmp("bad-thermal");
+    for (stem, needles) in THERMAL_CASES {
+        let file = dir().join(format!("{stem}.toml"));
+        let (code, _, err) = ohl(&["thermal", file.to_str().unwrap(), "--out", out.to_str().unwrap()]);
+        assert_eq!(code, 2, "{stem}: exit code {code}, stderr:\n{err}");
+        assert!(err.contains(&format!("{stem}.toml")), "{stem}: message does not name the file:\n{err}");
+        for n in *needles {
+            assert!(err.contains(n), "{stem}: message lacks `{n}`:\n{err}");
+        }
+        assert!(!err.contains("panicked"), "{stem}: panicked:\n{err}");
+        assert!(!out.exists(), "{stem}: a refused case must not write anything");
+    }
+}
+
+#[test]
+fn a_negative_shard_or_thread_count_is_named_by_its_option() {
+    let base = Path::new(env!("CARGO_MANIFEST_DIR")).join("../examples/sweep/drake_400m_wind.toml");
+    let out = tmp("shard");
+    for (flag, value, needle) in [
+        ("--shard", "-1/2", "--shard -1/2: K = \"-1\" is not a whole number >= 0"),
+        ("--threads", "-1", "invalid value '-1' for '--threads <THREADS>'"),
+    ] {
+        let args = ["sweep", base.to_str().unwrap(), flag, value, "--vary", "loads.wind.speed_m_per_s=10,20"];
+        let (code, _, err) = ohl(&[&args[..], &["--out", out.to_str().unwrap()]].concat());
+        assert_eq!(code, 2, "{flag} {value}: stderr:\n{err}");
+        assert!(err.contains(needle), "{flag} {value}: {err}");
+        assert!(!out.exists(), "nothing is written for refused arguments");
+    }
+}
+
+#[test]
 fn every_file_of_the_directory_is_a_case() {
-    let mut listed: Vec<&str> = CASES.iter().chain(PAPER_CASES).map(|c| c.0).collect();
+    let mut listed: Vec<&str> = CASES.iter().chain(PAPER_CASES).chain(THERMAL_CASES).map(|c| c.0).collect();
     listed.push("valid");
     listed.sort_unstable();
     let mut files: Vec<String> = std::fs::read_dir(dir())

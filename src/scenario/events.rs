@@ -31,7 +31,7 @@ pub struct GroundSpec {
     /// increasing, at least two, slopes at most 2 (63 degrees); the ground is linear between them and
     /// level beyond the first and last; every support and the initial shape must lie above it. A height
     /// per span is a profile with a point under each support.
-    #[serde(default)]
+    #[serde(default, deserialize_with = "super::schema::pairs")]
     pub profile_m: Vec<[f64; 2]>,
     /// coefficient of restitution on the normal velocity [-], in [0, 1]; the paper's 36 % of the
     /// vertical impact energy returned on rebound is 0.6 (0.6^2 = 0.36, section 4.4)

@@ -335,7 +335,7 @@ pub struct LinePlan {
 /// table may name a catalogue conductor, as `[conductor]` of a single-conductor scenario.
 pub fn parse(text: &str, file: &str) -> Result<LineScenario, InputError> {
     let Ok(mut doc) = text.parse::<toml::Table>() else {
-        return toml::from_str(text).map_err(|e| super::parse_error_at(text, file, e));
+        return super::from_toml(text, file);
     };
     let mut resolved = false;
     if let Some(toml::Value::Table(line)) = doc.get_mut("line")
@@ -350,9 +350,9 @@ pub fn parse(text: &str, file: &str) -> Result<LineScenario, InputError> {
         }
     }
     if resolved {
-        toml::Value::Table(doc).try_into().map_err(|e| super::parse_error(file, e))
+        super::locate::from_table(doc, text, file)
     } else {
-        toml::from_str(text).map_err(|e| super::parse_error_at(text, file, e))
+        super::from_toml(text, file)
     }
 }
 

@@ -1,53 +1,206 @@
-//! Where in the text a TOML error lies. serde reads an internally tagged enum (an `[[events]]` table,
-//! tagged by `action`) through a buffer of the whole table, so an error in one of its values (an unknown
-//! gate, a range of three numbers, a string for a number) comes back pointing at the table header. The
-//! message names the value (or its length), so the value's own line is found again in the table's text.
+//! Where in the text a TOML error lies, and which field it is. A document is read in two steps: the
+//! TOML syntax into a table ([`toml::Table`]), then that table into the schema's types through
+//! [`serde_path_to_error`], which records the path of the value being read when an error is raised
+//! (`section.supports[1]`). The path is then walked in a spanned copy of the document
+//! ([`toml::de::DeTable`]) to the value's own line. Where serde reports an error on a whole table (an
+//! internally tagged `[[events]]` table or `supports` element is read through a buffer, which loses the
+//! position of its values), the message names the value (or its length, or its key) and the value is
+//! found among that table's entries. A missing field is reported with every other field missing from the
+//! same table (the table is completed with placeholders and read again), not only the first.
 
-/// The parser's message re-pointed at the offending value's line, or `None` where the error already
-/// points at a value (or the value cannot be found unambiguously).
-pub(crate) fn relocate(text: &str, e: &toml::de::Error) -> Option<String> {
-    let span = e.span()?;
-    let header_start = text[..span.start].rfind('\n').map_or(0, |p| p + 1);
-    if !text.get(header_start..)?.trim_start().starts_with('[') || !text.get(span.clone())?.starts_with('[') {
-        return None;
-    }
-    let header_line = text[..header_start].matches('\n').count() + 1;
-    let message = e.message();
-    let wanted = Wanted::from_message(message)?;
-    // The table's own lines: after the header, up to the next header.
-    let mut found = None;
-    let lines: Vec<&str> = text[header_start..].lines().collect();
-    let mut k = 1;
-    while k < lines.len() {
-        let line = lines[k];
-        let trimmed = line.trim_start();
-        if trimmed.starts_with('[') {
-            break;
+use serde::de::DeserializeOwned;
+use toml::Spanned;
+use toml::de::{DeTable, DeValue};
+
+use super::InputError;
+
+/// Read `text` into `T`: a syntax error keeps the parser's line and column; an error of a value names its
+/// field path and points at its line ([module doc](self)).
+pub(crate) fn from_text<T: DeserializeOwned>(text: &str, file: &str) -> Result<T, InputError> {
+    let table: toml::Table = text.parse().map_err(|e: toml::de::Error| InputError::Parse {
+        file: file.to_string(),
+        message: super::plain_types(&e.to_string()),
+    })?;
+    from_table(table, text, file)
+}
+
+/// Read an already parsed document (of `text`, perhaps completed: catalogue data filled in) into `T`,
+/// errors located in `text`.
+pub(crate) fn from_table<T: DeserializeOwned>(table: toml::Table, text: &str, file: &str) -> Result<T, InputError> {
+    let (path, error) = match read::<T>(table.clone()) {
+        Ok(v) => return Ok(v),
+        Err(e) => e,
+    };
+    let mut message = error.message().to_string();
+    if let Some(first) = missing_field(&message) {
+        let all = all_missing::<T>(table, &path, first);
+        if all.len() > 1 {
+            let names: Vec<String> = all.iter().map(|f| format!("`{f}`")).collect();
+            message = format!("missing fields {}", names.join(", "));
         }
-        let at = k;
+    }
+    Err(InputError::Parse { file: file.to_string(), message: super::plain_types(&describe(text, &path, &message)) })
+}
+
+/// A path segment of a value in the document.
+#[derive(Clone, Debug, PartialEq)]
+enum Step {
+    Key(String),
+    Index(usize),
+}
+
+fn read<T: DeserializeOwned>(table: toml::Table) -> Result<T, (Vec<Step>, toml::de::Error)> {
+    serde_path_to_error::deserialize(toml::Value::Table(table)).map_err(|e| {
+        let steps = e
+            .path()
+            .iter()
+            .filter_map(|s| match s {
+                serde_path_to_error::Segment::Map { key } => Some(Step::Key(key.clone())),
+                serde_path_to_error::Segment::Seq { index } => Some(Step::Index(*index)),
+                _ => None,
+            })
+            .collect();
+        (steps, e.into_inner())
+    })
+}
+
+/// The field of a "missing field `f`" message.
+fn missing_field(message: &str) -> Option<String> {
+    let rest = message.strip_prefix("missing field `")?;
+    Some(rest[..rest.find('`')?].to_string())
+}
+
+/// Every field missing from the table at `path`: each missing one is given a placeholder (the first of a
+/// few kinds of value its type accepts) and the document read again, until the error moves elsewhere.
+fn all_missing<T: DeserializeOwned>(mut table: toml::Table, path: &[Step], first: String) -> Vec<String> {
+    let placeholders = || {
+        [
+            toml::Value::Float(1.0),
+            toml::Value::Integer(2),
+            toml::Value::String(String::new()),
+            toml::Value::Boolean(false),
+            toml::Value::Array(vec![toml::Value::Float(1.0); 3]),
+            toml::Value::Array(vec![toml::Value::Float(1.0); 2]),
+            toml::Value::Array(Vec::new()),
+            toml::Value::Table(toml::Table::new()),
+        ]
+    };
+    let mut found = vec![first];
+    'fields: while found.len() < 64 {
+        let field = found.last().expect("one field").clone();
+        for value in placeholders() {
+            let Some(at) = table_at(&mut table, path) else { break 'fields };
+            at.insert(field.clone(), value);
+            match read::<T>(table.clone()) {
+                Ok(_) => break 'fields,
+                Err((p, e)) => match missing_field(e.message()) {
+                    Some(next) if p == path && !found.contains(&next) => {
+                        found.push(next);
+                        continue 'fields;
+                    }
+                    // The placeholder's type is wrong (reported at the field, or at a buffered table).
+                    _ if p.starts_with(path) && (p.len() > path.len() || e.message().starts_with("invalid")) => {}
+                    _ => break 'fields,
+                },
+            }
+        }
+        break;
+    }
+    found
+}
+
+/// The table at `path` in a document.
+fn table_at<'a>(table: &'a mut toml::Table, path: &[Step]) -> Option<&'a mut toml::Table> {
+    let mut value: &mut toml::Table = table;
+    let mut k = 0;
+    while k < path.len() {
+        let Step::Key(key) = &path[k] else { return None };
+        let mut v = value.get_mut(key)?;
         k += 1;
-        let Some((key, first, column)) = key_value(line) else { continue };
-        // A multi-line array: its value runs to the line where the brackets balance.
-        let mut value = first.to_string();
-        while value.starts_with('[') && depth(&value) > 0 && k < lines.len() {
-            value.push(' ');
-            value.push_str(strip_comment(lines[k]).trim());
+        while let Some(Step::Index(i)) = path.get(k) {
+            v = v.as_array_mut()?.get_mut(*i)?;
             k += 1;
         }
-        if wanted.matches(key, &value) {
-            if found.is_some() {
-                return None;
+        value = v.as_table_mut()?;
+    }
+    Some(value)
+}
+
+/// The message with the field's path and its place in the text.
+fn describe(text: &str, path: &[Step], message: &str) -> String {
+    let mut shown = path.to_vec();
+    let span = DeTable::parse(text).ok().map(|root| {
+        let (span, table) = (root.span(), root.into_inner());
+        let root = Spanned::new(span, DeValue::Table(table));
+        let mut node = &root;
+        for (k, step) in path.iter().enumerate() {
+            let next = match (step, node.get_ref()) {
+                (Step::Key(key), DeValue::Table(t)) => t.get(key.as_str()),
+                (Step::Index(i), DeValue::Array(a)) => a.get(*i),
+                _ => None,
+            };
+            match next {
+                Some(n) => node = n,
+                None => {
+                    shown.truncate(k);
+                    break;
+                }
             }
-            found = Some((header_line + at, column, line));
+        }
+        // A table read through a buffer: find the offending entry among its own.
+        if let (DeValue::Table(t), Some(wanted)) = (node.get_ref(), Wanted::from_message(message)) {
+            let hits: Vec<_> = t
+                .iter()
+                .filter(|(key, value)| {
+                    let literal = text.get(value.span()).unwrap_or("");
+                    wanted.matches(key.get_ref(), literal.trim(), value.get_ref())
+                })
+                .collect();
+            if let [(key, value)] = hits.as_slice() {
+                shown.push(Step::Key(key.get_ref().to_string()));
+                return if matches!(wanted, Wanted::Key(_)) { key.span() } else { value.span() };
+            }
+        }
+        node.span()
+    });
+    let field = field_path(&shown);
+    let what = if field.is_empty() { message.to_string() } else { format!("field `{field}`: {message}") };
+    match span {
+        Some(span) => format!("{}{what}\n", snippet(text, span.start)),
+        None => what,
+    }
+}
+
+/// `section.supports[1].kind`
+fn field_path(path: &[Step]) -> String {
+    let mut s = String::new();
+    for step in path {
+        match step {
+            Step::Key(k) => {
+                if !s.is_empty() {
+                    s.push('.');
+                }
+                s.push_str(k);
+            }
+            Step::Index(i) => s.push_str(&format!("[{i}]")),
         }
     }
-    let (line_no, column, line) = found?;
+    s
+}
+
+/// "TOML parse error at line L, column C" and the line with a caret under byte offset `at`.
+fn snippet(text: &str, at: usize) -> String {
+    let at = at.min(text.len());
+    let line_start = text[..at].rfind('\n').map_or(0, |p| p + 1);
+    let line_end = text[at..].find('\n').map_or(text.len(), |p| at + p);
+    let line_no = text[..line_start].matches('\n').count() + 1;
+    let column = text[line_start..at].chars().count() + 1;
+    let line = text[line_start..line_end].trim_end_matches('\r');
     let gutter = " ".repeat(line_no.to_string().len());
-    Some(format!(
-        "TOML parse error at line {line_no}, column {column}\n{gutter} |\n{line_no} | {line}\n{gutter} | {}^\n\
-         {message} (in the table that starts at line {header_line})\n",
+    format!(
+        "TOML parse error at line {line_no}, column {column}\n{gutter} |\n{line_no} | {line}\n{gutter} | {}^\n",
         " ".repeat(column - 1)
-    ))
+    )
 }
 
 /// What identifies the offending value, read from the parser's message.
@@ -88,11 +241,12 @@ impl Wanted {
         None
     }
 
-    fn matches(&self, key: &str, value: &str) -> bool {
+    /// Whether the entry `key = value` (`literal` its text) is the one wanted.
+    fn matches(&self, key: &str, literal: &str, value: &DeValue) -> bool {
         match self {
             Wanted::Key(k) => key == k,
-            Wanted::Literal(l) => value == l || value.replace('\'', "\"") == *l || parses_equal(value, l),
-            Wanted::Length(n) => array_len(value) == Some(*n),
+            Wanted::Literal(l) => literal == l || literal.replace('\'', "\"") == *l || parses_equal(literal, l),
+            Wanted::Length(n) => matches!(value, DeValue::Array(a) if a.len() == *n),
         }
     }
 }
@@ -102,70 +256,12 @@ fn parses_equal(a: &str, b: &str) -> bool {
     matches!((a.parse::<f64>(), b.parse::<f64>()), (Ok(x), Ok(y)) if x == y)
 }
 
-/// A line without its comment (a `#` outside a string).
-fn strip_comment(line: &str) -> &str {
-    let mut in_string = false;
-    for (i, ch) in line.char_indices() {
-        match ch {
-            '"' | '\'' => in_string = !in_string,
-            '#' if !in_string => return &line[..i],
-            _ => {}
-        }
-    }
-    line
-}
-
-/// Open brackets minus closed ones, outside strings.
-fn depth(value: &str) -> i64 {
-    let (mut d, mut in_string) = (0i64, false);
-    for ch in value.chars() {
-        match ch {
-            '"' | '\'' => in_string = !in_string,
-            '[' | '{' if !in_string => d += 1,
-            ']' | '}' if !in_string => d -= 1,
-            _ => {}
-        }
-    }
-    d
-}
-
-/// `key = value` of one line (the comment removed), with the value's 1-based column.
-fn key_value(line: &str) -> Option<(&str, &str, usize)> {
-    let eq = line.find('=')?;
-    let key = line[..eq].trim().trim_matches('"');
-    let end = eq + 1 + strip_comment(&line[eq + 1..]).len();
-    let raw = &line[eq + 1..end];
-    let value = raw.trim();
-    let column = line[..eq + 1 + (raw.len() - raw.trim_start().len())].chars().count() + 1;
-    Some((key, value, column))
-}
-
-/// The number of elements of a one-line array literal `[a, b, c]`.
-fn array_len(value: &str) -> Option<usize> {
-    let inner = value.strip_prefix('[')?.strip_suffix(']')?.trim();
-    if inner.is_empty() {
-        return Some(0);
-    }
-    let (mut depth, mut commas, mut in_string) = (0usize, 0usize, false);
-    for ch in inner.chars() {
-        match ch {
-            '"' | '\'' => in_string = !in_string,
-            '[' | '{' if !in_string => depth += 1,
-            ']' | '}' if !in_string => depth = depth.saturating_sub(1),
-            ',' if !in_string && depth == 0 => commas += 1,
-            _ => {}
-        }
-    }
-    Some(if inner.ends_with(',') { commas } else { commas + 1 })
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
 
     fn error(text: &str) -> String {
-        let e = toml::from_str::<crate::scenario::Scenario>(text).unwrap_err();
-        relocate(text, &e).unwrap_or_else(|| e.to_string())
+        from_text::<crate::scenario::Scenario>(text, "t.toml").unwrap_err().to_string()
     }
 
     const BASE: &str = "[conductor]\naxial_stiffness_n = 792000.0\nlinear_density_kg_per_m = 1.0\n\
@@ -199,14 +295,5 @@ mod tests {
         let t = BASE.replace("left_support_m = [0.0, 0.0, 0.0]", "left_support_m = [0.0, 0.0, 0.0, 5.0]");
         let m = error(&t);
         assert!(m.contains("line 5") && m.contains("invalid length 4, expected exactly 3 components"), "{m}");
-    }
-
-    #[test]
-    fn array_lengths_and_values() {
-        assert_eq!(array_len("[1, [2, 3], \"a,b\"]"), Some(3));
-        assert_eq!(array_len("[1, 2,]"), Some(2));
-        assert_eq!(array_len("[]"), Some(0));
-        assert_eq!(array_len("[ 0.1, 0.2, 0.3, ]"), Some(3));
-        assert_eq!(key_value("  gate = 'x' # c"), Some(("gate", "'x'", 10)));
     }
 }

@@ -84,9 +84,17 @@ pub fn parse(text: &str, file: &str) -> Result<Scenario, InputError> {
                 .into(),
         });
     }
+    if thermal::is_thermal_case(text) {
+        return Err(InputError::Parse {
+            file: file.to_string(),
+            message: "a thermal case (a top-level [weather] and `conductor = \"NAME\"`), not a wire \
+                      scenario: compute it with `ohl thermal` (docs/thermal.md)"
+                .into(),
+        });
+    }
     let scenario: Scenario = match catalog_defaults(text, file)? {
-        Some(resolved) => toml::Value::Table(resolved).try_into().map_err(|e| parse_error(file, e))?,
-        None => toml::from_str(text).map_err(|e| parse_error_at(text, file, e))?,
+        Some(resolved) => locate::from_table(resolved, text, file)?,
+        None => locate::from_text(text, file)?,
     };
     let problems = validate::validate(&scenario);
     if problems.is_empty() { Ok(scenario) } else { Err(InputError::Invalid { file: file.to_string(), problems }) }
@@ -138,11 +146,6 @@ pub(crate) fn fill_from_catalog(c: &mut toml::Table, file: &str, field: &str) ->
     Ok(true)
 }
 
-/// The error of a TOML file that does not parse (the message has line and column).
-pub fn parse_error(file: &str, e: toml::de::Error) -> InputError {
-    InputError::Parse { file: file.to_string(), message: plain_types(&e.to_string()) }
-}
-
 /// A parser message in the user's terms: serde names Rust types ("expected f64", "expected usize"); a
 /// scenario's reader knows numbers, whole numbers, text and tables.
 pub fn plain_types(message: &str) -> String {
@@ -165,12 +168,11 @@ pub fn plain_types(message: &str) -> String {
     m
 }
 
-/// The error of a TOML file that does not parse, located in `text`: where the parser points at a table
-/// header (a value inside an `[[events]]` table is read through the table as a whole, and serde loses
-/// the value's own position), the message points at the offending value's own line instead.
-pub fn parse_error_at(text: &str, file: &str, e: toml::de::Error) -> InputError {
-    let message = locate::relocate(text, &e).unwrap_or_else(|| e.to_string());
-    InputError::Parse { file: file.to_string(), message: plain_types(&message) }
+/// Read a TOML document `text` into `T`: a syntax error keeps the parser's line and column; an error of a
+/// value (wrong type, unknown field, missing fields) names the field's path as written in the file
+/// (`section.supports[1].insulator_length_m`) and points at the value's own line ([`locate`]).
+pub fn from_toml<T: serde::de::DeserializeOwned>(text: &str, file: &str) -> Result<T, InputError> {
+    locate::from_text(text, file)
 }
 
 /// Read a text file: an I/O error names the file; a file that is not UTF-8 is refused with the line and

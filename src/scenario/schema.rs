@@ -106,7 +106,7 @@ pub struct ConductorSpec {
     #[serde(default)]
     pub thermal_expansion_per_k: f64,
     /// temperature at which the wire is stress-free at its unstretched length, and its initial
-    /// temperature `u_ref` [K], in (0, 5000]; default 268.15 K (-5 C, the ambient temperature of section 5.4)
+    /// temperature `u_ref` [K], in [173.15, 5000] (kelvin: -100 C is the floor); default 268.15 K (-5 C, the ambient temperature of section 5.4)
     #[serde(default = "default_reference_temperature")]
     pub reference_temperature_k: f64,
 }
@@ -508,6 +508,23 @@ pub(crate) fn three<'de, D: Deserializer<'de>>(d: D) -> Result<[f64; 3], D::Erro
 /// `[f64; 2]` from a TOML array of exactly two numbers (span ranges `[a, b]`).
 pub(crate) fn two<'de, D: Deserializer<'de>>(d: D) -> Result<[f64; 2], D::Error> {
     exactly(d)
+}
+
+/// `Vec<[f64; 2]>` from a TOML array of points of exactly two numbers each (`[t, value]` schedules,
+/// ground profiles); the message names the point.
+pub(crate) fn pairs<'de, D: Deserializer<'de>>(d: D) -> Result<Vec<[f64; 2]>, D::Error> {
+    let v: Vec<Vec<f64>> = Vec::deserialize(d)?;
+    v.iter()
+        .enumerate()
+        .map(|(k, p)| {
+            <[f64; 2]>::try_from(p.as_slice()).map_err(|_| {
+                serde::de::Error::custom(format!(
+                    "point [{k}] has {} numbers {p:?}: each point is exactly two numbers",
+                    p.len()
+                ))
+            })
+        })
+        .collect()
 }
 
 fn exactly<'de, D: Deserializer<'de>, const K: usize>(d: D) -> Result<[f64; K], D::Error> {

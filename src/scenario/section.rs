@@ -146,7 +146,13 @@ pub(crate) fn check(
             Some(n) if (2..=MAX_SEGMENTS_PER_SPAN).contains(&n) => n,
             Some(n) => {
                 ok = false;
-                c.fail(&f("segments"), n, &format!("must be an integer in [2, {MAX_SEGMENTS_PER_SPAN}]"));
+                // Name the field the value was written in: the span's own, or the section's (once).
+                let allowed = format!("must be an integer in [2, {MAX_SEGMENTS_PER_SPAN}]");
+                if sp.segments.is_some() {
+                    c.fail(&f("segments"), n, &allowed);
+                } else if !c.0.iter().any(|p| p.field == "section.segments_per_span") {
+                    c.fail("section.segments_per_span", n, &allowed);
+                }
                 0
             }
             None => {
@@ -270,6 +276,25 @@ pub(crate) fn check(
                         number(h),
                         "stringing by tension needs loads.gravity_m_per_s2 > 0",
                     );
+                }
+                // A tension at or above the rated tensile strength breaks the conductor (lines are strung
+                // at 10 to 25 % of it); the field named is the one the value was written in.
+                if let Some(r) = rts.filter(|&r| r > 0.0 && h >= r) {
+                    let field = if sp.horizontal_tension_n.is_some() { f("horizontal_tension_n") } else {
+                        "section.horizontal_tension_n".to_string()
+                    };
+                    if !c.0.iter().any(|p| p.field == field) {
+                        ok = false;
+                        c.fail(
+                            &field,
+                            number(h),
+                            &format!(
+                                "must be below conductor.rated_tensile_strength_n = {} N: the conductor would break \
+                                 (lines are strung at 10 to 25 % of it)",
+                                number(r)
+                            ),
+                        );
+                    }
                 }
                 Some(Stringing::HorizontalTension(h))
             }

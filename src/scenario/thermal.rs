@@ -24,7 +24,7 @@
 use serde::Deserialize;
 
 use super::Problem;
-use super::validate::Check;
+use super::validate::{Check, number};
 use crate::thermal::deicing::{Deicing, DeicingOptions, IceShell, MELTING_POINT_K, ShedCriterion};
 use crate::thermal::transient::{CurrentSchedule, Transient};
 use crate::thermal::weather::{Atmosphere, Sun, Weather};
@@ -62,27 +62,25 @@ pub struct SunSpec {
     pub solar_hour: f64,
     /// azimuth of the line's axis `Z_l` [deg], in [0, 360], clockwise from north (90: east-west)
     pub line_azimuth_deg: f64,
-    /// IEEE 738 clear-sky model: `"clear"` (default) or `"industrial"`
+    /// IEEE 738 clear-sky model: `"clear"` (default) or `"industrial"` (IEEE 738 only)
     #[serde(default)]
-    pub atmosphere: AtmosphereSpec,
-    /// CIGRE TB 601 clearness ratio `N_s` [-], in [0, 1.5]; default 1 (clean sky)
-    #[serde(default = "one")]
-    pub clearness_ratio: f64,
-    /// ground albedo `F` [-], in [0, 1]; default 0.1 (rural ground, TB 601 table)
-    #[serde(default = "albedo")]
-    pub albedo: f64,
+    pub atmosphere: Option<AtmosphereSpec>,
+    /// CIGRE TB 601 clearness ratio `N_s` [-], in [0, 1.5]; default 1 (clean sky) (TB 601 only)
+    #[serde(default)]
+    pub clearness_ratio: Option<f64>,
+    /// ground albedo `F` [-], in [0, 1]; default 0.1 (rural ground, TB 601 table) (TB 601 only)
+    #[serde(default)]
+    pub albedo: Option<f64>,
     /// measured global horizontal radiation [W/m^2], in [0, 1500] (TB 601 only; replaces the computed one)
     #[serde(default)]
     pub measured_global_w_per_m2: Option<f64>,
 }
 
-fn one() -> f64 {
-    1.0
-}
+/// TB 601's clearness ratio of a clean sky `N_s` [-] (TB 601, solar radiation).
+const CLEAN_SKY: f64 = 1.0;
 
-fn albedo() -> f64 {
-    0.1
-}
+/// Ground albedo of rural ground `F` [-] (TB 601, table of albedos).
+const RURAL_ALBEDO: f64 = 0.1;
 
 /// IEEE 738 atmosphere.
 #[derive(Clone, Copy, Debug, Default, Deserialize, PartialEq, Eq)]
@@ -165,6 +163,7 @@ pub struct ThermalSpec {
     /// the current as `[t [s], I [A]]` points: piecewise linear, constant before the first and after the
     /// last, a step where two points share a time; times non-decreasing in [0, 1e8] s, currents in
     /// [0, 1e5] A
+    #[serde(deserialize_with = "super::schema::pairs")]
     pub current_a: Vec<[f64; 2]>,
     /// the longest RK4 step of the heat balance [s], in [1e-3, 600]; default 1 s
     #[serde(default = "thermal_step")]
@@ -194,19 +193,19 @@ pub fn weather(w: &WeatherSpec) -> Weather {
             day_of_year: s.day_of_year,
             solar_hour: s.solar_hour,
             line_azimuth_deg: s.line_azimuth_deg,
-            atmosphere: match s.atmosphere {
+            atmosphere: match s.atmosphere.unwrap_or_default() {
                 AtmosphereSpec::Clear => Atmosphere::Clear,
                 AtmosphereSpec::Industrial => Atmosphere::Industrial,
             },
-            clearness_ratio: s.clearness_ratio,
-            albedo: s.albedo,
+            clearness_ratio: s.clearness_ratio.unwrap_or(CLEAN_SKY),
+            albedo: s.albedo.unwrap_or(RURAL_ALBEDO),
             measured_global_w_per_m2: s.measured_global_w_per_m2,
         }),
     }
 }
 
 /// Check a weather table under the field prefix `at` (e.g. `thermal.weather`).
-pub fn check_weather(c: &mut Check, at: &str, w: &WeatherSpec) {
+pub fn check_weather(c: &mut Check, at: &str, w: &WeatherSpec, standard: StandardSpec) {
     c.within(
         &format!("{at}.air_temperature_k"),
         w.air_temperature_k,
@@ -222,12 +221,52 @@ pub fn check_weather(c: &mut Check, at: &str, w: &WeatherSpec) {
         c.within(&format!("{at}.sun.day_of_year"), s.day_of_year, 1.0, 366.0, "must be in [1, 366]");
         c.within(&format!("{at}.sun.solar_hour"), s.solar_hour, 0.0, 24.0, "must be in [0, 24] h");
         c.within(&format!("{at}.sun.line_azimuth_deg"), s.line_azimuth_deg, 0.0, 360.0, "must be in [0, 360] deg");
-        c.within(&format!("{at}.sun.clearness_ratio"), s.clearness_ratio, 0.0, 1.5, "must be in [0, 1.5]");
-        c.within(&format!("{at}.sun.albedo"), s.albedo, 0.0, 1.0, "must be in [0, 1]");
+        if let Some(n) = s.clearness_ratio {
+            c.within(&format!("{at}.sun.clearness_ratio"), n, 0.0, 1.5, "must be in [0, 1.5]");
+        }
+        if let Some(a) = s.albedo {
+            c.within(&format!("{at}.sun.albedo"), a, 0.0, 1.0, "must be in [0, 1]");
+        }
+        // A measured radiation the chosen standard would ignore: the run would silently use a computed
+        // clear sky instead of the measurement (the sky descriptors only warn: [`unused_weather_inputs`]).
+        if let (StandardSpec::Ieee738, Some(g)) = (standard, s.measured_global_w_per_m2) {
+            c.fail(
+                &format!("{at}.sun.measured_global_w_per_m2"),
+                number(g),
+                "is used only with standard = \"cigre601\" (CIGRE TB 601): IEEE 738 computes the radiation from \
+                 the sun's position and atmosphere and would ignore the measurement",
+            );
+        }
         if let Some(g) = s.measured_global_w_per_m2 {
             c.within(&format!("{at}.sun.measured_global_w_per_m2"), g, 0.0, 1500.0, "must be in [0, 1500] W/m^2");
         }
     }
+}
+
+/// The sky descriptors of `w` that `standard` does not read (TB 601's `clearness_ratio` and `albedo` under
+/// IEEE 738, IEEE 738's `atmosphere` under TB 601): valid, since one weather may be computed by both
+/// standards, but ignored, so each is a warning that says so.
+pub fn unused_weather_inputs(at: &str, w: &WeatherSpec, standard: StandardSpec) -> Vec<super::Warning> {
+    let Some(s) = &w.sun else { return Vec::new() };
+    let (given, reason): (Vec<(&str, String)>, &str) = match standard {
+        StandardSpec::Ieee738 => (
+            [s.clearness_ratio.map(|v| ("clearness_ratio", number(v))), s.albedo.map(|v| ("albedo", number(v)))]
+                .into_iter()
+                .flatten()
+                .collect(),
+            "read by CIGRE TB 601 only (standard = \"cigre601\"): ignored by IEEE 738, which describes the sky by \
+             atmosphere",
+        ),
+        StandardSpec::Cigre601 => (
+            s.atmosphere.map(|a| ("atmosphere", format!("\"{}\"", format!("{a:?}").to_lowercase()))).into_iter().collect(),
+            "read by IEEE 738 only (standard = \"ieee738\"): ignored by CIGRE TB 601, which describes the sky by \
+             clearness_ratio and albedo",
+        ),
+    };
+    given
+        .into_iter()
+        .map(|(field, value)| super::Warning { field: format!("{at}.sun.{field}"), value, reason: reason.into() })
+        .collect()
 }
 
 /// The catalogue conductor named at `field`, or a problem naming the names available.
@@ -267,7 +306,7 @@ pub fn check_current(c: &mut Check, field: &str, points: &[[f64; 2]]) -> Option<
 /// conduction events (the thermal model owns the temperature).
 pub(crate) fn check(c: &mut Check, t: &ThermalSpec, temperature_event: Option<usize>) {
     conductor(c, "thermal.conductor", &t.conductor);
-    check_weather(c, "thermal.weather", &t.weather);
+    check_weather(c, "thermal.weather", &t.weather, t.standard);
     check_current(c, "thermal.current_a", &t.current_a);
     c.within("thermal.step_s", t.step_s, 1.0e-3, 600.0, "must be in [1e-3, 600] s");
     if let Some(k) = t.initial_temperature_k {
@@ -436,6 +475,7 @@ fn deicing_history(
 #[serde(deny_unknown_fields)]
 pub struct TransientSpec {
     /// the current as `[t [s], I [A]]` points (as `thermal.current_a` of a scenario)
+    #[serde(deserialize_with = "super::schema::pairs")]
     pub current_a: Vec<[f64; 2]>,
     /// end of the transient [s], in (0, 1e7]
     pub end_time_s: f64,
@@ -502,22 +542,84 @@ pub struct ThermalCase {
     pub deicing: Option<DeicingCaseSpec>,
 }
 
+/// Whether TOML text is a thermal case (a file for `ohl thermal`): a top-level `weather` table, or a
+/// `conductor` given as a name rather than a `[conductor]` table. Text that does not parse is not.
+pub fn is_thermal_case(text: &str) -> bool {
+    text.parse::<toml::Table>()
+        .is_ok_and(|t| t.get("weather").is_some_and(toml::Value::is_table) || t.get("conductor").is_some_and(toml::Value::is_str))
+}
+
+/// What a file that is not a thermal case is, and the command that reads it; `None` for a thermal case
+/// or text that does not parse.
+fn other_kind(text: &str) -> Option<&'static str> {
+    let t = text.parse::<toml::Table>().ok()?;
+    if is_thermal_case(text) {
+        None
+    } else if t.contains_key("line") {
+        Some("a line scenario ([line]), not a thermal case: run it with `ohl run`")
+    } else if t.contains_key("rod") {
+        Some("a heat-conduction case ([rod]), not a thermal case: run it with `ohl paper`")
+    } else if t.contains_key("rating") {
+        Some("a scenario with a [rating] table, not a thermal case: rate it with `ohl rating`")
+    } else if t.get("conductor").is_some_and(toml::Value::is_table) {
+        Some("a wire scenario ([conductor]), not a thermal case: run it with `ohl run`")
+    } else {
+        None
+    }
+}
+
 /// Parse and validate a thermal case; `file` names it in messages.
 pub fn parse_case(text: &str, file: &str) -> Result<ThermalCase, super::InputError> {
-    let case: ThermalCase = toml::from_str(text).map_err(|e| super::parse_error_at(text, file, e))?;
+    if let Some(message) = other_kind(text) {
+        return Err(super::InputError::Parse { file: file.to_string(), message: message.to_string() });
+    }
+    let case: ThermalCase = super::from_toml(text, file)?;
     let mut c = Check(Vec::new());
     conductor(&mut c, "conductor", &case.conductor);
-    check_weather(&mut c, "weather", &case.weather);
+    check_weather(&mut c, "weather", &case.weather, case.standard);
     for (k, &i) in case.current_a.iter().enumerate() {
         c.within(&format!("current_a[{k}]"), i, 0.0, 1.0e5, "must be in [0, 1e5] A");
     }
+    let air = case.weather.air_temperature_k;
     for (k, &t) in case.max_temperature_k.iter().enumerate() {
-        c.within(&format!("max_temperature_k[{k}]"), t, 250.0, 600.0, "must be in [250, 600] K");
+        if c.within(&format!("max_temperature_k[{k}]"), t, 250.0, 600.0, "must be in [250, 600] K") && t <= air {
+            c.fail(
+                &format!("max_temperature_k[{k}]"),
+                number(t),
+                &format!(
+                    "must be above the air temperature weather.air_temperature_k = {} K: a conductor carrying \
+                     current is warmer than the air, so no current keeps it at or below the air temperature",
+                    number(air)
+                ),
+            );
+        }
+    }
+    if case.current_a.is_empty() && case.max_temperature_k.is_empty() && case.transient.is_none() && case.deicing.is_none()
+    {
+        c.fail(
+            "current_a",
+            "(missing)",
+            "the case asks nothing: give current_a (steady temperatures), max_temperature_k (ampacities), a \
+             [transient] or a [deicing] table",
+        );
     }
     if let Some(t) = &case.transient {
         check_current(&mut c, "transient.current_a", &t.current_a);
         c.within("transient.end_time_s", t.end_time_s, f64::MIN_POSITIVE, 1.0e7, "must be in (0, 1e7] s");
-        c.within("transient.step_s", t.step_s, 1.0e-3, 600.0, "must be in [1e-3, 600] s");
+        if c.within("transient.step_s", t.step_s, 1.0e-3, 600.0, "must be in [1e-3, 600] s")
+            && t.end_time_s / t.step_s > MAX_HISTORY_SAMPLES
+        {
+            c.fail(
+                "transient.step_s",
+                number(t.step_s),
+                &format!(
+                    "must be at least {} s for transient.end_time_s = {} s: the transient takes one RK4 step and \
+                     writes one row of transient.csv per step, at most {MAX_HISTORY_SAMPLES:e}",
+                    number(t.end_time_s / MAX_HISTORY_SAMPLES),
+                    number(t.end_time_s)
+                ),
+            );
+        }
         if let Some(k) = t.initial_temperature_k {
             c.within("transient.initial_temperature_k", k, 200.0, 500.0, "must be in [200, 500] K");
         }
@@ -528,7 +630,23 @@ pub fn parse_case(text: &str, file: &str) -> Result<ThermalCase, super::InputErr
     if let Some(d) = &case.deicing {
         c.within("deicing.thickness_m", d.thickness_m, 1.0e-4, 0.1, "must be in [1e-4, 0.1] m");
         c.within("deicing.density_kg_per_m3", d.density_kg_per_m3, 100.0, 1000.0, "must be in [100, 1000] kg/m^3");
-        c.within("deicing.step_s", d.step_s, 1.0e-3, 600.0, "must be in [1e-3, 600] s");
+        if c.within("deicing.step_s", d.step_s, 1.0e-3, 600.0, "must be in [1e-3, 600] s") {
+            // Each de-icing run goes to its shedding, at most the longest time asked (the de-icing's default
+            // cap is a day); the current that sheds in time is found by bisection over such runs.
+            let horizon = d.shed_within_s.iter().copied().fold(DeicingOptions::default().max_time_s, f64::max);
+            if horizon / d.step_s > MAX_HISTORY_SAMPLES {
+                c.fail(
+                    "deicing.step_s",
+                    number(d.step_s),
+                    &format!(
+                        "must be at least {} s: a de-icing run may last {} s (a day, or the longest \
+                         deicing.shed_within_s), at most {MAX_HISTORY_SAMPLES:e} steps",
+                        number(horizon / MAX_HISTORY_SAMPLES),
+                        number(horizon)
+                    ),
+                );
+            }
+        }
         for (k, &i) in d.current_a.iter().enumerate() {
             c.within(&format!("deicing.current_a[{k}]"), i, f64::MIN_POSITIVE, 1.0e5, "must be in (0, 1e5] A");
         }

@@ -111,6 +111,10 @@ pub const MIN_STEPS_PER_GUST: f64 = 10.0;
 /// Largest time accepted anywhere [s] (about three years).
 pub const MAX_TIME_S: f64 = 1.0e8;
 
+/// Lowest stress-free (stringing) temperature of a conductor [K]: -100 C, below the coldest air measured on
+/// Earth (-89.2 C, Vostok 1983, WMO). A value below it is a temperature typed in Celsius (15 for 15 C).
+pub const MIN_REFERENCE_TEMPERATURE_K: f64 = 173.15;
+
 /// All problems of a scenario; empty when it is valid.
 pub fn validate(s: &Scenario) -> Vec<Problem> {
     check(s).0
@@ -159,9 +163,10 @@ pub(crate) fn check(s: &Scenario) -> (Vec<Problem>, Derived) {
     c.within(
         "conductor.reference_temperature_k",
         cd.reference_temperature_k,
-        f64::MIN_POSITIVE,
+        MIN_REFERENCE_TEMPERATURE_K,
         5000.0,
-        "must be in (0, 5000] K",
+        "must be in [173.15, 5000] K: a temperature in kelvin, not Celsius (15 C is 288.15 K); the floor \
+         -100 C is below the coldest air measured on Earth (-89.2 C)",
     );
     let d_ok = match cd.diameter_m {
         Some(d) => c.within(
@@ -1029,6 +1034,17 @@ fn check_ground_and_events(
                     thermal(c, &f("hold_temperature_k"), hold_temperature_k);
                 }
                 c.within(&f("heat_time_per_s"), heat_time_per_s, f64::MIN_POSITIVE, 1.0e3, "must be in (0, 1000] 1/s");
+                if !(alpha.is_finite() && alpha > 0.0) {
+                    c.fail(
+                        &f("action"),
+                        "\"heat_conduction\"",
+                        &format!(
+                            "needs conductor.thermal_expansion_per_k > 0 (it is {alpha} 1/K): without thermal \
+                             expansion the conducted temperature changes neither the wire nor any output \
+                             (aluminium: 23.8e-6 1/K)"
+                        ),
+                    );
+                }
             }
             EventSpec::HeatConductionOff { .. } => {}
             EventSpec::Ground { .. } => {

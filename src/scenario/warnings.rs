@@ -16,7 +16,9 @@
 //!   at 10 m);
 //! - air density outside [0.9, 1.5] kg/m^3 (ISA: 0.91 at 3000 m altitude; 1.5 in air at -50 C);
 //! - a conductor temperature (reference, event or hold) below 223.15 K (-50 C) or above 523.15 K (250 C,
-//!   above the rated maximum of high-temperature conductors, 210 C for ZTACIR).
+//!   above the rated maximum of high-temperature conductors, 210 C for ZTACIR);
+//! - a sky descriptor of `[thermal.weather.sun]` the chosen standard does not read
+//!   ([`super::thermal::unused_weather_inputs`]).
 
 use std::fmt;
 
@@ -113,6 +115,9 @@ pub fn warnings(s: &Scenario) -> Vec<Warning> {
             _ => {}
         }
     }
+    if let Some(t) = &s.thermal {
+        w.extend(super::thermal::unused_weather_inputs("thermal.weather", &t.weather, t.standard));
+    }
     w
 }
 
@@ -148,5 +153,17 @@ mod tests {
             fields("[[events]]\ntime_s = 1.0\naction = \"temperature\"\ntemperature_k = 90.0\nrange = [0.0, 1.0]\n"),
             ["events[0].temperature_k"]
         );
+        // A sky descriptor the chosen standard does not read (the table parses; validation is not run here).
+        let thermal = |standard: &str, sky: &str| {
+            format!(
+                "[thermal]\nstandard = \"{standard}\"\nconductor = \"ACSR Drake\"\ncurrent_a = [[0.0, 500.0]]\n\
+                 [thermal.weather]\nair_temperature_k = 293.15\nwind_speed_m_per_s = 1.0\n[thermal.weather.sun]\n\
+                 latitude_deg = 45.0\nday_of_year = 172\nsolar_hour = 12.0\nline_azimuth_deg = 90.0\n{sky}"
+            )
+        };
+        assert_eq!(fields(&thermal("ieee738", "albedo = 0.2\n")), ["thermal.weather.sun.albedo"]);
+        assert_eq!(fields(&thermal("cigre601", "atmosphere = \"industrial\"\n")), ["thermal.weather.sun.atmosphere"]);
+        assert!(fields(&thermal("cigre601", "albedo = 0.2\nclearness_ratio = 0.8\n")).is_empty());
+        assert!(fields(&thermal("ieee738", "atmosphere = \"industrial\"\n")).is_empty());
     }
 }

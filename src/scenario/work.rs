@@ -200,8 +200,9 @@ pub enum Refusal {
     /// More node-steps than [`BUDGET_NODE_STEPS`].
     #[error(
         "the run is estimated at {0}: above the budget of {BUDGET_NODE_STEPS:.1e} node-steps \
-         (ohl::scenario::work::BUDGET_NODE_STEPS, about {BUDGET_WALL_S:.0} s); check duration and the \
-         time step (conductor stiffness, numerics.courant, geometry.segments), or allow it with --allow-large"
+         (ohl::scenario::work::BUDGET_NODE_STEPS, about {BUDGET_WALL_S:.0} s); {hint}, or allow it with \
+         --allow-large",
+        hint = node_steps_hint(.0)
     )]
     NodeSteps(WorkEstimate),
     /// More output than [`BUDGET_OUTPUT_BYTES`].
@@ -240,6 +241,21 @@ impl Plan {
     pub fn check_budget(&self) -> Result<WorkEstimate, Refusal> {
         let e = self.work_estimate();
         e.check().map(|()| e)
+    }
+}
+
+/// What drives a node-step refusal, in the fields that set it: the heat conduction where its sub-steps
+/// are most of the work, else the duration and the kernel's time step.
+fn node_steps_hint(e: &WorkEstimate) -> String {
+    if e.heat_node_updates > e.node_steps {
+        format!(
+            "most of it is heat conduction ({:.3e} heat node updates): each run step of the heat_conduction events \
+             takes ceil(dt heat_time_per_s / (h^2 / 2)) sub-steps with h = 1 / geometry.segments, so lower \
+             events[].heat_time_per_s (or the segments, or the time the conduction runs)",
+            e.heat_node_updates
+        )
+    } else {
+        "check the duration and the time step (conductor stiffness, numerics.courant, geometry.segments)".into()
     }
 }
 
@@ -336,11 +352,14 @@ mod tests {
 
     #[test]
     fn heat_conduction_counts_its_substeps() {
-        let p = plan_of(
-            "[duration]\nend_time_s = 2.0\n[[events]]\ntime_s = 0.5\naction = \"heat_conduction\"\n\
+        // Heat conduction needs thermal expansion (validation refuses it without).
+        let text = format!(
+            "{BASE}[duration]\nend_time_s = 2.0\n[[events]]\ntime_s = 0.5\naction = \"heat_conduction\"\n\
              hold_range = [0.4, 0.6]\nhold_temperature_k = 400.0\nheat_time_per_s = 1000.0\n\
-             [[events]]\ntime_s = 1.5\naction = \"heat_conduction_off\"\n",
-        );
+             [[events]]\ntime_s = 1.5\naction = \"heat_conduction_off\"\n"
+        )
+        .replace("linear_density_kg_per_m = 1.0\n", "linear_density_kg_per_m = 1.0\nthermal_expansion_per_k = 2.38e-5\n");
+        let p = plan(&parse(&text, "test").unwrap(), "test").unwrap();
         let e = p.work_estimate();
         let dt = p.solver.params().dt_s;
         let per_step = (dt * 1000.0 / (0.5 / 400.0)).ceil();

@@ -22,10 +22,10 @@ pub struct BenchArgs {
     #[arg(long)]
     baseline: Option<PathBuf>,
     /// repetitions per measurement (the fastest counts)
-    #[arg(long, default_value_t = 7)]
+    #[arg(long, default_value_t = 7, allow_negative_numbers = true)]
     reps: usize,
     /// node-steps per repetition
-    #[arg(long, default_value_t = 1.0e7)]
+    #[arg(long, default_value_t = 1.0e7, allow_negative_numbers = true)]
     node_steps: f64,
     /// a quick look: 3 repetitions of 2e6 node-steps, no run timing, nothing written
     #[arg(long)]

@@ -25,7 +25,7 @@ pub struct PaperArgs {
     #[arg(long, default_value = "figures")]
     out: PathBuf,
     /// number of cases run at the same time (`all`)
-    #[arg(long, default_value_t = 2)]
+    #[arg(long, default_value_t = 2, allow_negative_numbers = true)]
     threads: usize,
 }
 

@@ -53,10 +53,10 @@ struct RunArgs {
     #[arg(long, default_value = "sweep")]
     out: PathBuf,
     /// worker threads, each running one case at a time (default: all cores)
-    #[arg(long, value_parser = clap::value_parser!(u16).range(1..))]
+    #[arg(long, value_parser = clap::value_parser!(u16).range(1..), allow_negative_numbers = true)]
     threads: Option<u16>,
     /// run only the cases i with i mod N = K (K from 0: 0/N to N-1/N)
-    #[arg(long, value_name = "K/N")]
+    #[arg(long, value_name = "K/N", allow_hyphen_values = true)]
     shard: Option<String>,
     /// write each case's scenario.toml and outputs (timeseries.csv, snapshots.csv, summary.json) to
     /// OUT/cases/ID/

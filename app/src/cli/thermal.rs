@@ -36,6 +36,9 @@ pub fn main(args: ThermalArgs) -> ExitCode {
             return ExitCode::from(2);
         }
     };
+    for w in thermal::unused_weather_inputs("weather", &case.weather, case.standard) {
+        err!("warning: {file}: {w}");
+    }
     match evaluate(&case, &args.out) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {

@@ -50,7 +50,9 @@
 use serde::Deserialize;
 
 use ohl::scenario::validate::{Check, Problem};
-use ohl::scenario::{InputError, parse_error_at};
+use ohl::scenario::validate::number;
+use ohl::scenario::work::{BUDGET_NODE_STEPS, BUDGET_WALL_S};
+use ohl::scenario::{InputError, from_toml};
 
 use super::spec::{CheckSpec, check_row};
 use ohl::heat::HeatBoundary;
@@ -287,6 +289,22 @@ pub fn validate(h: &HeatCase) -> Vec<Problem> {
     if h.runs.is_empty() {
         c.fail("runs", "[]", "at least one [[runs]] entry");
     }
+    // The least step ratio within the work budget; above 1/2 no run fits, whatever its ratio.
+    let n = r.segments as f64;
+    let least_ratio = (n + 1.0) * h.stop.max_time * n * n / BUDGET_NODE_STEPS;
+    if least_ratio > 0.5 && least_ratio.is_finite() {
+        c.fail(
+            "rod.segments",
+            r.segments,
+            &format!(
+                "with stop.max_time = {} a run takes at least {:.3e} node updates even at the largest step ratio \
+                 1/2 ((N + 1) stop.max_time N^2 / r), above the budget of {BUDGET_NODE_STEPS:.1e} (about \
+                 {BUDGET_WALL_S:.0} s): lower rod.segments (the paper's test uses 50) or stop.max_time",
+                number(h.stop.max_time),
+                2.0 * least_ratio * BUDGET_NODE_STEPS
+            ),
+        );
+    }
     for (k, run) in h.runs.iter().enumerate() {
         c.within(
             &format!("runs[{k}].step_ratio"),
@@ -295,6 +313,24 @@ pub fn validate(h: &HeatCase) -> Vec<Problem> {
             0.5,
             "must be in (0, 1/2]: (5.2) is stable for r = tau / h^2 <= 1/2",
         );
+        // The work of the run: (N + 1) nodes over max_time / tau steps of tau = r h^2, h = 1 / N (it may stop
+        // earlier, when equalised); the same budget as a wire run (`ohl::scenario::work`).
+        let updates = (n + 1.0) * (h.stop.max_time * n * n / run.step_ratio).ceil();
+        if least_ratio <= 0.5 && run.step_ratio > 0.0 && !(updates <= BUDGET_NODE_STEPS) {
+            c.fail(
+                &format!("runs[{k}].step_ratio"),
+                number(run.step_ratio),
+                &format!(
+                    "the run would take up to {updates:.3e} node updates ((N + 1) stop.max_time N^2 / r with \
+                     rod.segments N = {} and stop.max_time = {}), above the budget of {BUDGET_NODE_STEPS:.1e} \
+                     (about {BUDGET_WALL_S:.0} s): raise it to at least {} (at most 1/2), or lower rod.segments \
+                     or stop.max_time",
+                    r.segments,
+                    number(h.stop.max_time),
+                    number(least_ratio)
+                ),
+            );
+        }
         if h.runs[..k].iter().any(|o| o.label == run.label) {
             c.fail(&format!("runs[{k}].label"), format!("{:?}", run.label), "labels must be unique");
         }
@@ -319,7 +355,7 @@ pub fn validate(h: &HeatCase) -> Vec<Problem> {
 
 /// Parse and validate a heat case from TOML text; `file` names it in messages.
 pub fn parse(text: &str, file: &str) -> Result<HeatCase, InputError> {
-    let case: HeatCase = toml::from_str(text).map_err(|e| parse_error_at(text, file, e))?;
+    let case: HeatCase = from_toml(text, file)?;
     let problems = validate(&case);
     if problems.is_empty() { Ok(case) } else { Err(InputError::Invalid { file: file.to_string(), problems }) }
 }

@@ -26,7 +26,7 @@
 //! ```
 
 use ohl::scenario::validate::{Check, Problem};
-use ohl::scenario::{InputError, parse_error_at};
+use ohl::scenario::{InputError, from_toml};
 use serde::Deserialize;
 
 /// A case file as the paper tool reads it: the `[paper]` table, every other key ignored (the library
@@ -40,7 +40,7 @@ struct CaseFile {
 /// The `[paper]` table of a case file's text (none if it has none), validated against the run's end
 /// time `end_s` [s]; `file` names it in messages.
 pub fn parse(text: &str, file: &str, end_s: f64) -> Result<Option<PaperSpec>, InputError> {
-    let case: CaseFile = toml::from_str(text).map_err(|e| parse_error_at(text, file, e))?;
+    let case: CaseFile = from_toml(text, file)?;
     let Some(spec) = case.paper else { return Ok(None) };
     let problems = validate(&spec, end_s);
     if problems.is_empty() { Ok(Some(spec)) } else { Err(InputError::Invalid { file: file.to_string(), problems }) }

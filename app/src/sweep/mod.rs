@@ -125,7 +125,7 @@ impl Sweep {
     pub fn new(base_path: &Path, spec: Spec, allow_large: bool) -> Result<Sweep, SweepError> {
         let file = base_path.display().to_string();
         let base_text = scenario::read_text(base_path)?;
-        let base: Table = base_text.parse().map_err(|e| scenario::parse_error_at(&base_text, &file, e))?;
+        let base: Table = scenario::from_toml(&base_text, &file)?;
         let field_error = |source: overrides::PathError| SweepError::Field { file: file.clone(), source };
         let kind = if base.contains_key("line") {
             Kind::Line { conductors: line_conductors(&base).map_err(field_error)? }
