@@ -122,41 +122,6 @@ pub fn warnings(s: &Scenario) -> Vec<Warning> {
     w
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    const BASE: &str = "[conductor]\naxial_stiffness_n = 792000.0\nlinear_density_kg_per_m = 1.0\n\
-        [geometry]\nleft_support_m = [0.0, 0.0, 0.0]\nright_support_m = [0.0, 160.0, 0.0]\nsegments = 20\n\
-        [duration]\nend_time_s = 0.5\n";
-
-    fn fields(extra: &str) -> Vec<String> {
-        let s: Scenario = toml::from_str(&format!("{BASE}{extra}")).unwrap();
-        warnings(&s).into_iter().map(|w| w.field).collect::<Vec<_>>()
-    }
-
-    #[test]
-    fn defaults_give_no_warning() {
-        assert!(fields("").is_empty());
-    }
-
-    #[test]
-    fn each_doubtful_value_is_named() {
-        assert_eq!(fields("[numerics]\nsmoothing = 0.0\n"), ["numerics.smoothing"]);
-        // Any damping, or the linear law, silences the damping warning.
-        assert!(fields("[numerics]\nsmoothing = 0.0\neta_n_s = 100.0\ncourant = 0.5\n").is_empty());
-        assert!(fields("[numerics]\nsmoothing = 0.0\nmass_damping_per_s = 0.1\n").is_empty());
-        assert_eq!(
-            fields("[loads.wind]\nlaw = \"aerodynamic\"\nspeed_m_per_s = 80.0\nair_density_kg_per_m3 = 0.5\n"),
-            ["loads.wind.speed_m_per_s", "loads.wind.air_density_kg_per_m3"]
-        );
-        assert_eq!(
-            fields("[[events]]\ntime_s = 1.0\naction = \"temperature\"\ntemperature_k = 90.0\nrange = [0.0, 1.0]\n"),
-            ["events[0].temperature_k"]
-        );
-    }
-}
-
 /// The warning that the section element `limit` ([`StepLimit`]), not the conductor, sets the time step
 /// `dt_s` [s] (its stable step times the Courant number `courant`), below the conductor's Courant step
 /// `conductor_step_s` [s]; `None` where the conductor's step is the run's. `smoothing` is the smoothing per
@@ -192,4 +157,39 @@ pub(crate) fn step_limit(
             number(courant)
         ),
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const BASE: &str = "[conductor]\naxial_stiffness_n = 792000.0\nlinear_density_kg_per_m = 1.0\n\
+        [geometry]\nleft_support_m = [0.0, 0.0, 0.0]\nright_support_m = [0.0, 160.0, 0.0]\nsegments = 20\n\
+        [duration]\nend_time_s = 0.5\n";
+
+    fn fields(extra: &str) -> Vec<String> {
+        let s: Scenario = toml::from_str(&format!("{BASE}{extra}")).unwrap();
+        warnings(&s).into_iter().map(|w| w.field).collect::<Vec<_>>()
+    }
+
+    #[test]
+    fn defaults_give_no_warning() {
+        assert!(fields("").is_empty());
+    }
+
+    #[test]
+    fn each_doubtful_value_is_named() {
+        assert_eq!(fields("[numerics]\nsmoothing = 0.0\n"), ["numerics.smoothing"]);
+        // Any damping, or the linear law, silences the damping warning.
+        assert!(fields("[numerics]\nsmoothing = 0.0\neta_n_s = 100.0\ncourant = 0.5\n").is_empty());
+        assert!(fields("[numerics]\nsmoothing = 0.0\nmass_damping_per_s = 0.1\n").is_empty());
+        assert_eq!(
+            fields("[loads.wind]\nlaw = \"aerodynamic\"\nspeed_m_per_s = 80.0\nair_density_kg_per_m3 = 0.5\n"),
+            ["loads.wind.speed_m_per_s", "loads.wind.air_density_kg_per_m3"]
+        );
+        assert_eq!(
+            fields("[[events]]\ntime_s = 1.0\naction = \"temperature\"\ntemperature_k = 90.0\nrange = [0.0, 1.0]\n"),
+            ["events[0].temperature_k"]
+        );
+    }
 }
