@@ -183,11 +183,6 @@ fn invalid_fields_are_named_with_their_path() {
             "line.towers[0].elastic.along_n_per_m",
         ),
         ("string_damping_n_s = -3.0".into(), conductor("A", ""), "line.string_damping_n_s"),
-        (
-            String::new(),
-            conductor("A", "[line.conductors.bundle]\nsub_conductors = 2\ndiameter_m = 0.4\nspacer_stiffness_n_per_m = 1e9\nspacers = [{ span = 0, at_fraction = 0.5 }]"),
-            "numerics.courant",
-        ),
         (String::new(), conductor("A", "colour = \"red\""), "unknown field `colour`"),
         // A string on a tower cannot fail yet (it is a link of the line).
         (
@@ -487,4 +482,30 @@ fn recorded_samples_are_the_files_numbers() {
     assert_eq!(json(&files), json(&kept));
     assert!(files.samples.t_s.is_empty(), "nothing kept without record");
     std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// A spacer too stiff for the conductors' step (1e9 N/m between the clamps of a twin bundle, which the
+/// validation allows) no longer refuses the line (it was refused under `numerics.courant`): the line
+/// steps at its stable step (Gershgorin's bound of `ohl::scheme::line`, the bound `LineExplicit::new`
+/// checks) times `numerics.courant` = 0.5, below the conductors' own Courant step; the first conductor's
+/// warnings name the node that sets it; the run is stable over its 3 s.
+#[test]
+fn a_stiff_spacer_sets_the_lines_step() {
+    let spacer = "[line.conductors.bundle]\nsub_conductors = 2\ndiameter_m = 0.4\nspacer_stiffness_n_per_m = 1e9\nspacers = [{ span = 0, at_fraction = 0.5 }]";
+    let text = format!("[line]\n{}\n{GLOBAL}", conductor("A", spacer));
+    let plan = line::parse(&text, "stiff.toml").and_then(|s| line::plan(&s, "stiff.toml")).unwrap();
+    let dt = plan.line.params().dt_s;
+    // The conductors' own step: Courant 0.5 on the shortest segment at Drake's wave speed.
+    let w = plan.line.conductors()[0].wire();
+    let l0 = (0..w.segments()).map(|j| w.rest_length[j]).fold(f64::INFINITY, f64::min);
+    let own = 0.5 * l0 / (2.9e7f64 / 1.628).sqrt();
+    let warnings: Vec<String> = plan.plans[0].warnings.iter().map(|w| w.to_string()).collect();
+    println!("dt {dt:.6e} s (conductors {own:.6e} s); {warnings:?}");
+    assert!(dt < own, "{dt} vs {own}");
+    let w = warnings.iter().find(|w| w.contains("sets the time step")).expect("a warning names the limit");
+    assert!(w.starts_with("field `line` = conductor 'A"), "{w}");
+    assert!(w.contains(&format!("the line steps at {dt:.4e} s instead of the conductors' {own:.4e} s")), "{w}");
+    let o = run_line(plan, None).unwrap();
+    println!("{} steps to t = {} s", o.summary.steps, o.summary.final_time_s);
+    assert!((o.summary.final_time_s - 3.0).abs() < 1e-9, "{}", o.summary.final_time_s);
 }

@@ -281,3 +281,67 @@ fn a_broken_span_hangs_straight_down_from_its_supports() {
     );
     assert!(left < 1e-8 && right < 1e-8, "{left} {right}");
 }
+
+/// The same broken span above a level, frictionless ground 12 m below its supports
+/// (`statics::solve_on_ground`): each piece hangs straight down from its support as long as it is above
+/// the ground, and the rest of it lies on the ground. The discrete equilibrium is known exactly: with
+/// segments of 3.2 m, three nodes hang below each support (at 3.2, 6.4, 9.6 m, stretched by at most
+/// 1.2e-4), the fourth would be 12.8 m down and lies on the ground, joined to the last hanging node by a
+/// slack segment (2.4 m of drop, 3.2 m long), so the ground holds no tension: each support carries the
+/// weight of its own node and the three hanging ones, `g (m_0 + m_1 + m_2 + m_3)`, and no horizontal
+/// load, and the hanging nodes are at the heights of the previous test. Tolerances: positions 1e-8 m as
+/// there; the reactions to 1e-8 of the weight they carry (the solve's residual is about 1e-10 of a nodal
+/// weight); the lying nodes sink by their weight over the contact's stiffness `max EA / l0` (31.4 N over
+/// 2.5e5 N/m = 1.3e-4 m), asserted to rounding.
+///
+/// Start: the pieces hang 10 degrees off the vertical down to the ground and lie on it towards their free
+/// ends (as `ohl_app::cases` re-hangs them): from there the hanging part swings to the vertical and the
+/// lying part slides 2 to 3 m along the ground.
+#[test]
+fn a_broken_span_hangs_to_a_frictionless_ground_and_lies_on_it() {
+    let n = 50;
+    let ground_m = -12.0;
+    let mut s = solver(wire(n, SPAN_M, 0.0, LawKind::TensionOnly, Start::Straight), None);
+    s.wire_mut().break_segment(7);
+    s.set_ground(Some(ohl::scheme::Ground::level(ground_m, 0.6, 0.0)));
+    let (l0, tilt) = (SPAN_M / n as f64, 10f64.to_radians());
+    for (top, nodes) in [(0, (1..=7).collect::<Vec<_>>()), (n, (8..n).rev().collect())] {
+        let side = if top == 0 { 1.0 } else { -1.0 };
+        let (mut y, mut z) = (s.wire().x[1][top], 0.0);
+        for i in nodes {
+            if z - l0 * tilt.cos() > ground_m {
+                (y, z) = (y + side * l0 * tilt.sin(), z - l0 * tilt.cos());
+            } else {
+                (y, z) = (y + side * l0, ground_m);
+            }
+            s.wire_mut().x[1][i] = y;
+            s.wire_mut().x[2][i] = z;
+        }
+    }
+    let report = statics::solve_on_ground(&mut s, &StaticOptions::default()).unwrap();
+    assert!(s.ground().is_some(), "the ground stays on the solver");
+    let w = s.wire();
+    let k_contact = statics::jacobian::max_axial_stiffness_n_per_m(&s);
+    let mut worst: f64 = 0.0;
+    for (top, hanging, lying) in [(0, vec![1, 2, 3], 4..=7), (n, vec![49, 48, 47], 8..=46)] {
+        let mut z = 0.0;
+        for (d, &i) in hanging.iter().enumerate() {
+            let below: f64 = hanging[d..].iter().map(|&b| w.mass[b]).sum();
+            z -= l0 * (1.0 + G * below / EA_N);
+            worst = worst.max((w.x[2][i] - z).abs()).max((w.x[1][i] - w.x[1][top]).abs()).max(w.x[0][i].abs());
+        }
+        for i in lying {
+            let sink = w.mass[i] * G / k_contact;
+            assert!((w.x[2][i] - (ground_m - sink)).abs() < 1e-12, "node {i} at {}", w.x[2][i]);
+        }
+    }
+    let reactions = statics::support_reactions(&mut s);
+    for (node, r) in &reactions {
+        let nodes = if *node == 0 { [0, 1, 2, 3] } else { [n, n - 1, n - 2, n - 3] };
+        let carried = G * nodes.iter().map(|&i| s.wire().mass[i]).sum::<f64>();
+        println!("support {node}: reaction {r:?} N, hanging weight {carried:.9} N");
+        assert!((r[2] - carried).abs() < 1e-8 * carried && r[0].abs().max(r[1].abs()) < 1e-8 * carried, "{r:?}");
+    }
+    println!("{} iterations; largest position error of the hanging nodes {worst:.2e} m", report.iterations);
+    assert!(worst < 1e-8, "{worst}");
+}

@@ -317,6 +317,17 @@ pub fn build(s: &Scenario) -> Result<Plan, Vec<Problem>> {
         wind_scale: s.loads.wind.as_ref().map_or(1.0, |w| w.initial_scale),
         wind_gate: WindGate::Always,
     };
+    let mut warnings = super::warnings::warnings(s);
+    // A clamp or crossarm that sets the step (module doc of `super::section`): the conductor's own step is
+    // validation's `C ds / c` over the section's fastest wave and shortest crossing time.
+    if let Some(sg) = &d.section
+        && let Some(limit) = &sg.step_limit
+    {
+        let cw = sg.wave_speed_max_m_per_s;
+        let conductor_step_s = crate::scheme::courant::time_step(s.numerics.courant, sg.crossing_time_s * cw, cw);
+        let n = &s.numerics;
+        warnings.extend(super::warnings::step_limit(limit, n.courant, conductor_step_s, dt, n.smoothing));
+    }
     let params = StepParams {
         dt_s: dt,
         smoothing: s.numerics.smoothing,
@@ -409,7 +420,7 @@ pub fn build(s: &Scenario) -> Result<Plan, Vec<Problem>> {
         probes,
         peaks_from_s: s.output.peaks_from_s,
         initial_equilibrium,
-        warnings: super::warnings::warnings(s),
+        warnings,
         spans: if d.section.is_some() { spans.iter().map(|&(f, n)| (f, f + n)).collect() } else { Vec::new() },
         thermal,
     })

@@ -28,6 +28,12 @@
 //! its own (the line runs at the smallest step of its conductors, checked against the stable step of every
 //! link, [`crate::scheme::line`]) and the other conductors' events fall at its own event times (every
 //! conductor lands on every event time). Each conductor keeps its own speed bound.
+//!
+//! Where a link or an elastic tower is too stiff for the conductors' step (above the line's stable step,
+//! Gershgorin's bound of [`crate::scheme::line`]), the line runs at that stable step times
+//! `numerics.courant` instead, as a section's clamps and crossarms set a section's step, and the first
+//! conductor's warnings say which node or support sets it and how many more steps the run takes (the
+//! smoothing, per step, then damps more per second). A step the bound admits is kept as it was.
 
 use serde::Deserialize;
 
@@ -818,7 +824,34 @@ fn assemble(s: &LineScenario, plans: Vec<Plan>, global_only: Vec<Option<Plan>>) 
         .map(|p| *p.solver.params())
         .min_by(|a, b| a.dt_s.total_cmp(&b.dt_s))
         .expect("at least one conductor");
-    let line = LineExplicit::new(&model, StepParams { ..params }).map_err(|e| match e {
+    let mut params = params;
+    let mut step_warning = None;
+    let line = match LineExplicit::new(&model, params) {
+        // Too stiff for the conductors' step: the line's stable step times the Courant number (module doc).
+        Err(LineError::Step { dt_s, limit_s, at, stiffness_n_per_m, damping_n_s_per_m, mass_kg }) => {
+            params.dt_s = s.numerics.courant * limit_s;
+            let ratio = dt_s / params.dt_s;
+            let damping = if params.smoothing > 0.0 {
+                format!("; the smoothing acts per step, so it damps {ratio:.2} times as much per second")
+            } else {
+                String::new()
+            };
+            step_warning = Some(super::Warning {
+                field: "line".into(),
+                value: at.clone(),
+                reason: format!(
+                    "sets the time step: {at} (stiffness {stiffness_n_per_m:.4e} N/m, damping \
+                     {damping_n_s_per_m:.4e} N s/m, mass {mass_kg:.4e} kg) is stable below {limit_s:.4e} s \
+                     (Gershgorin's bound, docs/line.md), so at numerics.courant = {} the line steps at {:.4e} s \
+                     instead of the conductors' {dt_s:.4e} s, {ratio:.2} times as many steps{damping}",
+                    s.numerics.courant, params.dt_s
+                ),
+            });
+            LineExplicit::new(&model, params)
+        }
+        built => built,
+    };
+    let line = line.map_err(|e| match e {
         LineError::Step { .. } => problem(
             "numerics.courant".into(),
             s.numerics.courant.to_string(),
@@ -854,6 +887,9 @@ fn assemble(s: &LineScenario, plans: Vec<Plan>, global_only: Vec<Option<Plan>>) 
     }
     for (p, c) in line_plans.iter_mut().zip(line.conductors()) {
         p.solver = c.clone();
+    }
+    if let Some(w) = step_warning {
+        line_plans[0].warnings.push(w);
     }
     Ok(LinePlan {
         name: s.name.clone().unwrap_or_else(|| "line".into()),

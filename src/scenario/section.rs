@@ -4,13 +4,16 @@
 //! is derived here once.
 //!
 //! Time step. The conductor's step is `C min_k(l0_k) / c` over the spans' segment lengths. Each clamp's
-//! stable step ([`crate::wire::insulator::damped_clamp_stable_step_s`], with the string's damper) is also
-//! multiplied by `C`, and the run takes the smaller: for real strings the clamp never governs (module doc
-//! of the insulator), unless their damper is far beyond a string's.
+//! stable step ([`crate::wire::insulator::damped_clamp_stable_step_s`], with the string's damper, and the
+//! string counted twice where an elastic crossarm's pivot moves at its other end) and each elastic
+//! crossarm pivot's ([`crate::wire::insulator::pivot_stable_step_s`]) is also multiplied by `C`, and the
+//! run takes the smallest: for real strings and tower tops neither governs (module doc of the insulator),
+//! unless a string's damper is far beyond a string's or a crossarm is stiff on a light pivot. Where one
+//! does, the run says which ([`StepLimit`], a warning of [`super::warnings`]).
 
 use super::schema::{Scenario, SectionSpec, ShapeSpec, SupportSpec};
 use super::validate::{Check, MAX_SEGMENTS, MAX_SPAN_M, number};
-use crate::wire::insulator::damped_clamp_stable_step_s;
+use crate::wire::insulator::{damped_clamp_stable_step_s, pivot_stable_step_s};
 use crate::wire::section::{self, CrossarmSpec, Layout, Section, Span, Stringing, Support, plumb_clamp};
 use crate::wire::{Conductor, Wire};
 
@@ -26,12 +29,29 @@ pub(crate) struct SectionGrid {
     pub layout: Layout,
     /// distance between the two dead-ends [m] (the length scale of `tau`)
     pub chord_m: f64,
-    /// smallest stable step of the clamps [s] (infinite without suspension supports)
+    /// smallest stable step of the clamps and of the elastic crossarms' pivots [s] (infinite without
+    /// suspension supports)
     pub clamp_step_s: f64,
+    /// the clamp or pivot with that smallest step
+    pub step_limit: Option<StepLimit>,
     /// largest longitudinal wave speed `sqrt(EA / rho0)` over the spans [m/s]
     pub wave_speed_max_m_per_s: f64,
     /// smallest crossing time of a segment by that wave, `min_j l0_j / c_j` [s] (the step at Courant 1)
     pub crossing_time_s: f64,
+}
+
+/// The clamp or elastic crossarm of a section with the smallest stable step (module doc).
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct StepLimit {
+    /// the support's field in the file: `section.supports[k]` (its string's clamp) or
+    /// `section.supports[k].crossarm` (the pivot)
+    pub field: String,
+    /// the element's values as the file gives them
+    pub value: String,
+    /// the element, its stiffness, damping and mass, as its Gershgorin bound counts them
+    pub what: String,
+    /// its stable step [s], before the Courant factor
+    pub step_s: f64,
 }
 
 /// Check `[section]` and build it; `None` if anything is invalid (each problem recorded in `c`).
@@ -391,12 +411,63 @@ pub(crate) fn check(
     let b = wire.position(wire.segments());
     let chord_m = (0..3).map(|i| (b[i] - a[i]).powi(2)).sum::<f64>().sqrt();
     let mut clamp_step_s = f64::INFINITY;
-    for ins in &wire.insulators {
+    let mut step_limit = None;
+    for (sup, spec) in sec.supports.iter().enumerate() {
+        let Some(ins) = wire.insulators.iter().find(|i| i.node == layout.support_node[sup]) else { continue };
         let i = ins.node;
         let side = |j: usize| wire.axial_stiffness_n[j] / wire.rest_length[j];
         let (k, c) = (ins.stiffness_n / ins.length_m, ins.damping_n_s / ins.length_m);
-        let dt = damped_clamp_stable_step_s(wire.mass[i], k, side(i - 1), side(i), c);
-        clamp_step_s = clamp_step_s.min(dt);
+        // The string couples the clamp to a moving pivot too (module doc of the insulator).
+        let coupled = if ins.crossarm.is_some() { 2.0 } else { 1.0 };
+        let twice = if ins.crossarm.is_some() { " counted twice (its pivot moves)" } else { "" };
+        let (kc, cc) = (coupled * k, coupled * c);
+        let (left, right) = (side(i - 1), side(i));
+        let clamp = damped_clamp_stable_step_s(wire.mass[i], kc, left, right, cc);
+        let mut candidates = vec![(
+            clamp,
+            format!("section.supports[{sup}]"),
+            format!(
+                "insulator_stiffness_n = {}, insulator_mass_kg = {}, insulator_damping_n_s = {}",
+                number(ins.stiffness_n),
+                number(ins.mass_kg),
+                number(ins.damping_n_s)
+            ),
+            format!(
+                "the string's clamp ({:.4e} kg: string {:.4e} N/m{twice}, conductor segments {:.4e} and {:.4e} N/m, \
+                 string damper {:.4e} N s/m{twice})",
+                wire.mass[i], k, left, right, c
+            ),
+        )];
+        if let (Some(arm), SupportSpec::Suspension { crossarm: Some(a), .. }) = (&ins.crossarm, spec) {
+            let spring = arm.longitudinal_n_per_m.max(arm.transverse_n_per_m);
+            let pivot = pivot_stable_step_s(arm.mass_kg, spring, k, arm.damping_n_s_per_m, c);
+            candidates.push((
+                pivot,
+                format!("section.supports[{sup}].crossarm"),
+                format!(
+                    "{{ longitudinal_n_per_m = {}, transverse_n_per_m = {}, mass_kg = {}, damping_n_s_per_m = {} }}",
+                    number(a.longitudinal_n_per_m),
+                    number(a.transverse_n_per_m),
+                    number(a.mass_kg),
+                    number(a.damping_n_s_per_m)
+                ),
+                format!(
+                    "the elastic crossarm's pivot ({} kg: spring {} N/m, string {:.4e} N/m counted twice, damping {} \
+                     N s/m, string damper {:.4e} N s/m counted twice)",
+                    number(arm.mass_kg),
+                    number(spring),
+                    k,
+                    number(arm.damping_n_s_per_m),
+                    c
+                ),
+            ));
+        }
+        for (dt, field, value, what) in candidates {
+            if dt < clamp_step_s {
+                clamp_step_s = dt;
+                step_limit = Some(StepLimit { field, value, what, step_s: dt });
+            }
+        }
     }
     let (mut wave_speed_max_m_per_s, mut crossing_time_s) = (0.0_f64, f64::INFINITY);
     for j in 0..wire.segments() {
@@ -405,7 +476,7 @@ pub(crate) fn check(
         wave_speed_max_m_per_s = wave_speed_max_m_per_s.max(c);
         crossing_time_s = crossing_time_s.min(wire.rest_length[j] / c);
     }
-    Some(SectionGrid { wire, layout, chord_m, clamp_step_s, wave_speed_max_m_per_s, crossing_time_s })
+    Some(SectionGrid { wire, layout, chord_m, clamp_step_s, step_limit, wave_speed_max_m_per_s, crossing_time_s })
 }
 
 #[cfg(test)]

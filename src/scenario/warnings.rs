@@ -19,11 +19,17 @@
 //!   above the rated maximum of high-temperature conductors, 210 C for ZTACIR);
 //! - a sky descriptor of `[thermal.weather.sun]` the chosen standard does not read
 //!   ([`super::thermal::unused_weather_inputs`]).
+//!
+//! One more is not about a doubtful value but about the run's cost and its damping: a section's clamp or
+//! elastic crossarm whose stable step is below the conductor's Courant step sets the time step
+//! ([`step_limit`]; module doc of [`super::section`]). The run then takes more steps, and the smoothing,
+//! applied per step, damps more per second.
 
 use std::fmt;
 
 use super::events::EventSpec;
 use super::schema::{Scenario, TensionLawSpec};
+use super::section::StepLimit;
 use super::validate::number;
 
 /// A valid but doubtful value.
@@ -119,6 +125,43 @@ pub fn warnings(s: &Scenario) -> Vec<Warning> {
         w.extend(super::thermal::unused_weather_inputs("thermal.weather", &t.weather, t.standard));
     }
     w
+}
+
+/// The warning that the section element `limit` ([`StepLimit`]), not the conductor, sets the time step
+/// `dt_s` [s] (its stable step times the Courant number `courant`), below the conductor's Courant step
+/// `conductor_step_s` [s]; `None` where the conductor's step is the run's. `smoothing` is the smoothing per
+/// step `b`.
+pub(crate) fn step_limit(
+    limit: &StepLimit,
+    courant: f64,
+    conductor_step_s: f64,
+    dt_s: f64,
+    smoothing: f64,
+) -> Option<Warning> {
+    if dt_s >= conductor_step_s {
+        return None;
+    }
+    let ratio = conductor_step_s / dt_s;
+    let damping = if smoothing > 0.0 {
+        format!(
+            "; the smoothing b = {} acts per step, so it damps {ratio:.2} times as much per second",
+            number(smoothing)
+        )
+    } else {
+        String::new()
+    };
+    Some(Warning {
+        field: limit.field.clone(),
+        value: limit.value.clone(),
+        reason: format!(
+            "sets the time step: {} is stable below {:.4e} s (Gershgorin's bound, docs/scenario.md), so at \
+             numerics.courant = {} the run steps at {dt_s:.4e} s instead of the conductor's {conductor_step_s:.4e} \
+             s, {ratio:.2} times as many steps{damping}",
+            limit.what,
+            limit.step_s,
+            number(courant)
+        ),
+    })
 }
 
 #[cfg(test)]

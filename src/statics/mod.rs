@@ -14,6 +14,9 @@
 //! [`Explicit::net_force`], so the static solution is the rest state of the very equations the explicit
 //! scheme integrates; its error against the continuous wire is the grid's `O(ds^2)`.
 //!
+//! Ground contact, which the explicit scheme enforces by projection, is refused by [`solve`]; with
+//! [`solve_on_ground`] it is a frictionless penalty contact ([`ground`]).
+//!
 //! A suspension string adds its force to its clamp node ([`crate::wire::insulator`]); an elastic
 //! crossarm adds its pivot's two horizontal coordinates as unknowns, with the pivot's balance of springs
 //! and string pull as their equations ([`pivots`]).
@@ -72,6 +75,7 @@
 //! pattern, its compressed structure and the symbolic factorisation are computed once per solve.
 
 pub mod dual;
+pub mod ground;
 pub mod jacobian;
 pub mod line;
 mod newton;
@@ -79,7 +83,10 @@ pub mod pivots;
 pub mod sparse_lu;
 
 pub use line::solve_line;
-pub use newton::{StaticError, StaticOptions, StaticReport, default_tolerance_n, nodal_loads, rounding_floor_n, solve};
+pub use newton::{
+    StaticError, StaticOptions, StaticReport, default_tolerance_n, nodal_loads, rounding_floor_n, solve,
+    solve_on_ground,
+};
 pub use sparse_lu::{SparseLu, SparseLuError};
 
 use crate::scheme::Explicit;

@@ -1,6 +1,7 @@
 //! The static solver: regularised Newton iterations with a backtracking line search (module doc of
 //! [`crate::statics`] for the equations and the globalisation).
 
+use super::ground::GroundPenalty;
 use super::jacobian::{max_axial_stiffness_n_per_m, pattern, unknown_index, values};
 use super::pivots::Pivots;
 use super::sparse_lu::{SparseLu, SparseLuError};
@@ -204,10 +205,21 @@ fn residual(
     s: &mut Explicit,
     idx: &[Option<usize>],
     pivots: &Pivots,
+    ground: Option<&GroundPenalty>,
     f: &mut [Vec<f64>; 3],
     rhs: &mut [f64],
 ) -> (f64, f64) {
     s.net_force(f);
+    if let Some(g) = ground {
+        for (i, o) in idx.iter().enumerate() {
+            if o.is_some() {
+                let c = g.force(s.wire().position(i));
+                for k in 0..3 {
+                    f[k][i] += c[k];
+                }
+            }
+        }
+    }
     let (mut max, mut sq) = pivots.residual(s, rhs);
     for (i, o) in idx.iter().enumerate() {
         if let Some(r) = o {
@@ -242,9 +254,36 @@ fn place(s: &mut Explicit, idx: &[Option<usize>], pivots: &Pivots, x0: &[f64], d
 /// Supported: tension-only and linear laws, gravity, uniform load, wind (both laws, gate
 /// [`WindGate::Always`]), prescribed nodal forces, suspension strings, and elastic crossarms (their pivots
 /// are unknowns too, [`crate::statics::pivots`]; their velocities are set to zero as well). Errors (never panics) on a broken segment, the downwind
-/// gate, ground contact, a wire without free nodes, non-finite residuals, or no convergence.
+/// gate, ground contact (a frictionless contact is [`solve_on_ground`]), a wire without free nodes,
+/// non-finite residuals, or no convergence.
 pub fn solve(s: &mut Explicit, opts: &StaticOptions) -> Result<StaticReport, StaticError> {
     check_supported(s)?;
+    solve_checked(s, None, opts)
+}
+
+/// [`solve`] with the solver's ground, if it has one, as a frictionless contact
+/// ([`super::ground`]: a penalty along the surface normal on every free node below it); without a
+/// ground it is [`solve`]. The rest state of a wire lying partly on the ground, such as a broken
+/// conductor's piece hanging from its support with the rest of it on the ground. The ground stays on
+/// the solver. Errors as [`solve`] (a piece that no support holds is refused even if it lies on the
+/// ground: it could slide along it).
+pub fn solve_on_ground(s: &mut Explicit, opts: &StaticOptions) -> Result<StaticReport, StaticError> {
+    let Some(ground) = s.ground().cloned() else { return solve(s, opts) };
+    s.set_ground(None);
+    let checked = check_supported(s);
+    let out = checked.and_then(|()| {
+        let penalty = GroundPenalty::of(s, &ground);
+        solve_checked(s, Some(penalty), opts)
+    });
+    s.set_ground(Some(ground));
+    out
+}
+
+fn solve_checked(
+    s: &mut Explicit,
+    ground: Option<GroundPenalty>,
+    opts: &StaticOptions,
+) -> Result<StaticReport, StaticError> {
     for v in &mut s.wire_mut().v {
         v.fill(0.0);
     }
@@ -254,9 +293,12 @@ pub fn solve(s: &mut Explicit, opts: &StaticOptions) -> Result<StaticReport, Sta
     let n1 = s.wire().nodes();
     let mut pat = pattern(s);
     pivots.pattern(s, &idx, &mut pat);
+    if let Some(g) = &ground {
+        g.pattern(&idx, &mut pat);
+    }
     let (f_max, f_sum) = load_scales(s);
     let tol = opts.tolerance_n.unwrap_or_else(|| (1e-10 * f_max).max(32.0 * rounding_floor_n(s)));
-    let mut eqs = Single { s, idx, pivots, f: [vec![0.0; n1], vec![0.0; n1], vec![0.0; n1]] };
+    let mut eqs = Single { s, idx, pivots, ground, f: [vec![0.0; n1], vec![0.0; n1], vec![0.0; n1]] };
     // Tension scale of the regularisation: the sum of the nodal loads, the tension of a wire whose sag is
     // an eighth of its span (`H = w l^2 / (8 f)`); a node load scale for its decay.
     let scales = Scales { tolerance_n: tol, tension_n: f_sum, load_n: if f_max > 0.0 { f_max } else { 1.0 } };
@@ -268,16 +310,20 @@ struct Single<'a> {
     s: &'a mut Explicit,
     idx: Vec<Option<usize>>,
     pivots: Pivots,
+    ground: Option<GroundPenalty>,
     f: [Vec<f64>; 3],
 }
 
 impl Equations for Single<'_> {
     fn residual(&mut self, rhs: &mut [f64]) -> (f64, f64) {
-        residual(self.s, &self.idx, &self.pivots, &mut self.f, rhs)
+        residual(self.s, &self.idx, &self.pivots, self.ground.as_ref(), &mut self.f, rhs)
     }
     fn jacobian(&mut self, floor_n: f64, vals: &mut Vec<f64>) {
         values(self.s, 0.0, 0.0, Some(floor_n), vals);
         self.pivots.values(self.s, &self.idx, Some(floor_n), vals);
+        if let Some(g) = &self.ground {
+            g.values(self.s, &self.idx, vals);
+        }
     }
     fn gather(&self, x0: &mut [f64]) {
         for (i, o) in self.idx.iter().enumerate() {
