@@ -48,12 +48,12 @@
 //! `linerate/equations/cigre601/convective_cooling.py::compute_nusselt_number`), so the convective cooling is
 //! continuous in the wind speed at every angle. The older rule of CIGRE TB 207 (2002) for `V < 0.5 m/s`, the
 //! largest of `Nu_45` (the forced value at an angle of attack of 45 deg whatever the actual angle),
-//! `0.55 Nu_90` and `Nu_nat`, is not TB 601's: TB 601 states that it brings "a more coherent convection model
-//! for low wind speeds" than TB 207, and linerate, which implements both brochures, keeps the 0.5 m/s switch in
-//! its TB 207 model only and notes that TB 601 removed that discontinuity (`linerate/models/Cigre207.md`).
-//! phlowers/thermohl's `cigre` model follows the 2002 brochure (its module doc cites SC 22 WG 12, 2002) and
-//! keeps a 0.55 floor. This module claims TB 601 only, so it has TB 601's rule; docs/thermal.md has the
-//! comparison with linerate on 104 conditions (`tests/thermal_linerate.rs`).
+//! `0.55 Nu_90` and `Nu_nat`, is not TB 601's: by linerate's notes (`linerate/models/Cigre207.md`) TB 601
+//! states that it brings "a more coherent convection model for low wind speeds" than TB 207, and linerate,
+//! which implements both brochures, keeps the 0.5 m/s switch in its TB 207 model only and notes that TB 601
+//! removed that discontinuity. phlowers/thermohl's `cigre` model follows the 2002 brochure (its module doc
+//! cites SC 22 WG 12, 2002) and keeps a 0.55 floor. This module claims TB 601 only, so it has TB 601's rule;
+//! docs/thermal.md has the comparison with linerate on 104 conditions (`tests/thermal_linerate.rs`).
 
 use super::air::FilmAir;
 use crate::thermal::{ThermalConductor, Weather};
