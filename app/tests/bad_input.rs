@@ -169,6 +169,17 @@ const CASES: &[(&str, &[&str])] = &[
     ("rating_clearance_without_ground", &["field `rating.min_clearance_m` = 8", "needs a [ground]"]),
     ("deicing_varying_current", &["field `thermal.current_a`", "must be constant with [thermal.deicing]"]),
     ("thermal_history_too_long", &["field `thermal.step_s` = 1", "must be at least 10.000 s"]),
+    // Issue 22: conductors beyond the catalogue, and the span's inclination.
+    ("thermal_conductor_diameter_in_mm", &["field `thermal.conductor.diameter_m` = 28.14", "[1e-3, 0.2] m"]),
+    ("thermal_inclination_with_ieee738", &["field `thermal.inclination_deg` = 10", "CIGRE TB 601 only"]),
+    (
+        "thermal_conductor_catalog_missing",
+        &["field `thermal.conductor_catalog` = \"no_such_catalogue.toml\"", "readable conductor catalogue"],
+    ),
+    (
+        "thermal_conductor_catalog_bad_entry",
+        &["emissivity_above_one.toml (conductor_catalog of", "field `conductor[0].emissivity` = 1.5", "[0, 1]"],
+    ),
     // Issue 22: messages that name the field as written (with its array index, at the value's line, every
     // missing field), and inputs that were accepted silently.
     (

@@ -351,7 +351,7 @@ pub fn parse(text: &str, file: &str) -> Result<LineScenario, InputError> {
             if let toml::Value::Table(c) = c
                 && let Some(toml::Value::Table(cd)) = c.get_mut("conductor")
             {
-                resolved |= super::fill_from_catalog(cd, file, &format!("line.conductors[{k}].conductor"))?;
+                resolved |= super::fill_from_catalog(cd, file, &format!("line.conductors[{k}].conductor"), None)?;
             }
         }
     }

@@ -13,6 +13,7 @@ pub mod rating;
 pub mod schema;
 pub mod section;
 pub mod thermal;
+pub mod thermal_conductor;
 pub mod validate;
 pub mod warnings;
 pub mod work;
@@ -100,19 +101,33 @@ pub fn parse(text: &str, file: &str) -> Result<Scenario, InputError> {
     if problems.is_empty() { Ok(scenario) } else { Err(InputError::Invalid { file: file.to_string(), problems }) }
 }
 
-/// The document with the `[conductor]` fields of its catalogue conductor filled in, or `None` if it names
-/// none (or does not parse: the caller reports that with line and column).
+/// The document with the `[conductor]` fields of its catalogue conductor filled in and the `[thermal]`
+/// conductor of a user catalogue (`thermal.conductor_catalog`, [`thermal_conductor::resolve_user_catalog`])
+/// replaced by its properties, or `None` if it has neither (or does not parse: the caller reports that with
+/// line and column).
 fn catalog_defaults(text: &str, file: &str) -> Result<Option<toml::Table>, InputError> {
     let Ok(mut doc) = text.parse::<toml::Table>() else { return Ok(None) };
-    let Some(toml::Value::Table(c)) = doc.get_mut("conductor") else { return Ok(None) };
-    if fill_from_catalog(c, file, "conductor")? { Ok(Some(doc)) } else { Ok(None) }
+    let (user, mut changed) = match doc.get_mut("thermal") {
+        Some(toml::Value::Table(t)) => thermal_conductor::resolve_user_catalog(t, "thermal.", file)?,
+        _ => (None, false),
+    };
+    if let Some(toml::Value::Table(c)) = doc.get_mut("conductor") {
+        changed |= fill_from_catalog(c, file, "conductor", user.as_deref())?;
+    }
+    Ok(changed.then_some(doc))
 }
 
 /// Fill the fields a conductor table `c` (at the dotted path `field`) does not give from the catalogue
 /// conductor it names (`catalog = "..."`): `linear_density_kg_per_m`, `diameter_m`,
 /// `rated_tensile_strength_n`, `thermal_expansion_per_k` and `axial_stiffness_n` (unless
-/// `youngs_modulus_pa` is given). Returns whether it names one.
-pub(crate) fn fill_from_catalog(c: &mut toml::Table, file: &str, field: &str) -> Result<bool, InputError> {
+/// `youngs_modulus_pa` is given). The name is looked up in `user` (a user catalogue's entries) first, then in
+/// the built-in catalogue. Returns whether it names one.
+pub(crate) fn fill_from_catalog(
+    c: &mut toml::Table,
+    file: &str,
+    field: &str,
+    user: Option<&[crate::thermal::catalog::CatalogConductor]>,
+) -> Result<bool, InputError> {
     let Some(name) = c.get("catalog") else { return Ok(false) };
     let Some(name) = name.as_str() else {
         return Err(InputError::Invalid {
@@ -124,7 +139,8 @@ pub(crate) fn fill_from_catalog(c: &mut toml::Table, file: &str, field: &str) ->
             }],
         });
     };
-    let k = crate::thermal::catalog::find(name).map_err(|e| InputError::Invalid {
+    let from_user = user.and_then(|u| thermal_conductor::find_in(u, name));
+    let k = from_user.map_or_else(|| crate::thermal::catalog::find(name), Ok).map_err(|e| InputError::Invalid {
         file: file.into(),
         problems: vec![Problem {
             field: format!("{field}.catalog"),

@@ -25,7 +25,7 @@ use super::validate::Check;
 use super::{InputError, Plan, Problem, Scenario};
 use crate::statics::{self, StaticOptions};
 use crate::thermal::transient::{CurrentSchedule, Transient, time_to_reach};
-use crate::thermal::{HeatBalance, Model, catalog, steady};
+use crate::thermal::{HeatBalance, Model, steady};
 
 /// The `[rating]` table of a scenario.
 #[derive(Clone, Debug, Deserialize)]
@@ -130,8 +130,9 @@ pub fn rate(s: &Scenario, file: &str) -> Result<Rating, RatingError> {
     // Building the plan validates the whole scenario, the [rating] table included.
     let plan: Plan = super::plan(s, file)?;
     let t = s.thermal.as_ref().expect("validated: [rating] needs [thermal]");
-    let conductor = catalog::find(&t.conductor).map_err(|e| RatingError::Failed(e.to_string()))?;
-    let model = Model::new(t.standard.into(), conductor.thermal(), super::thermal::weather(&t.weather));
+    let conductor = t.conductor.thermal().map_err(|e| RatingError::Failed(e.to_string()))?;
+    let model = Model::new(t.standard.into(), conductor, super::thermal::weather(&t.weather))
+        .with_inclination(t.inclination_deg);
     let mut solver = plan.solver.clone();
     solver.set_ground(None);
     let spans: Vec<(usize, usize)> =

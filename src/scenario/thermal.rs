@@ -13,7 +13,9 @@
 //! ```toml
 //! [thermal]
 //! standard = "ieee738"                  # or "cigre601"
-//! conductor = "ACSR Drake"              # a name of the conductor catalogue (data/conductors.toml)
+//! conductor = "ACSR Drake"              # a name of the conductor catalogue (data/conductors.toml), or a
+//!                                       # [thermal.conductor] table of properties, or a name in a user
+//!                                       # catalogue (conductor_catalog): super::thermal_conductor
 //! current_a = [[0.0, 400.0], [600.0, 400.0], [600.0, 1200.0]]   # (t [s], I [A]) points: a step at 600 s
 //! [thermal.weather]
 //! air_temperature_k = 298.15
@@ -24,6 +26,7 @@
 use serde::Deserialize;
 
 use super::Problem;
+use super::thermal_conductor::{ConductorSpec, check_inclination, check_thermal_conductor};
 use super::validate::{Check, number};
 use crate::thermal::deicing::{Deicing, DeicingOptions, IceShell, MELTING_POINT_K, ShedCriterion};
 use crate::thermal::transient::{CurrentSchedule, Transient};
@@ -155,9 +158,19 @@ pub struct ThermalSpec {
     /// heat-balance standard: `"ieee738"` (default) or `"cigre601"`
     #[serde(default)]
     pub standard: StandardSpec,
-    /// the conductor's thermal data by its name in the conductor catalogue (`data/conductors.toml`, e.g.
-    /// "ACSR Drake"); its mechanical data stay those of `[conductor]`
-    pub conductor: String,
+    /// the conductor's thermal data: its name in the conductor catalogue (`data/conductors.toml`, e.g.
+    /// "ACSR Drake") or in `conductor_catalog`, or a `[thermal.conductor]` table of its properties
+    /// ([`ConductorSpec`]); its mechanical data stay those of `[conductor]`
+    pub conductor: ConductorSpec,
+    /// a user conductor catalogue (TOML, the format of `data/conductors.toml`): its path relative to the
+    /// scenario file's folder; its names are looked up before the built-in ones (resolved when the file is
+    /// parsed, [`super::thermal_conductor::resolve_user_catalog`])
+    #[serde(default)]
+    pub conductor_catalog: Option<String>,
+    /// inclination of the span to the horizontal `beta` [deg], in [0, 80] (stranded) or [0, 60] (smooth or
+    /// iced); default 0. CIGRE TB 601 only: it lowers natural convection (eq. (24))
+    #[serde(default)]
+    pub inclination_deg: f64,
     /// the weather, constant over the run
     pub weather: WeatherSpec,
     /// the current as `[t [s], I [A]]` points: piecewise linear, constant before the first and after the
@@ -269,13 +282,20 @@ pub fn unused_weather_inputs(at: &str, w: &WeatherSpec, standard: StandardSpec) 
         .collect()
 }
 
-/// The catalogue conductor named at `field`, or a problem naming the names available.
-pub fn conductor(c: &mut Check, field: &str, name: &str) -> Option<ThermalConductor> {
-    match catalog::find(name) {
-        Ok(k) => Some(k.thermal()),
-        Err(e) => {
-            c.fail(field, format!("{name:?}"), &e.to_string());
-            None
+/// The conductor at `field`: a catalogue conductor (or a problem naming the names available), or its
+/// properties (each checked, [`check_thermal_conductor`]).
+pub fn conductor(c: &mut Check, field: &str, spec: &ConductorSpec) -> Option<ThermalConductor> {
+    match spec {
+        ConductorSpec::Name(name) => match catalog::find(name) {
+            Ok(k) => Some(k.thermal()),
+            Err(e) => {
+                c.fail(field, format!("{name:?}"), &e.to_string());
+                None
+            }
+        },
+        ConductorSpec::Properties(p) => {
+            let t = p.thermal();
+            check_thermal_conductor(c, field, &t).then_some(t)
         }
     }
 }
@@ -305,7 +325,15 @@ pub fn check_current(c: &mut Check, field: &str, points: &[[f64; 2]]) -> Option<
 /// Check the `[thermal]` table; `has_temperature_events` refuses it together with temperature or heat
 /// conduction events (the thermal model owns the temperature).
 pub(crate) fn check(c: &mut Check, t: &ThermalSpec, temperature_event: Option<usize>) {
-    conductor(c, "thermal.conductor", &t.conductor);
+    let k = conductor(c, "thermal.conductor", &t.conductor);
+    check_inclination(
+        c,
+        "thermal.inclination_deg",
+        t.inclination_deg,
+        t.standard.into(),
+        k.as_ref(),
+        t.deicing.is_some(),
+    );
     check_weather(c, "thermal.weather", &t.weather, t.standard);
     check_current(c, "thermal.current_a", &t.current_a);
     c.within("thermal.step_s", t.step_s, 1.0e-3, 600.0, "must be in [1e-3, 600] s");
@@ -395,14 +423,15 @@ pub(crate) fn thermal_history(
             ),
         });
     }
-    let name = catalog::find(&t.conductor).map(|k| k.name.clone()).unwrap_or_else(|_| t.conductor.clone());
+    let name = t.conductor.primary_name();
     let (Some(conductor), Some(schedule)) = (
         conductor(&mut c, "thermal.conductor", &t.conductor),
         check_current(&mut c, "thermal.current_a", &t.current_a),
     ) else {
         return Err(c.0.remove(0));
     };
-    let model = Model::new(t.standard.into(), conductor.clone(), weather(&t.weather));
+    let model =
+        Model::new(t.standard.into(), conductor.clone(), weather(&t.weather)).with_inclination(t.inclination_deg);
     if let Some(d) = &t.deicing {
         return deicing_history(t, d, conductor, &model, &schedule, horizon_s, spans)
             .map(|h| ThermalHistory { conductor: name, ..h });
@@ -434,6 +463,7 @@ fn deicing_history(
     let mut ice = IceShell::glaze(d.thickness_m);
     ice.density_kg_per_m3 = d.density_kg_per_m3;
     let mut de = Deicing::new(conductor, weather(&t.weather), t.standard.into(), ice);
+    de.inclination_deg = t.inclination_deg;
     de.criterion = match d.criterion {
         ShedSpec::Slot => ShedCriterion::Slot,
         ShedSpec::FullMelt => ShedCriterion::FullMelt,
@@ -459,7 +489,7 @@ fn deicing_history(
     let iced: Vec<usize> = d.spans.clone().unwrap_or_else(|| (0..spans.len()).collect());
     Ok(ThermalHistory {
         samples,
-        conductor: t.conductor.clone(),
+        conductor: t.conductor.label(),
         standard: t.standard.into(),
         shed: Some(Shed {
             time_s: r.shed_time_s,
@@ -524,8 +554,17 @@ pub struct ThermalCase {
     /// `"ieee738"` (default) or `"cigre601"`
     #[serde(default)]
     pub standard: StandardSpec,
-    /// the conductor's name in the catalogue (`data/conductors.toml`)
-    pub conductor: String,
+    /// the conductor: its name in the catalogue (`data/conductors.toml`) or in `conductor_catalog`, or a
+    /// `[conductor]` table of its properties ([`ConductorSpec`])
+    pub conductor: ConductorSpec,
+    /// a user conductor catalogue (the format of `data/conductors.toml`): its path relative to the case
+    /// file's folder; its names are looked up before the built-in ones
+    #[serde(default)]
+    pub conductor_catalog: Option<String>,
+    /// inclination of the span to the horizontal `beta` [deg], in [0, 80] (stranded) or [0, 60] (smooth or
+    /// with `[deicing]`); default 0. CIGRE TB 601 only (eq. (24))
+    #[serde(default)]
+    pub inclination_deg: f64,
     /// the weather
     pub weather: WeatherSpec,
     /// currents [A], each in [0, 1e5]: the steady temperature for each
@@ -573,9 +612,20 @@ pub fn parse_case(text: &str, file: &str) -> Result<ThermalCase, super::InputErr
     if let Some(message) = other_kind(text) {
         return Err(super::InputError::Parse { file: file.to_string(), message: message.to_string() });
     }
-    let case: ThermalCase = super::from_toml(text, file)?;
+    let Ok(mut doc) = text.parse::<toml::Table>() else { return super::from_toml(text, file) };
+    let (_, resolved) = super::thermal_conductor::resolve_user_catalog(&mut doc, "", file)?;
+    let case: ThermalCase =
+        if resolved { super::locate::from_table(doc, text, file)? } else { super::from_toml(text, file)? };
     let mut c = Check(Vec::new());
-    conductor(&mut c, "conductor", &case.conductor);
+    let k = conductor(&mut c, "conductor", &case.conductor);
+    check_inclination(
+        &mut c,
+        "inclination_deg",
+        case.inclination_deg,
+        case.standard.into(),
+        k.as_ref(),
+        case.deicing.is_some(),
+    );
     check_weather(&mut c, "weather", &case.weather, case.standard);
     for (k, &i) in case.current_a.iter().enumerate() {
         c.within(&format!("current_a[{k}]"), i, 0.0, 1.0e5, "must be in [0, 1e5] A");
@@ -660,17 +710,18 @@ pub fn parse_case(text: &str, file: &str) -> Result<ThermalCase, super::InputErr
 impl ThermalCase {
     /// The heat balance of the case (after [`parse_case`], whose conductor exists).
     pub fn model(&self) -> Result<Model, catalog::CatalogError> {
-        let k = catalog::find(&self.conductor)?;
-        Ok(Model::new(self.standard.into(), k.thermal(), weather(&self.weather)))
+        let k = self.conductor.thermal()?;
+        Ok(Model::new(self.standard.into(), k, weather(&self.weather)).with_inclination(self.inclination_deg))
     }
 
     /// The de-icing model of the case's `[deicing]`, if any.
     pub fn deicing(&self) -> Result<Option<Deicing>, catalog::CatalogError> {
         let Some(d) = &self.deicing else { return Ok(None) };
-        let k = catalog::find(&self.conductor)?;
+        let k = self.conductor.thermal()?;
         let mut ice = IceShell::glaze(d.thickness_m);
         ice.density_kg_per_m3 = d.density_kg_per_m3;
-        let mut de = Deicing::new(k.thermal(), weather(&self.weather), self.standard.into(), ice);
+        let mut de = Deicing::new(k, weather(&self.weather), self.standard.into(), ice);
+        de.inclination_deg = self.inclination_deg;
         de.criterion = match d.criterion {
             ShedSpec::Slot => ShedCriterion::Slot,
             ShedSpec::FullMelt => ShedCriterion::FullMelt,

@@ -88,7 +88,7 @@
 use std::cell::Cell;
 
 use super::ode::rk4_step;
-use super::{HeatBalance, Standard, ThermalConductor, Weather, heat_balance, joule};
+use super::{HeatBalance, Standard, ThermalConductor, Weather, joule};
 
 /// Melting point of ice `T_m` [K] (0 C).
 pub const MELTING_POINT_K: f64 = 273.15;
@@ -316,6 +316,9 @@ pub struct Deicing {
     pub ice: IceShell,
     /// when the shell sheds
     pub criterion: ShedCriterion,
+    /// inclination of the span to the horizontal `beta` [deg] (CIGRE TB 601's natural convection, eq. (24),
+    /// on the ice's smooth surface; IEEE Std 738 ignores it); 0 from [`Deicing::new`]
+    pub inclination_deg: f64,
 }
 
 fn check(field: &'static str, value: f64, ok: bool, allowed: &'static str) -> Result<(), DeicingError> {
@@ -402,7 +405,10 @@ impl<'a> Model<'a> {
         outer.absorptivity = deicing.ice.absorptivity;
         Model {
             deicing,
-            outer: heat_balance(deicing.standard, outer, deicing.weather.clone()),
+            outer: Box::new(
+                crate::thermal::Model::new(deicing.standard, outer, deicing.weather.clone())
+                    .with_inclination(deicing.inclination_deg),
+            ),
             conductance: deicing.shell_conductance_w_per_m_k(),
         }
     }
@@ -479,7 +485,14 @@ impl Deicing {
     /// A problem with the default [`ShedCriterion::Slot`]; the conductor as `standard` uses it
     /// ([`ThermalConductor::for_standard`]: IEEE 738 with constant specific heats).
     pub fn new(conductor: ThermalConductor, weather: Weather, standard: Standard, ice: IceShell) -> Self {
-        Deicing { conductor: conductor.for_standard(standard), weather, standard, ice, criterion: ShedCriterion::Slot }
+        Deicing {
+            conductor: conductor.for_standard(standard),
+            weather,
+            standard,
+            ice,
+            criterion: ShedCriterion::Slot,
+            inclination_deg: 0.0,
+        }
     }
 
     /// Inner radius of the shell `r_c = D / 2` [m].
@@ -1068,7 +1081,8 @@ mod tests {
         let mut sunny = drake_case();
         sunny.weather.sun = Some(annex_b::sun());
         let ice = Model::new(&sunny).outer.terms(t_c, 0.0).solar_w_per_m;
-        let bare = heat_balance(Standard::Ieee738, sunny.conductor.clone(), sunny.weather.clone()).terms(t_c, 0.0);
+        let bare = crate::thermal::heat_balance(Standard::Ieee738, sunny.conductor.clone(), sunny.weather.clone())
+            .terms(t_c, 0.0);
         let ratio = (0.3 / 0.8) * (2.0 * sunny.outer_radius_m() / sunny.conductor.diameter_m);
         assert!(rel(ice, bare.solar_w_per_m * ratio) < 1e-12, "{ice} vs {}", bare.solar_w_per_m * ratio);
     }

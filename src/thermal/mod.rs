@@ -105,6 +105,16 @@ impl Model {
         }
     }
 
+    /// The same heat balance for a conductor inclined by `inclination_deg` [deg] to the horizontal. CIGRE TB 601
+    /// lowers its natural convection with it (eq. (24), [`cigre601::convection::inclination_factor`]); IEEE Std
+    /// 738 has no inclination term, so its model is returned unchanged.
+    pub fn with_inclination(mut self, inclination_deg: f64) -> Self {
+        if let Model::Cigre601(m) = &mut self {
+            m.inclination_deg = inclination_deg;
+        }
+        self
+    }
+
     fn inner(&self) -> &dyn HeatBalance {
         match self {
             Model::Ieee738(m) => m,

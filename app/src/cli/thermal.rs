@@ -62,7 +62,7 @@ fn evaluate(case: &ThermalCase, out: &std::path::Path) -> Result<(), String> {
     let name = case.name.clone().unwrap_or_else(|| "thermal".into());
     out!(
         "{name}: {} in air at {:.2} C, wind {} m/s at {} deg",
-        case.conductor,
+        case.conductor.label(),
         case.weather.air_temperature_k - C,
         case.weather.wind_speed_m_per_s,
         case.weather.wind_angle_deg
@@ -173,7 +173,7 @@ fn evaluate(case: &ThermalCase, out: &std::path::Path) -> Result<(), String> {
         deicing = json!({"ice_kg_per_m": de.ice_mass_kg_per_m(), "minimum_current_a": min, "runs": runs, "shed_within": within});
     }
     let doc = json!({
-        "name": name, "conductor": case.conductor, "standard": format!("{:?}", case.standard),
+        "name": name, "conductor": case.conductor.label(), "standard": format!("{:?}", case.standard),
         "steady": steady_rows, "ampacity": ampacity_rows, "transient": transient, "deicing": deicing,
     });
     let path = out.join("thermal.json");

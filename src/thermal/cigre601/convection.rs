@@ -43,28 +43,23 @@
 //! Reynolds and `Gr Pr` boundaries (see the tests for each jump); at the roughness boundary `R_s = 0.05` and between
 //! smooth and stranded surfaces the table is discontinuous by construction.
 //!
-//! Low wind speeds (section 3.5): below `V = 0.5 m/s` the direction of the wind is ill defined, and the Nusselt
-//! number is the largest of the forced value at an angle of attack of 45 deg, `Nu_45 = Nu_90 (A_1 + B_1
-//! sin(45)^m_1)`, the corrected perpendicular value `Nu_cor = 0.55 Nu_90`, and the natural value `Nu_beta`. This is
-//! the rule as CIGRE TB 207 (2002) states it; that TB 601 keeps it in this form could not be checked against the
-//! brochure's own text. With the factors above `Nu_45 = 0.845 Nu_90` (stranded) or `0.859 Nu_90` (smooth), so
-//! `Nu_cor` never decides; it is kept because the rule names it. At `delta = 45 deg` the rule is continuous in `V`;
-//! at other angles it is a step at 0.5 m/s (see the tests).
+//! Low wind speeds: TB 601 takes `Nu = max(Nu_delta, Nu_beta)` at every wind speed, the forced value at the
+//! actual angle of attack against the natural value (the text on p. 28, as statnett/linerate transcribes it in
+//! `linerate/equations/cigre601/convective_cooling.py::compute_nusselt_number`), so the convective cooling is
+//! continuous in the wind speed at every angle. The older rule of CIGRE TB 207 (2002) for `V < 0.5 m/s`, the
+//! largest of `Nu_45` (the forced value at an angle of attack of 45 deg whatever the actual angle),
+//! `0.55 Nu_90` and `Nu_nat`, is not TB 601's: by linerate's notes (`linerate/models/Cigre207.md`) TB 601
+//! states that it brings "a more coherent convection model for low wind speeds" than TB 207, and linerate,
+//! which implements both brochures, keeps the 0.5 m/s switch in its TB 207 model only and notes that TB 601
+//! removed that discontinuity. phlowers/thermohl's `cigre` model follows the 2002 brochure (its module doc
+//! cites SC 22 WG 12, 2002) and keeps a 0.55 floor. This module claims TB 601 only, so it has TB 601's rule;
+//! docs/thermal.md has the comparison with linerate on 104 conditions (`tests/thermal_linerate.rs`).
 
 use super::air::FilmAir;
 use crate::thermal::{ThermalConductor, Weather};
 
 /// Standard gravity `g` [m/s^2] as TB 601's Grashof number uses it.
 pub const GRAVITY_M_PER_S2: f64 = 9.807;
-
-/// Wind speed [m/s] below which the low-wind rule applies (TB 601 section 3.5).
-pub const LOW_WIND_SPEED_M_PER_S: f64 = 0.5;
-
-/// Angle of attack `delta` [deg] the low-wind rule assumes for the forced Nusselt number.
-pub const LOW_WIND_ANGLE_DEG: f64 = 45.0;
-
-/// Factor of the low-wind corrected Nusselt number `Nu_cor = 0.55 Nu_90` [-].
-pub const LOW_WIND_PERPENDICULAR_FACTOR: f64 = 0.55;
 
 /// Roughness `R_s` [-] separating the two stranded rows of Table 4.
 pub const ROUGHNESS_LIMIT: f64 = 0.05;
@@ -227,15 +222,11 @@ pub struct Convection {
     pub nusselt_perpendicular: f64,
     /// forced-convection Nusselt number at the actual angle of attack `Nu_delta` [-]
     pub nusselt_forced: f64,
-    /// forced-convection Nusselt number at 45 deg `Nu_45` [-] (low-wind rule)
-    pub nusselt_forced_45: f64,
     /// Grashof number `Gr` [-]
     pub grashof: f64,
     /// natural-convection Nusselt number with the inclination correction `Nu_beta` [-] (eqs. (23)-(24))
     pub nusselt_natural: f64,
-    /// whether the wind is below [`LOW_WIND_SPEED_M_PER_S`] and the low-wind rule decided `Nu`
-    pub low_wind: bool,
-    /// the Nusselt number used `Nu` [-]
+    /// the Nusselt number used `Nu = max(Nu_delta, Nu_beta)` [-] (p. 28)
     pub nusselt: f64,
     /// convective cooling `P_c` [W/m] (eq. (17))
     pub cooling_w_per_m: f64,
@@ -255,12 +246,9 @@ impl Convection {
         let re = reynolds_number(speed, d, air.kinematic_viscosity_m2_per_s);
         let nu_90 = nusselt_perpendicular(re, rs);
         let nu_delta = nu_90 * angle_of_attack_factor(delta, rs);
-        let nu_45 = nu_90 * angle_of_attack_factor(LOW_WIND_ANGLE_DEG, rs);
         let gr = grashof_number(d, surface_k, air_k, air.kinematic_viscosity_m2_per_s);
         let nu_nat = nusselt_natural_horizontal(gr * air.prandtl) * inclination_factor(inclination_deg, rs);
-        let low_wind = speed < LOW_WIND_SPEED_M_PER_S;
-        let nu =
-            if low_wind { nu_45.max(LOW_WIND_PERPENDICULAR_FACTOR * nu_90).max(nu_nat) } else { nu_delta.max(nu_nat) };
+        let nu = nu_delta.max(nu_nat);
         Self {
             air,
             roughness: rs,
@@ -268,10 +256,8 @@ impl Convection {
             reynolds: re,
             nusselt_perpendicular: nu_90,
             nusselt_forced: nu_delta,
-            nusselt_forced_45: nu_45,
             grashof: gr,
             nusselt_natural: nu_nat,
-            low_wind,
             nusselt: nu,
             cooling_w_per_m: convective_cooling_w_per_m(air.thermal_conductivity_w_per_m_k, surface_k, air_k, nu),
         }
@@ -296,9 +282,9 @@ mod tests {
         let (model, t) = example_a();
         let c = Convection::new(&model.conductor, &model.weather, model.inclination_deg, t);
         // Forced convection decides: Re = 865 < 2650 (first stranded row), R_s = 0.0928 > 0.05, Nu_delta = 14.40
-        // against Nu_nat = 7.79; the wind is above 0.5 m/s. (Re and Nu are this implementation's values, pinned
+        // against Nu_nat = 7.79. (Re and Nu are this implementation's values, pinned
         // here; the sources available to me quote only the example's terms and rating, not its Re or Nu.)
-        assert!(!c.low_wind && c.nusselt == c.nusselt_forced && c.nusselt_forced > c.nusselt_natural);
+        assert!(c.nusselt == c.nusselt_forced && c.nusselt_forced > c.nusselt_natural);
         assert_eq!(forced_coefficients(c.reynolds, c.roughness), PowerLaw::new(0.641, 0.471));
         assert!((c.reynolds - 865.06).abs() < 0.01 && (c.nusselt - 14.404).abs() < 1e-3, "{c:?}");
         // The full-precision chain gives 77.668 W/m (pypacity prints 77.694 with D = 28.12 mm). The brochure
@@ -314,7 +300,7 @@ mod tests {
         // 500 m above sea level, span inclined by 10 deg: P_c = 172.1 W/m (quoted as for Example A).
         let (model, t) = example_b();
         let c = Convection::new(&model.conductor, &model.weather, model.inclination_deg, t);
-        assert!(!c.low_wind && c.nusselt == c.nusselt_forced && c.reynolds < STRANDED_REYNOLDS_LIMIT);
+        assert!(c.nusselt == c.nusselt_forced && c.reynolds < STRANDED_REYNOLDS_LIMIT);
         // Full precision: 172.182 W/m, 0.082 W/m (0.05 %) over the printed 172.1; tolerance as for Example A.
         assert!((c.cooling_w_per_m - 172.1).abs() <= 0.05 + 1e-3 * 172.1, "P_c = {}", c.cooling_w_per_m);
         // Below Re = 2650 both stranded rows of Table 4 coincide, so the outer-strand diameter (4.4 mm, R_s =
@@ -436,23 +422,25 @@ mod tests {
     }
 
     #[test]
-    fn low_wind_rule() {
-        // Below 0.5 m/s: Nu = max(Nu_45, 0.55 Nu_90, Nu_nat), whatever the actual angle of attack.
-        for angle in [0.0, 10.0, 45.0, 60.0, 90.0] {
-            let c = drake_at(0.4, angle);
-            assert!(c.low_wind);
-            let expected = c.nusselt_forced_45.max(0.55 * c.nusselt_perpendicular).max(c.nusselt_natural);
-            assert_eq!(c.nusselt, expected);
-            assert_eq!(c.nusselt, drake_at(0.4, 90.0).nusselt);
-            // 0.55 Nu_90 never decides: Nu_45 = 0.845 Nu_90 for a stranded conductor.
-            assert!(c.nusselt_forced_45 > 0.55 * c.nusselt_perpendicular);
-            assert!(
-                (c.nusselt_forced_45 / c.nusselt_perpendicular - (0.42 + 0.58 * 0.5f64.sqrt().powf(0.9))).abs() < 1e-12
-            );
+    fn low_wind_takes_the_larger_of_forced_at_the_actual_angle_and_natural() {
+        // TB 601 p. 28: Nu = max(Nu_delta, Nu_beta) at every speed, the forced value at the actual angle of attack.
+        for speed in [0.0, 0.1, 0.3, 0.49, 0.5, 0.61, 2.0] {
+            for angle in [0.0, 10.0, 45.0, 60.0, 90.0] {
+                let c = drake_at(speed, angle);
+                assert_eq!(c.nusselt, c.nusselt_forced.max(c.nusselt_natural), "{speed} m/s, {angle} deg");
+                assert_eq!(c.nusselt_forced, c.nusselt_perpendicular * angle_of_attack_factor(angle, c.roughness));
+            }
         }
-        // At 0.4 m/s, 100 C in 40 C air: Re = 567, Nu_90 = 12.7, Nu_45 = 10.7 against Nu_nat = 7.79.
-        let c = drake_at(0.4, 10.0);
-        assert!(c.nusselt == c.nusselt_forced_45 && c.nusselt_forced_45 > c.nusselt_natural);
+        // Drake (Example A's conductor) at 100 C in 40 C air, 0.3 m/s: Re = 425, Nu_90 = 0.641 Re^0.471 = 11.1.
+        // Nearly along the axis (10 deg) Nu_delta = 0.523 Nu_90 = 5.8 is below Nu_nat = 7.79, so natural
+        // convection decides; at 45 and 90 deg the forced value does (0.845 Nu_90 = 9.4, and 11.1). TB 207's rule
+        // took Nu_45 = 9.4 at every angle. (tests/thermal_linerate.rs compares these with linerate's numbers.)
+        let (along, diagonal, across) = (drake_at(0.3, 10.0), drake_at(0.3, 45.0), drake_at(0.3, 90.0));
+        assert_eq!(along.nusselt, along.nusselt_natural);
+        assert!(along.nusselt_forced < along.nusselt_natural);
+        assert_eq!(diagonal.nusselt, diagonal.nusselt_forced);
+        assert_eq!(across.nusselt, across.nusselt_perpendicular);
+        assert!(along.nusselt < diagonal.nusselt && diagonal.nusselt < across.nusselt);
         // In still air natural convection is all that is left (Nu_nat = 7.79 for Drake at 100 C in 40 C).
         let still = drake_at(0.0, 90.0);
         assert_eq!(still.reynolds, 0.0);
@@ -461,20 +449,13 @@ mod tests {
     }
 
     #[test]
-    fn low_wind_rule_joins_at_45_deg_and_jumps_elsewhere() {
-        // At delta = 45 deg the rule changes nothing, so the convective cooling is continuous at 0.5 m/s.
-        let below = drake_at(0.5 * (1.0 - 1e-12), 45.0);
-        let above = drake_at(0.5, 45.0);
-        assert!(below.low_wind && !above.low_wind);
-        assert!((below.cooling_w_per_m / above.cooling_w_per_m - 1.0).abs() < 1e-9);
-        // For other angles the rule is a step at 0.5 m/s. Perpendicular wind: by the factor ratio f(45)/f(90) =
-        // x 0.845. At 10 deg: Nu_delta = 0.523 Nu_90 = 7.37 is below Nu_nat = 7.79 just above 0.5 m/s, so the
-        // step is Nu_45 / Nu_nat = 11.92 / 7.79 = x 1.530.
-        for (angle, ratio) in [(90.0, 0.84457), (10.0, 1.52967)] {
+    fn convection_is_continuous_in_the_wind_speed_at_every_angle() {
+        // No switch at 0.5 m/s (TB 207 had one: a step of x 0.845 at 90 deg and x 1.530 at 10 deg for Drake):
+        // just below and at 0.5 m/s the cooling differs by the change of Re^n over 1e-12 of the speed.
+        for angle in [0.0, 10.0, 24.0, 45.0, 60.0, 90.0] {
             let below = drake_at(0.5 * (1.0 - 1e-12), angle);
             let above = drake_at(0.5, angle);
-            let step = below.cooling_w_per_m / above.cooling_w_per_m;
-            assert!((step - ratio).abs() < 1e-4, "step at 0.5 m/s, {angle} deg: {step}");
+            assert!((below.cooling_w_per_m / above.cooling_w_per_m - 1.0).abs() < 1e-9, "{angle} deg");
         }
     }
 

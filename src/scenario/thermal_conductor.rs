@@ -1,0 +1,415 @@
+//! The conductor of a thermal case (`ohl thermal`) or of a scenario's `[thermal]` table, and the span's
+//! inclination: a conductor is named in the built-in catalogue (`data/conductors.toml`,
+//! [`crate::thermal::catalog`]) or in a user catalogue file of the same format, or given by its properties in
+//! the file itself.
+//!
+//! ```toml
+//! conductor = "ACSR Drake"                 # a name: the user catalogue's first, then the built-in one
+//! conductor_catalog = "my_conductors.toml" # optional: a user catalogue, relative to this file's folder
+//! inclination_deg = 10.0                   # optional: the span's inclination (CIGRE TB 601 eq. (24))
+//! ```
+//!
+//! or, instead of the name, the properties (`[thermal.conductor]` in a scenario, `[conductor]` in a thermal
+//! case), with the field names of the catalogue:
+//!
+//! ```toml
+//! [conductor]
+//! name = "ACSR Drake (by its properties)"
+//! diameter_m = 28.14e-3
+//! outer_strand_diameter_m = 4.44e-3
+//! resistance_low_ohm_per_m = 7.283e-5
+//! temperature_low_k = 298.15
+//! resistance_high_ohm_per_m = 8.688e-5
+//! temperature_high_k = 348.15
+//! emissivity = 0.8
+//! absorptivity = 0.8
+//! outer_mass_kg_per_m = 1.116
+//! outer_specific_heat_j_per_kg_k = 897.0
+//! core_mass_kg_per_m = 0.5119
+//! core_specific_heat_j_per_kg_k = 481.0
+//! ```
+//!
+//! A user catalogue is read while the file is parsed ([`resolve_user_catalog`]): every entry is validated
+//! (messages name the catalogue file and the entry's field, `conductor[1].diameter_m`), and a name found there
+//! is replaced by the entry's thermal properties. Its entries carry the catalogue's mechanical data too, which
+//! a scenario's `[conductor] catalog = "NAME"` takes (`super::fill_from_catalog`). Every property is checked
+//! by [`check_thermal_conductor`] with its allowed range.
+
+use std::fmt;
+use std::path::{Path, PathBuf};
+
+use serde::Deserialize;
+use serde::de::{self, Deserializer, MapAccess, Visitor};
+
+use super::validate::Check;
+use super::{InputError, Problem};
+use crate::thermal::catalog::{self, CatalogConductor, CatalogError};
+use crate::thermal::cigre601::convection::{is_smooth, roughness};
+use crate::thermal::{Standard, ThermalConductor};
+
+/// The name given to a conductor given by its properties without a `name` [-].
+pub const UNNAMED: &str = "conductor given by its properties";
+
+/// The conductor of a thermal table: a catalogue name (a string) or its properties (a table).
+#[derive(Clone, Debug, PartialEq)]
+pub enum ConductorSpec {
+    /// a name or alias of the built-in catalogue (or of the user catalogue, resolved at parse)
+    Name(String),
+    /// the conductor's properties
+    Properties(Box<ConductorProperties>),
+}
+
+impl<'de> Deserialize<'de> for ConductorSpec {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct V;
+        impl<'de> Visitor<'de> for V {
+            type Value = ConductorSpec;
+            fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+                f.write_str("a conductor's name (text) or a table of its properties")
+            }
+            fn visit_str<E: de::Error>(self, v: &str) -> Result<ConductorSpec, E> {
+                Ok(ConductorSpec::Name(v.to_string()))
+            }
+            fn visit_map<A: MapAccess<'de>>(self, map: A) -> Result<ConductorSpec, A::Error> {
+                let p = ConductorProperties::deserialize(de::value::MapAccessDeserializer::new(map))?;
+                Ok(ConductorSpec::Properties(Box::new(p)))
+            }
+        }
+        d.deserialize_any(V)
+    }
+}
+
+impl ConductorSpec {
+    /// The conductor's thermal data: the catalogue entry of a name, or the properties.
+    pub fn thermal(&self) -> Result<ThermalConductor, CatalogError> {
+        match self {
+            ConductorSpec::Name(n) => Ok(catalog::find(n)?.thermal()),
+            ConductorSpec::Properties(p) => Ok(p.thermal()),
+        }
+    }
+
+    /// The conductor as the file gives it: the name as written, or the properties' name.
+    pub fn label(&self) -> String {
+        match self {
+            ConductorSpec::Name(n) => n.clone(),
+            ConductorSpec::Properties(p) => p.name.clone().unwrap_or_else(|| UNNAMED.into()),
+        }
+    }
+
+    /// The catalogue's primary name of a name (the name as written if it is not found), or the properties'
+    /// name.
+    pub fn primary_name(&self) -> String {
+        match self {
+            ConductorSpec::Name(n) => catalog::find(n).map(|k| k.name.clone()).unwrap_or_else(|_| n.clone()),
+            ConductorSpec::Properties(_) => self.label(),
+        }
+    }
+}
+
+fn zero() -> f64 {
+    0.0
+}
+
+fn one() -> f64 {
+    1.0
+}
+
+/// A conductor given by its properties (SI units, temperatures in kelvin; the field names are those of the
+/// catalogue, `data/conductors.toml`).
+#[derive(Clone, Debug, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ConductorProperties {
+    /// name (free text) \[-\]; default "conductor given by its properties"
+    #[serde(default)]
+    pub name: Option<String>,
+    /// outside diameter `D` \[m\], in [1e-3, 0.2]
+    pub diameter_m: f64,
+    /// diameter of the steel core `D_c` \[m\], in [0, D); default 0 (no core; not used by the heat balance)
+    #[serde(default = "zero")]
+    pub core_diameter_m: f64,
+    /// diameter of one wire of the outer layer `d` \[m\], in [0, D/3] (0: a smooth surface; TB 601 roughness
+    /// `R_s = d / (2 (D - d))`)
+    pub outer_strand_diameter_m: f64,
+    /// AC resistance per unit length at `temperature_low_k` \[ohm/m\], in [1e-7, 0.1]
+    pub resistance_low_ohm_per_m: f64,
+    /// the low reference temperature `T_low` \[K\], in [200, 500]
+    pub temperature_low_k: f64,
+    /// AC resistance per unit length at `temperature_high_k` \[ohm/m\], in [R_low, 0.1]
+    pub resistance_high_ohm_per_m: f64,
+    /// the high reference temperature `T_high` \[K\], in (T_low, 600]
+    pub temperature_high_k: f64,
+    /// magnetic-core factor on the resistance `k_m` \[-\], in [1, 1.5]; default 1 (CIGRE TB 601 section 2.2
+    /// gives about 1.0-1.06 for ACSR)
+    #[serde(default = "one")]
+    pub magnetic_core_factor: f64,
+    /// surface emissivity `epsilon` \[-\], in [0, 1]
+    pub emissivity: f64,
+    /// solar absorptivity of the surface `alpha_s` \[-\], in [0, 1]
+    pub absorptivity: f64,
+    /// mass of the outer (aluminium) layers per unit length `m_a` \[kg/m\], in [1e-3, 100]
+    pub outer_mass_kg_per_m: f64,
+    /// specific heat of the outer layers at 20 C `c_a` \[J/(kg K)\], in [100, 5000] (aluminium 897)
+    pub outer_specific_heat_j_per_kg_k: f64,
+    /// temperature coefficient of `c_a`, `beta_a` \[1/K\], in [0, 1e-3]; default 0 (a constant specific heat, as
+    /// IEEE Std 738 takes it; CIGRE TB 601 section 4.3 gives 3.8e-4 for aluminium)
+    #[serde(default = "zero")]
+    pub outer_specific_heat_coefficient_per_k: f64,
+    /// mass of the core per unit length `m_s` \[kg/m\], in [0, 100]; default 0 (no core)
+    #[serde(default = "zero")]
+    pub core_mass_kg_per_m: f64,
+    /// specific heat of the core at 20 C `c_s` \[J/(kg K)\], in [100, 5000] when there is a core (steel 481);
+    /// default 0
+    #[serde(default = "zero")]
+    pub core_specific_heat_j_per_kg_k: f64,
+    /// temperature coefficient of `c_s`, `beta_s` \[1/K\], in [0, 1e-3]; default 0 (TB 601: steel 1.0e-4)
+    #[serde(default = "zero")]
+    pub core_specific_heat_coefficient_per_k: f64,
+}
+
+impl ConductorProperties {
+    /// The thermal data.
+    pub fn thermal(&self) -> ThermalConductor {
+        ThermalConductor {
+            name: self.name.clone().unwrap_or_else(|| UNNAMED.into()),
+            diameter_m: self.diameter_m,
+            core_diameter_m: self.core_diameter_m,
+            outer_strand_diameter_m: self.outer_strand_diameter_m,
+            resistance_low_ohm_per_m: self.resistance_low_ohm_per_m,
+            temperature_low_k: self.temperature_low_k,
+            resistance_high_ohm_per_m: self.resistance_high_ohm_per_m,
+            temperature_high_k: self.temperature_high_k,
+            magnetic_core_factor: self.magnetic_core_factor,
+            emissivity: self.emissivity,
+            absorptivity: self.absorptivity,
+            outer_mass_kg_per_m: self.outer_mass_kg_per_m,
+            outer_specific_heat_j_per_kg_k: self.outer_specific_heat_j_per_kg_k,
+            core_mass_kg_per_m: self.core_mass_kg_per_m,
+            core_specific_heat_j_per_kg_k: self.core_specific_heat_j_per_kg_k,
+            outer_specific_heat_coefficient_per_k: self.outer_specific_heat_coefficient_per_k,
+            core_specific_heat_coefficient_per_k: self.core_specific_heat_coefficient_per_k,
+        }
+    }
+}
+
+/// The properties table of a catalogue entry's thermal data (what a user catalogue's name is replaced by).
+fn properties_table(t: &ThermalConductor) -> toml::Table {
+    let mut m = toml::Table::new();
+    m.insert("name".into(), t.name.clone().into());
+    for (k, v) in [
+        ("diameter_m", t.diameter_m),
+        ("core_diameter_m", t.core_diameter_m),
+        ("outer_strand_diameter_m", t.outer_strand_diameter_m),
+        ("resistance_low_ohm_per_m", t.resistance_low_ohm_per_m),
+        ("temperature_low_k", t.temperature_low_k),
+        ("resistance_high_ohm_per_m", t.resistance_high_ohm_per_m),
+        ("temperature_high_k", t.temperature_high_k),
+        ("magnetic_core_factor", t.magnetic_core_factor),
+        ("emissivity", t.emissivity),
+        ("absorptivity", t.absorptivity),
+        ("outer_mass_kg_per_m", t.outer_mass_kg_per_m),
+        ("outer_specific_heat_j_per_kg_k", t.outer_specific_heat_j_per_kg_k),
+        ("outer_specific_heat_coefficient_per_k", t.outer_specific_heat_coefficient_per_k),
+        ("core_mass_kg_per_m", t.core_mass_kg_per_m),
+        ("core_specific_heat_j_per_kg_k", t.core_specific_heat_j_per_kg_k),
+        ("core_specific_heat_coefficient_per_k", t.core_specific_heat_coefficient_per_k),
+    ] {
+        m.insert(k.into(), toml::Value::Float(v));
+    }
+    m
+}
+
+/// Check a conductor's thermal data, each field under `{at}.` (e.g. `thermal.conductor`, or `conductor[1]` of
+/// a catalogue file); whether all are valid.
+pub fn check_thermal_conductor(c: &mut Check, at: &str, t: &ThermalConductor) -> bool {
+    let f = |name: &str| format!("{at}.{name}");
+    let n0 = c.0.len();
+    let d = t.diameter_m;
+    if c.within(&f("diameter_m"), d, 1.0e-3, 0.2, "must be in [1e-3, 0.2] m") {
+        if !(t.core_diameter_m.is_finite() && t.core_diameter_m >= 0.0 && t.core_diameter_m < d) {
+            c.fail(&f("core_diameter_m"), t.core_diameter_m, &format!("must be in [0, diameter_m) = [0, {d}) m"));
+        }
+        c.within(
+            &f("outer_strand_diameter_m"),
+            t.outer_strand_diameter_m,
+            0.0,
+            d / 3.0,
+            &format!(
+                "must be in [0, diameter_m / 3] = [0, {}] m (0: a smooth surface; a 7-wire conductor has d = D/3)",
+                d / 3.0
+            ),
+        );
+    }
+    let (r_lo, t_lo) = (t.resistance_low_ohm_per_m, t.temperature_low_k);
+    let lo_ok = c.within(&f("resistance_low_ohm_per_m"), r_lo, 1.0e-7, 0.1, "must be in [1e-7, 0.1] ohm/m")
+        & c.within(&f("temperature_low_k"), t_lo, 200.0, 500.0, "must be in [200, 500] K (kelvin, not Celsius)");
+    if lo_ok {
+        let hi_r = c.within(
+            &f("resistance_high_ohm_per_m"),
+            t.resistance_high_ohm_per_m,
+            r_lo,
+            0.1,
+            &format!("must be in [resistance_low_ohm_per_m, 0.1] = [{r_lo}, 0.1] ohm/m"),
+        );
+        let hi_t = t.temperature_high_k.is_finite() && t.temperature_high_k > t_lo && t.temperature_high_k <= 600.0;
+        if !hi_t {
+            c.fail(
+                &f("temperature_high_k"),
+                t.temperature_high_k,
+                &format!("must be in (temperature_low_k, 600] = ({t_lo}, 600] K"),
+            );
+        }
+        if hi_r && hi_t {
+            // The resistance line R(T) = R_low + (T - T_low) (R_high - R_low) / (T_high - T_low) must stay
+            // positive over the temperatures the model may meet (from 200 K).
+            let slope = (t.resistance_high_ohm_per_m - r_lo) / (t.temperature_high_k - t_lo);
+            let at_200 = r_lo + (200.0 - t_lo) * slope;
+            if at_200 <= 0.0 {
+                c.fail(
+                    &f("resistance_high_ohm_per_m"),
+                    t.resistance_high_ohm_per_m,
+                    &format!(
+                        "makes the resistance line negative at 200 K ({at_200:.3e} ohm/m): the temperature \
+                         coefficient (R_high - R_low) / (R_low (T_high - T_low)) must be below 1 / (T_low - 200 K)"
+                    ),
+                );
+            }
+        }
+    }
+    c.within(&f("magnetic_core_factor"), t.magnetic_core_factor, 1.0, 1.5, "must be in [1, 1.5]");
+    c.within(&f("emissivity"), t.emissivity, 0.0, 1.0, "must be in [0, 1]");
+    c.within(&f("absorptivity"), t.absorptivity, 0.0, 1.0, "must be in [0, 1]");
+    c.within(&f("outer_mass_kg_per_m"), t.outer_mass_kg_per_m, 1.0e-3, 100.0, "must be in [1e-3, 100] kg/m");
+    let heat = "must be in [100, 5000] J/(kg K) (aluminium 897, steel 481)";
+    c.within(&f("outer_specific_heat_j_per_kg_k"), t.outer_specific_heat_j_per_kg_k, 100.0, 5000.0, heat);
+    let beta = "must be in [0, 1e-3] 1/K (TB 601 section 4.3: aluminium 3.8e-4, steel 1.0e-4)";
+    c.within(&f("outer_specific_heat_coefficient_per_k"), t.outer_specific_heat_coefficient_per_k, 0.0, 1.0e-3, beta);
+    if c.within(&f("core_mass_kg_per_m"), t.core_mass_kg_per_m, 0.0, 100.0, "must be in [0, 100] kg/m")
+        && t.core_mass_kg_per_m > 0.0
+    {
+        c.within(&f("core_specific_heat_j_per_kg_k"), t.core_specific_heat_j_per_kg_k, 100.0, 5000.0, heat);
+    } else {
+        c.within(&f("core_specific_heat_j_per_kg_k"), t.core_specific_heat_j_per_kg_k, 0.0, 5000.0, heat);
+    }
+    c.within(&f("core_specific_heat_coefficient_per_k"), t.core_specific_heat_coefficient_per_k, 0.0, 1.0e-3, beta);
+    c.0.len() == n0
+}
+
+/// Check a catalogue entry (a user catalogue's `conductor[k]`): its thermal data and its mechanical data.
+fn check_catalog_entry(c: &mut Check, at: &str, k: &CatalogConductor) {
+    check_thermal_conductor(c, at, &k.thermal());
+    let f = |name: &str| format!("{at}.{name}");
+    c.within(&f("aluminium_area_m2"), k.aluminium_area_m2, 1.0e-6, 1.0e-2, "must be in [1e-6, 1e-2] m^2");
+    c.within(&f("steel_area_m2"), k.steel_area_m2, 0.0, 1.0e-2, "must be in [0, 1e-2] m^2");
+    c.within(&f("linear_density_kg_per_m"), k.linear_density_kg_per_m, 1.0e-3, 1.0e3, "must be in [1e-3, 1e3] kg/m");
+    c.within(&f("rated_tensile_strength_n"), k.rated_tensile_strength_n, 1.0, 1.0e7, "must be in [1, 1e7] N");
+    c.within(&f("axial_stiffness_n"), k.axial_stiffness_n, 1.0, 1.0e10, "must be in [1, 1e10] N");
+    c.within(&f("thermal_expansion_per_k"), k.thermal_expansion_per_k, 0.0, 1.0e-3, "must be in [0, 1e-3] 1/K");
+}
+
+/// Check the inclination `inclination_deg` [deg] of a span at `field`: TB 601 only (IEEE Std 738 has no such
+/// term), within the range of eq. (24) for the surface (80 deg stranded, 60 deg smooth; a de-icing's ice
+/// surface is smooth).
+pub fn check_inclination(
+    c: &mut Check,
+    field: &str,
+    inclination_deg: f64,
+    standard: Standard,
+    conductor: Option<&ThermalConductor>,
+    iced: bool,
+) {
+    if inclination_deg == 0.0 {
+        return;
+    }
+    if standard == Standard::Ieee738 {
+        c.fail(
+            field,
+            inclination_deg,
+            "is used by CIGRE TB 601 only (its natural convection, eq. (24)); IEEE Std 738 has no inclination \
+             term: set standard = \"cigre601\" or leave it out",
+        );
+        return;
+    }
+    let smooth = iced || conductor.is_some_and(|t| is_smooth(roughness(t.diameter_m, t.outer_strand_diameter_m)));
+    let (limit, surface) = if smooth { (60.0, "a smooth surface") } else { (80.0, "a stranded conductor") };
+    c.within(
+        field,
+        inclination_deg,
+        0.0,
+        limit,
+        &format!("must be in [0, {limit}] deg for {surface} (the range TB 601 gives eq. (24) for)"),
+    );
+}
+
+/// The label of a user catalogue in messages: its path, and whose catalogue it is.
+fn catalog_label(path: &Path, file: &str) -> String {
+    format!("{} (conductor_catalog of {file})", path.display())
+}
+
+/// Read the user catalogue that the table `t` names in `conductor_catalog` (a path relative to the folder of
+/// `file`), validate every entry, and replace `t`'s `conductor` by the entry's thermal properties if the
+/// entry is found there (a name not found there is left for the built-in catalogue, and refused with both
+/// catalogues' names if neither has it). `at` is the table's dotted prefix in messages (`thermal.` or
+/// empty). Returns the catalogue's entries (for `[conductor] catalog`) and whether `t` changed.
+pub(crate) fn resolve_user_catalog(
+    t: &mut toml::Table,
+    at: &str,
+    file: &str,
+) -> Result<(Option<Vec<CatalogConductor>>, bool), InputError> {
+    let Some(path) = t.get("conductor_catalog") else { return Ok((None, false)) };
+    let invalid = |field: String, value: String, allowed: String| InputError::Invalid {
+        file: file.into(),
+        problems: vec![Problem { field, value, allowed }],
+    };
+    let field = format!("{at}conductor_catalog");
+    let Some(rel) = path.as_str() else {
+        return Err(invalid(field, path.to_string(), "must be the path of a conductor catalogue (text)".into()));
+    };
+    let full: PathBuf = Path::new(file).parent().unwrap_or(Path::new("")).join(rel);
+    let label = catalog_label(&full, file);
+    let text = std::fs::read_to_string(&full).map_err(|e| {
+        invalid(
+            field.clone(),
+            format!("{rel:?}"),
+            format!(
+                "must name a readable conductor catalogue (TOML, the format of data/conductors.toml), relative \
+                 to the folder of {file}: {}: {e}",
+                full.display()
+            ),
+        )
+    })?;
+    let entries =
+        catalog::parse(&text).map_err(|e| InputError::Parse { file: label.clone(), message: e.to_string() })?;
+    let mut c = Check(Vec::new());
+    for (k, e) in entries.iter().enumerate() {
+        check_catalog_entry(&mut c, &format!("conductor[{k}]"), e);
+    }
+    if !c.0.is_empty() {
+        return Err(InputError::Invalid { file: label, problems: c.0 });
+    }
+    let mut changed = false;
+    if let Some(toml::Value::String(name)) = t.get("conductor").cloned() {
+        if let Some(e) = find_in(&entries, &name) {
+            t.insert("conductor".into(), toml::Value::Table(properties_table(&e.thermal())));
+            changed = true;
+        } else if let Err(CatalogError::NotFound { available, .. }) = catalog::find(&name) {
+            let user: Vec<String> = entries.iter().map(|e| e.name.clone()).collect();
+            return Err(invalid(
+                format!("{at}conductor"),
+                format!("{name:?}"),
+                format!(
+                    "no conductor of that name in {} (available: {}) nor in the built-in catalogue (available: {})",
+                    full.display(),
+                    user.join("; "),
+                    available.join("; ")
+                ),
+            ));
+        }
+    }
+    Ok((Some(entries), changed))
+}
+
+/// The user catalogue entry called `name` (name or alias, ignoring case and surrounding whitespace).
+pub(crate) fn find_in<'a>(entries: &'a [CatalogConductor], name: &str) -> Option<&'a CatalogConductor> {
+    let key = name.trim().to_lowercase();
+    entries.iter().find(|e| std::iter::once(&e.name).chain(&e.aliases).any(|n| n.trim().to_lowercase() == key))
+}
