@@ -632,8 +632,8 @@ fn a_line_base_refuses_unknown_names_varied_names_and_a_field_named_twice() {
         ),
         (
             vec!["--vary", "line.conductors[name=A].section.segments_per_spam=10"],
-            "the base file does not set it and the scenario format has no such field (unknown field \
-             `segments_per_spam`",
+            "the base file does not set it and the scenario format has no such field (field \
+             `line.conductors[0].section.segments_per_spam`: unknown field `segments_per_spam`",
         ),
         (
             vec!["--vary", "line.conductors[nom=A].x=1"],
