@@ -104,7 +104,7 @@ fn catalog_defaults(text: &str, file: &str) -> Result<Option<toml::Table>, Input
 /// conductor it names (`catalog = "..."`): `linear_density_kg_per_m`, `diameter_m`,
 /// `rated_tensile_strength_n`, `thermal_expansion_per_k` and `axial_stiffness_n` (unless
 /// `youngs_modulus_pa` is given). Returns whether it names one.
-pub(crate) fn fill_from_catalog(c: &mut toml::Table, file: &str, field: &str) -> Result<bool, InputError> {
+pub fn fill_from_catalog(c: &mut toml::Table, file: &str, field: &str) -> Result<bool, InputError> {
     let Some(name) = c.get("catalog") else { return Ok(false) };
     let Some(name) = name.as_str() else {
         return Err(InputError::Invalid {
