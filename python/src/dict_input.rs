@@ -22,9 +22,9 @@ use toml::de::{DeTable, DeValue};
 use crate::args::{short_repr, type_name, wrong_type};
 use crate::errors::input_error;
 
-/// Deepest nesting of tables and arrays taken from a dict. A scenario nests five deep
-/// (`line.conductors[k].section.supports[j].pivot_m`); the bound keeps a pathologically deep (or
-/// endlessly `.tolist()`-ing) value from exhausting the stack.
+/// Deepest nesting of tables and arrays taken from a dict, the dict itself counted. A scenario nests six
+/// deep (the dict, `line`, `conductors`, `[k]`, `section`, `supports`, `[j]`, `pivot_m`: eight); the bound
+/// keeps a pathologically deep (or endlessly `.tolist()`-ing) value from exhausting the stack.
 pub const MAX_DEPTH: usize = 32;
 
 /// The argument `param` (a mapping: a dict or any `collections.abc.Mapping`) as a TOML table; `prefix` is
@@ -83,8 +83,8 @@ impl Writer<'_> {
             let allowed = "must not contain itself: a dict or list cannot be one of its own items (a reference cycle)";
             return Err(self.refuse(py, at, value, allowed));
         }
-        if self.ancestors.len() > MAX_DEPTH {
-            let allowed = format!("tables and arrays may be nested at most {MAX_DEPTH} deep");
+        if self.ancestors.len() >= MAX_DEPTH {
+            let allowed = format!("tables and arrays may be nested at most {MAX_DEPTH} deep (the dict itself counts)");
             return Err(self.refuse(py, at, format!("<{} nested deeper>", type_name(v)), &allowed));
         }
         self.ancestors.push(id);
@@ -194,9 +194,10 @@ fn located<T: DeserializeOwned>(t: &toml::Table) -> Option<Problem> {
     let text = toml::to_string(t).ok()?;
     let e = toml::from_str::<T>(&text).err()?;
     let message = plain_types(e.message());
-    let Some(at) = e.span().map(|s| s.start) else { return Some(top(message)) };
+    // No span, or an empty one (serde's position for the document itself: a missing top-level table).
+    let Some(at) = e.span().filter(|s| !s.is_empty()) else { return Some(top(message)) };
     let tree = DeTable::parse(&text).ok()?;
-    let Some(found) = deepest(tree.get_ref(), at) else { return Some(top(message)) };
+    let Some(found) = deepest(tree.get_ref(), &at) else { return Some(top(message)) };
     let mut steps = found.steps.clone();
     let mut value = found.value;
     if let Some(array) = tables_array(tree.get_ref(), &found) {
@@ -228,8 +229,9 @@ struct Found<'t, 'i> {
     span: Range<usize>,
 }
 
-/// The narrowest (then deepest) value or key whose span holds the position `at`.
-fn deepest<'t, 'i>(tree: &'t DeTable<'i>, at: usize) -> Option<Found<'t, 'i>> {
+/// The narrowest (then deepest) value or key whose span holds the error's span `at` (none for an error of
+/// the whole document, a missing top-level table).
+fn deepest<'t, 'i>(tree: &'t DeTable<'i>, at: &Range<usize>) -> Option<Found<'t, 'i>> {
     let mut best = None;
     let mut steps = Vec::new();
     for (k, v) in tree.iter() {
@@ -244,11 +246,11 @@ fn find<'t, 'i>(
     key: Option<Range<usize>>,
     v: &'t Spanned<DeValue<'i>>,
     steps: &mut Vec<Step>,
-    at: usize,
+    at: &Range<usize>,
     best: &mut Option<Found<'t, 'i>>,
 ) {
     for span in key.into_iter().chain([v.span()]) {
-        if span.contains(&at) || (span.is_empty() && span.start == at) {
+        if span.start <= at.start && at.end <= span.end {
             let better = best.as_ref().is_none_or(|b| {
                 span.len() < b.span.len() || (span.len() == b.span.len() && steps.len() > b.steps.len())
             });
@@ -326,8 +328,8 @@ fn culprit<T: DeserializeOwned>(t: &toml::Table, array: &[Step], message: &str) 
         if plain_types(e.message()) != message {
             return false;
         }
-        let (Some(at), Ok(tree)) = (e.span().map(|s| s.start), DeTable::parse(&text)) else { return false };
-        deepest(tree.get_ref(), at).is_some_and(|f| path_text(&f.steps).starts_with(&prefix))
+        let (Some(at), Ok(tree)) = (e.span(), DeTable::parse(&text)) else { return false };
+        deepest(tree.get_ref(), &at).is_some_and(|f| path_text(&f.steps).starts_with(&prefix))
     })
 }
 
