@@ -434,8 +434,9 @@ def equilibrium(scenario: ScenarioLike, *, tolerance_n: Optional[float] = None, 
 
     Newton's method on the scheme's own discrete equations at rest, with the exact Jacobian, from the
     scenario's initial shape (the library's ``statics::solve``; ``tolerance_n`` [N] on the largest nodal
-    residual, default ``1e-10`` of the largest nodal load). Raises :class:`StaticsError` if it does not
-    converge. Returns a dict:
+    residual, default ``1e-10`` of the largest nodal load; None or a finite number > 0) in at most
+    ``max_iterations`` (an int in [0, 10000]). Raises :class:`StaticsError` if it does not converge.
+    Returns a dict:
 
     - ``x_m`` (N+1, 3) node positions [m]; ``s_m`` (N+1,) Lagrangian coordinate [m];
     - ``segment_tension_n`` (N,) and ``node_tension_n`` (N+1,) tensions [N] (a node's is the mean of its

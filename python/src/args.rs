@@ -105,17 +105,17 @@ pub fn optional_real(param: &str, v: Option<&Bound<'_, PyAny>>) -> PyResult<Opti
     }
 }
 
-/// A whole-number argument `>= 0` that fits in 64 bits: an int (or a NumPy integer); a bool or a float is
-/// refused, a negative or too large int is a bad value.
-pub fn count(param: &str, v: &Bound<'_, PyAny>) -> PyResult<usize> {
+/// A whole-number argument in `[0, max]`: an int (or a NumPy integer); a bool or a float is refused, a
+/// negative or too large int is a bad value.
+pub fn count(param: &str, v: &Bound<'_, PyAny>, max: u64) -> PyResult<usize> {
     let whole = v.is_instance_of::<PyInt>() || (v.hasattr("__index__")? && !v.is_instance_of::<PyFloat>());
     if v.is_instance_of::<PyBool>() || numpy_bool(v) || !whole {
         return Err(wrong_type(param, "an int", v));
     }
-    let i = v.call_method0("__index__")?;
+    let i = v.call_method0("__index__").map_err(|_| wrong_type(param, "an int", v))?;
     match i.extract::<u64>() {
-        Ok(n) if n <= i64::MAX as u64 => Ok(n as usize),
-        _ => Err(bad_value(v.py(), param, short_repr(&i), "must be a whole number in [0, 2^63 - 1]")),
+        Ok(n) if n <= max => usize::try_from(n).map_err(|_| PyOverflowError::new_err("usize")),
+        _ => Err(bad_value(v.py(), param, short_repr(&i), &format!("must be a whole number in [0, {max}]"))),
     }
 }
 

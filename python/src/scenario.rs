@@ -425,14 +425,20 @@ pub(crate) fn run_options(
     Ok((out_dir, args::flag("allow_large", allow_large)?))
 }
 
+/// Most Newton iterations a static solve may be given: 100 times the library's default (100,
+/// `StaticOptions::default`); the solves of the repository converge in about ten (docs/python.md: 8 for
+/// fig. 3). Without a bound, a tolerance the solve cannot reach (1e-300 N) with `max_iterations = 2**63 -
+/// 1` runs for ever (found by test_fuzz.py); at this bound it ends, `ohl.StaticsError`.
+pub const MAX_ITERATIONS: u64 = 10_000;
+
 /// The checked options of a static solve: `tolerance_n` (None or a finite number > 0 [N]) and
-/// `max_iterations` (an int >= 0; 0 only checks the start against the tolerance).
+/// `max_iterations` (an int in [0, `MAX_ITERATIONS`]; 0 only checks the start against the tolerance).
 pub(crate) fn static_options(
     tolerance_n: Option<&Bound<'_, PyAny>>,
     max_iterations: &Bound<'_, PyAny>,
 ) -> PyResult<StaticOptions> {
     let tolerance_n = args::optional_positive("tolerance_n", tolerance_n, "[N]")?;
-    let max_iterations = args::count("max_iterations", max_iterations)?;
+    let max_iterations = args::count("max_iterations", max_iterations, MAX_ITERATIONS)?;
     Ok(StaticOptions { tolerance_n, max_iterations })
 }
 
