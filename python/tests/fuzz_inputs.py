@@ -25,6 +25,7 @@ from __future__ import annotations
 
 import argparse
 import collections
+import collections.abc
 import copy
 import decimal
 import fractions
