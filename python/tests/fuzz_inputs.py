@@ -318,9 +318,8 @@ def draw(g: Generator) -> Call:
         return Call(f"equilibrium(tolerance_n={tol!r:.40}, max_iterations={its!r:.40})", lambda: ohl.equilibrium(target, tolerance_n=tol, max_iterations=its), dict_input=True)
     if x < 0.95:
         sc = ohl.from_dict(TINY)
-        out = None if r.random() < 0.5 else g.arg("a\0b", 0.2)
-        if isinstance(out, str) and "\0" not in out:
-            out = None  # a valid directory would be written: not here
+        # never a usable path (str, bytes or os.PathLike without a NUL): the run would write there
+        out = r.choice([None, None, None, 3, 1.5, True, [], {}, "a\0b", b"a\0b", Opaque(), np.int64(1)])
         big = g.arg(False, 0.7)
         return Call(f"run(out_dir={out!r:.40}, allow_large={big!r:.40})", lambda: ohl.run(sc, out_dir=out, allow_large=big))
     text = (REPO / "app/tests/bad_inputs/valid.toml").read_text(encoding="utf-8")

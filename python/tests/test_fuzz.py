@@ -15,7 +15,6 @@ from pathlib import Path
 
 import pytest
 
-from conftest import REPO
 
 SEED = int(os.environ.get("OHL_FUZZ_SEED", "22"))
 SECONDS = float(os.environ.get("OHL_FUZZ_SECONDS", "4"))
@@ -26,10 +25,14 @@ def test_random_inputs_keep_the_error_contract(tmp_path: Path) -> None:
     log = tmp_path / "cases.log"
     script = Path(__file__).with_name("fuzz_inputs.py")
     cmd = [sys.executable, str(script), "--seed", str(SEED), "--seconds", str(SECONDS), "--log", str(log)]
-    p = subprocess.run(cmd, cwd=REPO, capture_output=True, text=True, timeout=SECONDS + 300)
+    # In an empty directory: relative paths the generator draws name nothing there, and nothing is written.
+    work = tmp_path / "cwd"
+    work.mkdir()
+    p = subprocess.run(cmd, cwd=work, capture_output=True, text=True, timeout=SECONDS + 300)
     last = log.read_text(encoding="utf-8").splitlines()[-1:] if log.exists() else []
     assert p.returncode == 0, f"exit {p.returncode} at {last}\n{p.stdout[-4000:]}\n{p.stderr[-4000:]}"
     assert p.stdout.startswith(f"fuzz: seed {SEED}, "), p.stdout
     calls = int(p.stdout.split(", ")[1].split()[0])
     assert calls >= 100, p.stdout  # the budget bought a real sample
+    assert not list(work.iterdir()), "the calls wrote files"
     print(p.stdout.strip())
