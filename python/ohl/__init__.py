@@ -16,6 +16,7 @@ kelvin. ``docs/python.md`` in the repository documents the API.
 
 from __future__ import annotations
 
+import numbers
 import os
 from collections.abc import Mapping
 from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
@@ -84,7 +85,7 @@ def load(path: Union[str, "os.PathLike[str]"]) -> Scenario:
     (with ``file``, ``field``, ``value``, ``allowed``). Valid but doubtful values are issued as
     :class:`ScenarioWarning`.
     """
-    return Scenario.from_file(os.fspath(path))
+    return Scenario.from_file(path)
 
 
 def loads(text: str, name: str = "<string>") -> Scenario:
@@ -98,19 +99,10 @@ def from_dict(d: Mapping, name: str = "<dict>") -> Scenario:
     Tables are nested dicts, ``events`` a list of dicts. A Python ``int`` is a TOML integer and a
     ``float`` a TOML float: a whole-number field (``segments``) needs an ``int``, a number field takes
     either (exactly as in a file). The dict is written as TOML (``Scenario.toml``) and read like a file,
-    so a dict and the equivalent TOML text give bitwise the same run.
+    so a dict and the equivalent TOML text give bitwise the same run. Every error names the dict's field
+    path (``geometry.segments``), as written in the dict.
     """
-    return Scenario.from_dict(_plain_dict(d), name)
-
-
-def _plain_dict(d: Mapping) -> dict:
-    return {k: (_plain_dict(v) if isinstance(v, Mapping) else _plain_list(v)) for k, v in d.items()}
-
-
-def _plain_list(v: Any) -> Any:
-    if isinstance(v, (list, tuple)):
-        return [_plain_dict(x) if isinstance(x, Mapping) else _plain_list(x) for x in v]
-    return v
+    return Scenario.from_dict(d, name)
 
 
 def load_line(path: Union[str, "os.PathLike[str]"]) -> LineScenario:
@@ -120,7 +112,7 @@ def load_line(path: Union[str, "os.PathLike[str]"]) -> LineScenario:
     ``ohl run`` prints if it is invalid (each field named under ``line.conductors[k]``); warnings are
     issued as :class:`ScenarioWarning`, ``NAME: message`` for conductor ``NAME``.
     """
-    return LineScenario.from_file(os.fspath(path))
+    return LineScenario.from_file(path)
 
 
 def loads_line(text: str, name: str = "<string>") -> LineScenario:
@@ -131,7 +123,7 @@ def loads_line(text: str, name: str = "<string>") -> LineScenario:
 def line_from_dict(d: Mapping, name: str = "<dict>") -> LineScenario:
     """A line scenario from a dict with the tables and keys of a line file (``{"line": {"conductors":
     [...], "towers": [...]}, "duration": {...}, ...}``), read as :func:`from_dict` reads a scenario."""
-    return LineScenario.from_dict(_plain_dict(d), name)
+    return LineScenario.from_dict(d, name)
 
 
 def _as_scenario(source: ScenarioLike) -> Scenario:
@@ -142,7 +134,7 @@ def _as_scenario(source: ScenarioLike) -> Scenario:
     if isinstance(source, (str, os.PathLike)):
         return load(source)
     raise TypeError(
-        f"expected an ohl.Scenario, a dict or a path to a scenario file, not {type(source).__name__} "
+        f"argument `scenario` must be an ohl.Scenario, a dict or a path to a scenario file, not {type(source).__name__} "
         "(for TOML text use ohl.loads(text))"
     )
 
@@ -155,8 +147,8 @@ def _as_line_scenario(source: LineScenarioLike) -> LineScenario:
     if isinstance(source, (str, os.PathLike)):
         return load_line(source)
     raise TypeError(
-        f"expected an ohl.LineScenario, a dict or a path to a line scenario file, not {type(source).__name__} "
-        "(for TOML text use ohl.loads_line(text))"
+        f"argument `scenario` must be an ohl.LineScenario, a dict or a path to a line scenario file, not "
+        f"{type(source).__name__} (for TOML text use ohl.loads_line(text))"
     )
 
 
@@ -403,7 +395,7 @@ def run(
     if isinstance(scenario, LineScenario):
         return run_line(scenario, out_dir=out_dir, allow_large=allow_large)
     sc = _as_scenario(scenario)
-    raw = _ohl.run_raw(sc, None if out_dir is None else os.fspath(out_dir), allow_large)
+    raw = _ohl.run_raw(sc, out_dir, allow_large)
     result = RunResult(raw, sc)
     u = raw["instability"]
     if u is not None:
@@ -429,7 +421,7 @@ def run_line(
     unstable, ``KeyboardInterrupt`` on Ctrl-C.
     """
     sc = _as_line_scenario(scenario)
-    raw = _ohl.run_line_raw(sc, None if out_dir is None else os.fspath(out_dir), allow_large)
+    raw = _ohl.run_line_raw(sc, out_dir, allow_large)
     result = LineResult(raw, sc)
     u = raw["instability"]
     if u is not None:
@@ -442,8 +434,9 @@ def equilibrium(scenario: ScenarioLike, *, tolerance_n: Optional[float] = None, 
 
     Newton's method on the scheme's own discrete equations at rest, with the exact Jacobian, from the
     scenario's initial shape (the library's ``statics::solve``; ``tolerance_n`` [N] on the largest nodal
-    residual, default ``1e-10`` of the largest nodal load). Raises :class:`StaticsError` if it does not
-    converge. Returns a dict:
+    residual, default ``1e-10`` of the largest nodal load; None or a finite number > 0) in at most
+    ``max_iterations`` (an int in [0, 10000]). Raises :class:`StaticsError` if it does not converge.
+    Returns a dict:
 
     - ``x_m`` (N+1, 3) node positions [m]; ``s_m`` (N+1,) Lagrangian coordinate [m];
     - ``segment_tension_n`` (N,) and ``node_tension_n`` (N+1,) tensions [N] (a node's is the mean of its
@@ -491,8 +484,39 @@ def conductor(name: str) -> Dict[str, Any]:
     return _ohl.conductor(name)
 
 
-def _vector(x: Any) -> Tuple[List[float], bool, Tuple[int, ...]]:
-    a = np.asarray(x, dtype=float)
+def _argument_error(param: str, value: str, allowed: str) -> ScenarioError:
+    """The error of an argument's value, as the library words a field's (file ``<arguments>``)."""
+    message = f"<arguments>: field `{param}` = {value} is not allowed: {allowed}"
+    return ScenarioError(message, "<arguments>", param, value, allowed, [(param, value, allowed)])
+
+
+def _floats(param: str, x: Any) -> np.ndarray:
+    """The argument ``param``, a number or an array of numbers (ints, floats, NumPy numbers), as a float64
+    array of its shape. Anything else (a str, a bool, None, a ragged nesting) raises ``TypeError`` naming
+    the argument; an int beyond the range of a float :class:`ScenarioError`. NaN and infinities pass: the
+    library's range checks name them."""
+    wrong = TypeError(f"argument `{param}` must be a number or an array of numbers, not {type(x).__name__}")
+    if isinstance(x, (str, bytes, bool, np.bool_)):
+        raise wrong
+    try:
+        a = np.asarray(x)
+    except (TypeError, ValueError):  # a ragged nesting
+        raise wrong from None
+    if a.dtype.kind in "iuf":
+        return a.astype(np.float64)
+    if a.dtype.kind != "O" or not all(isinstance(v, numbers.Real) and not isinstance(v, (bool, np.bool_)) for v in a.flat):
+        raise wrong
+    for v in a.flat:  # ints beyond 64 bits
+        try:
+            float(v)
+        except OverflowError:
+            text = str(v) if len(str(v)) <= 60 else f"{str(v)[:57]}..."
+            raise _argument_error(param, text, "must be numbers within the range of a float (|x| < 1.8e308)") from None
+    return a.astype(np.float64)
+
+
+def _vector(param: str, x: Any) -> Tuple[List[float], bool, Tuple[int, ...]]:
+    a = _floats(param, x)
     return a.ravel().tolist(), a.ndim == 0, a.shape
 
 
@@ -518,9 +542,15 @@ def heat_terms(
     ``day_of_year``, ``solar_hour``, ``line_azimuth_deg``, ``atmosphere``, ...; omit for a night);
     ``standard`` is ``"ieee738"`` (IEEE Std 738-2012) or ``"cigre601"`` (CIGRE TB 601).
     """
-    t, i = np.broadcast_arrays(np.asarray(temperature_k, dtype=float), np.asarray(current_a, dtype=float))
+    t, i = _floats("temperature_k", temperature_k), _floats("current_a", current_a)
+    try:
+        t, i = np.broadcast_arrays(t, i)
+    except ValueError:
+        raise _argument_error(
+            "current_a", f"an array of shape {i.shape}", f"must broadcast with temperature_k's shape {t.shape}"
+        ) from None
     scalar = t.ndim == 0
-    d = _ohl.heat_terms(t.ravel().tolist(), i.ravel().tolist(), conductor, dict(weather), standard, scalar)
+    d = _ohl.heat_terms(t.ravel().tolist(), i.ravel().tolist(), conductor, weather, standard, scalar)
     return _shaped(d, scalar, t.shape)
 
 
@@ -532,16 +562,16 @@ def steady_temperature(current_a: Any, *, conductor: str, weather: Mapping, stan
     otherwise. Raises :class:`ThermalError` where there is no steady state (thermal runaway). Arguments
     as :func:`heat_terms`.
     """
-    v, scalar, shape = _vector(current_a)
-    return _shaped(_ohl.steady_temperature(v, conductor, dict(weather), standard, scalar), scalar, shape)
+    v, scalar, shape = _vector("current_a", current_a)
+    return _shaped(_ohl.steady_temperature(v, conductor, weather, standard, scalar), scalar, shape)
 
 
 def ampacity(max_temperature_k: Any, *, conductor: str, weather: Mapping, standard: str = "ieee738") -> Dict[str, Any]:
     """The steady ampacity ``current_a`` [A] for a maximum conductor temperature (or an array) [K], with
     the terms there [W/m]. Raises :class:`ThermalError` if the sun alone heats the conductor above it.
     Arguments as :func:`heat_terms`."""
-    v, scalar, shape = _vector(max_temperature_k)
-    return _shaped(_ohl.ampacity(v, conductor, dict(weather), standard, scalar), scalar, shape)
+    v, scalar, shape = _vector("max_temperature_k", max_temperature_k)
+    return _shaped(_ohl.ampacity(v, conductor, weather, standard, scalar), scalar, shape)
 
 
 def transient(
@@ -564,11 +594,16 @@ def transient(
     ``initial_temperature_k``, ``final_temperature_k``, and with ``limit_k`` [K] the time it is first
     reached, ``time_to_limit_s`` [s] (None if not within ``end_time_s``).
     """
-    if np.ndim(current_a) == 0:
-        points = [[0.0, float(current_a)]]
+    a = _floats("current_a", current_a)
+    if a.ndim == 0:
+        points = [[0.0, float(a)]]
+    elif a.shape == (2,) or (a.ndim == 2 and a.shape[1] == 2):
+        points = a.reshape(-1, 2).tolist()
     else:
-        points = np.asarray(current_a, dtype=float).reshape(-1, 2).tolist()
-    return _ohl.transient(points, float(end_time_s), conductor, dict(weather), standard, initial_temperature_k, float(step_s), limit_k)
+        raise _argument_error(
+            "current_a", f"an array of shape {a.shape}", "must be one current [A] or a list of (t [s], I [A]) points, shape (n, 2)"
+        )
+    return _ohl.transient(points, end_time_s, conductor, weather, standard, initial_temperature_k, step_s, limit_k)
 
 
 def deicing(
@@ -591,9 +626,7 @@ def deicing(
     every ``record_every_s`` [s]: ``t_s``, ``conductor_k``, ``surface_k``, ``melted_kg_per_m``,
     ``joule_w_per_m``, ``loss_w_per_m``. Raises :class:`ThermalError` if the ice does not shed.
     """
-    return _ohl.deicing(
-        float(thickness_m), float(current_a), conductor, dict(weather), standard, float(density_kg_per_m3), criterion, float(step_s), float(record_every_s)
-    )
+    return _ohl.deicing(thickness_m, current_a, conductor, weather, standard, density_kg_per_m3, criterion, step_s, record_every_s)
 
 
 def deicing_current(
@@ -608,6 +641,4 @@ def deicing_current(
     step_s: float = 1.0,
 ) -> float:
     """The least current [A] that sheds an ice shell ``thickness_m`` [m] within ``shed_within_s`` [s]."""
-    return _ohl.deicing_current(
-        float(thickness_m), float(shed_within_s), conductor, dict(weather), standard, float(density_kg_per_m3), criterion, float(step_s)
-    )
+    return _ohl.deicing_current(thickness_m, shed_within_s, conductor, weather, standard, density_kg_per_m3, criterion, step_s)

@@ -5,9 +5,12 @@
 //! `ohl::output::snapshots::node_rows`). Line scenarios (`[line]`, several conductors) are run by
 //! `ohl::run::line::run_line_observed` with the same observer on each conductor ([`line`]). The pure-Python
 //! half (`python/ohl/__init__.py`) holds the result classes and the exceptions; `docs/python.md` documents
-//! the API.
+//! the API. Every argument is checked at the call ([`args`]; dicts: [`dict_input`]), as
+//! `python/README.md` states the error contract.
 
+mod args;
 mod convert;
+mod dict_input;
 mod errors;
 mod line;
 mod scenario;

@@ -4,22 +4,24 @@
 //! the same observer as a single run's ([`Record`]), the line's clearances and tower loads from the run's
 //! own samples (`LineSamples`, the numbers of `clearances.csv` and `towers.csv`).
 
-use std::path::PathBuf;
-
 use ohl::line::clearance::ClearanceTracker;
 use ohl::output::probe::MIDSPAN;
 use ohl::run::line::{LineRunError, LineRunOptions, LineWorkEstimate, run_line_observed};
 use ohl::run::{Observer, timeseries_columns};
 use ohl::scenario::line::{self as line_scenario, LinePlan};
 use ohl::scenario::{self, InputError};
-use ohl::statics::{self, StaticOptions};
-use pyo3::exceptions::{PyKeyboardInterrupt, PyOSError, PyTypeError};
+use ohl::statics;
+use pyo3::exceptions::{PyKeyboardInterrupt, PyOSError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 
-use crate::convert::{array1, array2, array3, table, to_py};
+use crate::args;
+use crate::convert::{array1, array2, array3, to_py};
+use crate::dict_input;
 use crate::errors::{input_error, raise};
-use crate::scenario::{Interrupt, Record, interrupted, report_into, state_dict};
+use crate::scenario::{
+    Interrupt, Record, file_name, interrupted, report_into, run_options, state_dict, static_options,
+};
 
 /// A line scenario (a file with `[line]`: several conductors), parsed, validated and planned: ready to
 /// run. Build it with `LineScenario.from_file`, `LineScenario.from_toml` or `LineScenario.from_dict` (or
@@ -57,7 +59,8 @@ impl LineScenario {
     /// Read a line scenario file (TOML, SI units). A missing file raises `FileNotFoundError`; an invalid
     /// one `ohl.ScenarioError`.
     #[staticmethod]
-    fn from_file(py: Python<'_>, path: PathBuf) -> PyResult<LineScenario> {
+    fn from_file(py: Python<'_>, path: &Bound<'_, PyAny>) -> PyResult<LineScenario> {
+        let path = args::path("path", path)?;
         let file = path.display().to_string();
         let text = scenario::read_text(&path).map_err(|e| input_error(py, e))?;
         build(py, text, file)
@@ -65,19 +68,23 @@ impl LineScenario {
 
     /// A line scenario from TOML text; `name` stands for the file name in messages.
     #[staticmethod]
-    #[pyo3(signature = (text, name = "<string>"))]
-    fn from_toml(py: Python<'_>, text: String, name: &str) -> PyResult<LineScenario> {
-        build(py, text, name.to_string())
+    #[pyo3(signature = (text, name = None))]
+    fn from_toml(py: Python<'_>, text: &Bound<'_, PyAny>, name: Option<&Bound<'_, PyAny>>) -> PyResult<LineScenario> {
+        let text = args::text("text", text)?;
+        build(py, text, file_name(name, "<string>")?)
     }
 
     /// A line scenario from a dict with the tables and keys of a line file (`{"line": {"conductors":
-    /// [{...}, ...]}, ...}`), written as TOML text and read like a file (`Scenario.from_dict`'s rules).
+    /// [{...}, ...]}, ...}`), written as TOML text and read like a file (`Scenario.from_dict`'s rules:
+    /// every error names the dict's field path).
     #[staticmethod]
-    #[pyo3(signature = (d, name = "<dict>"))]
-    fn from_dict(py: Python<'_>, d: &Bound<'_, PyDict>, name: &str) -> PyResult<LineScenario> {
-        let t = table(d, "")?;
-        let text = toml::to_string(&t).map_err(|e| PyTypeError::new_err(format!("{name}: {e}")))?;
-        build(py, text, name.to_string())
+    #[pyo3(signature = (d, name = None))]
+    fn from_dict(py: Python<'_>, d: &Bound<'_, PyAny>, name: Option<&Bound<'_, PyAny>>) -> PyResult<LineScenario> {
+        let name = file_name(name, "<dict>")?;
+        let t = dict_input::table_of("d", d, &name, "")?;
+        let text = dict_input::to_text(py, &t, &name)?;
+        dict_input::check_line(&t, &name).map_err(|e| input_error(py, e))?;
+        build(py, text, name)
     }
 
     /// The scenario's name (`name` in the file, or "line").
@@ -277,13 +284,13 @@ fn estimate_dict<'py>(py: Python<'py>, e: &LineWorkEstimate) -> PyResult<Bound<'
 /// Run a line scenario; the raw arrays and the summary for `ohl.run_line` (which builds the
 /// `LineResult`).
 #[pyfunction]
-#[pyo3(signature = (scenario, out_dir = None, allow_large = false))]
 pub fn run_line_raw<'py>(
     py: Python<'py>,
     scenario: &Bound<'py, LineScenario>,
-    out_dir: Option<PathBuf>,
-    allow_large: bool,
+    out_dir: Option<&Bound<'py, PyAny>>,
+    allow_large: &Bound<'py, PyAny>,
 ) -> PyResult<Bound<'py, PyDict>> {
+    let (out_dir, allow_large) = run_options(out_dir, allow_large)?;
     let sc = scenario.get();
     let estimate = LineWorkEstimate::of(&sc.plan);
     let checked = if allow_large { estimate.check_resolvable() } else { estimate.check() };
@@ -351,16 +358,15 @@ pub fn run_line_raw<'py>(
 /// The static equilibrium of the whole line under its loads at `t = 0` (before any event), by the
 /// library's Newton solver on the line (`statics::solve_line`) from the scenario's initial state.
 #[pyfunction]
-#[pyo3(signature = (scenario, tolerance_n = None, max_iterations = 100))]
 pub fn line_equilibrium<'py>(
     py: Python<'py>,
     scenario: &Bound<'py, LineScenario>,
-    tolerance_n: Option<f64>,
-    max_iterations: usize,
+    tolerance_n: Option<&Bound<'py, PyAny>>,
+    max_iterations: &Bound<'py, PyAny>,
 ) -> PyResult<Bound<'py, PyDict>> {
+    let opts = static_options(tolerance_n, max_iterations)?;
     let sc = scenario.get();
     let mut line = sc.plan.line.clone();
-    let opts = StaticOptions { tolerance_n, max_iterations };
     let solved = py.detach(|| {
         let r = statics::solve_line(&mut line, &opts);
         line.evaluate_forces();

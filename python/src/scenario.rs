@@ -11,11 +11,13 @@ use ohl::run::{Control, Ending, Level, Observer, OutputError, RunError, RunOptio
 use ohl::scenario::{self, Plan, WorkEstimate};
 use ohl::scheme::Explicit;
 use ohl::statics::{self, StaticOptions, StaticReport};
-use pyo3::exceptions::{PyKeyboardInterrupt, PyOSError, PyTypeError};
+use pyo3::exceptions::{PyKeyboardInterrupt, PyOSError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 
-use crate::convert::{array1, array2, array3, table, to_py};
+use crate::args;
+use crate::convert::{array1, array2, array3, to_py};
+use crate::dict_input;
 use crate::errors::{input_error, raise};
 
 /// A scenario, parsed, validated and planned: ready to run. Build it with `Scenario.from_file`,
@@ -44,7 +46,8 @@ impl Scenario {
     /// Read a scenario file (TOML, SI units). A missing file raises `FileNotFoundError`; an invalid one
     /// `ohl.ScenarioError`. Warnings (valid but doubtful values) are issued as `ohl.ScenarioWarning`.
     #[staticmethod]
-    fn from_file(py: Python<'_>, path: PathBuf) -> PyResult<Scenario> {
+    fn from_file(py: Python<'_>, path: &Bound<'_, PyAny>) -> PyResult<Scenario> {
+        let path = args::path("path", path)?;
         let file = path.display().to_string();
         let text = scenario::read_text(&path).map_err(|e| input_error(py, e))?;
         build(py, text, file)
@@ -52,22 +55,25 @@ impl Scenario {
 
     /// A scenario from TOML text; `name` stands for the file name in messages.
     #[staticmethod]
-    #[pyo3(signature = (text, name = "<string>"))]
-    fn from_toml(py: Python<'_>, text: String, name: &str) -> PyResult<Scenario> {
-        build(py, text, name.to_string())
+    #[pyo3(signature = (text, name = None))]
+    fn from_toml(py: Python<'_>, text: &Bound<'_, PyAny>, name: Option<&Bound<'_, PyAny>>) -> PyResult<Scenario> {
+        let text = args::text("text", text)?;
+        build(py, text, file_name(name, "<string>")?)
     }
 
     /// A scenario from a dict with the tables and keys of a scenario file (nested dicts for tables, a
     /// list of dicts for `events`). Python `int` is a TOML integer and `float` a TOML float, so a field
     /// that takes a whole number (`segments`) needs an `int`; a number field takes either. The dict is
     /// written as TOML text (`Scenario.toml`) and read like a file; `name` stands for the file name in
-    /// messages.
+    /// messages, and every error names the dict's field path (`dict_input`).
     #[staticmethod]
-    #[pyo3(signature = (d, name = "<dict>"))]
-    fn from_dict(py: Python<'_>, d: &Bound<'_, PyDict>, name: &str) -> PyResult<Scenario> {
-        let t = table(d, "")?;
-        let text = toml::to_string(&t).map_err(|e| PyTypeError::new_err(format!("{name}: {e}")))?;
-        build(py, text, name.to_string())
+    #[pyo3(signature = (d, name = None))]
+    fn from_dict(py: Python<'_>, d: &Bound<'_, PyAny>, name: Option<&Bound<'_, PyAny>>) -> PyResult<Scenario> {
+        let name = file_name(name, "<dict>")?;
+        let t = dict_input::table_of("d", d, &name, "")?;
+        let text = dict_input::to_text(py, &t, &name)?;
+        dict_input::check_scenario(&t, &name).map_err(|e| input_error(py, e))?;
+        build(py, text, name)
     }
 
     /// The scenario's name (`name` in the file, or "scenario").
@@ -195,6 +201,14 @@ impl Scenario {
         let ctor = slf.get_type().getattr("from_toml")?;
         let s = slf.get();
         Ok((ctor, (s.text.clone(), s.file.clone())))
+    }
+}
+
+/// The argument `name` (the file name of messages), or `default`.
+pub(crate) fn file_name(name: Option<&Bound<'_, PyAny>>, default: &str) -> PyResult<String> {
+    match name {
+        Some(n) if !n.is_none() => args::text("name", n),
+        _ => Ok(default.to_string()),
     }
 }
 
@@ -344,13 +358,13 @@ impl Observer for Interrupt {
 
 /// Run a scenario; the raw arrays and the summary for `ohl.run` (which builds the `RunResult`).
 #[pyfunction]
-#[pyo3(signature = (scenario, out_dir = None, allow_large = false))]
 pub fn run_raw<'py>(
     py: Python<'py>,
     scenario: &Bound<'py, Scenario>,
-    out_dir: Option<PathBuf>,
-    allow_large: bool,
+    out_dir: Option<&Bound<'py, PyAny>>,
+    allow_large: &Bound<'py, PyAny>,
 ) -> PyResult<Bound<'py, PyDict>> {
+    let (out_dir, allow_large) = run_options(out_dir, allow_large)?;
     let sc = scenario.get();
     let estimate = sc.plan.work_estimate();
     let checked = if allow_large { estimate.check_resolvable() } else { estimate.check() };
@@ -399,19 +413,47 @@ pub fn run_raw<'py>(
     Ok(d)
 }
 
+/// The checked options of a run: `out_dir` (None or a path) and `allow_large` (a bool).
+pub(crate) fn run_options(
+    out_dir: Option<&Bound<'_, PyAny>>,
+    allow_large: &Bound<'_, PyAny>,
+) -> PyResult<(Option<PathBuf>, bool)> {
+    let out_dir = match out_dir {
+        Some(d) => Some(args::path("out_dir", d)?),
+        None => None,
+    };
+    Ok((out_dir, args::flag("allow_large", allow_large)?))
+}
+
+/// Most Newton iterations a static solve may be given: 100 times the library's default (100,
+/// `StaticOptions::default`); the solves of the repository converge in about ten (docs/python.md: 8 for
+/// fig. 3). Without a bound, a tolerance the solve cannot reach (1e-300 N) with `max_iterations = 2**63 -
+/// 1` runs for ever (found by test_fuzz.py); at this bound it ends, `ohl.StaticsError`.
+pub const MAX_ITERATIONS: u64 = 10_000;
+
+/// The checked options of a static solve: `tolerance_n` (None or a finite number > 0 [N]) and
+/// `max_iterations` (an int in [0, `MAX_ITERATIONS`]; 0 only checks the start against the tolerance).
+pub(crate) fn static_options(
+    tolerance_n: Option<&Bound<'_, PyAny>>,
+    max_iterations: &Bound<'_, PyAny>,
+) -> PyResult<StaticOptions> {
+    let tolerance_n = args::optional_positive("tolerance_n", tolerance_n, "[N]")?;
+    let max_iterations = args::count("max_iterations", max_iterations, MAX_ITERATIONS)?;
+    Ok(StaticOptions { tolerance_n, max_iterations })
+}
+
 /// The static equilibrium of the scenario's line under its loads at `t = 0` (before any event), by the
 /// library's Newton solver started from the scenario's initial shape.
 #[pyfunction]
-#[pyo3(signature = (scenario, tolerance_n = None, max_iterations = 100))]
 pub fn equilibrium<'py>(
     py: Python<'py>,
     scenario: &Bound<'py, Scenario>,
-    tolerance_n: Option<f64>,
-    max_iterations: usize,
+    tolerance_n: Option<&Bound<'py, PyAny>>,
+    max_iterations: &Bound<'py, PyAny>,
 ) -> PyResult<Bound<'py, PyDict>> {
+    let opts = static_options(tolerance_n, max_iterations)?;
     let sc = scenario.get();
     let mut solver = sc.plan.solver.clone();
-    let opts = StaticOptions { tolerance_n, max_iterations };
     let solved = py.detach(|| {
         let r = statics::solve(&mut solver, &opts);
         solver.evaluate_forces();

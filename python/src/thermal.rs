@@ -16,27 +16,29 @@ use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
-use crate::convert::{array1, table};
+use crate::args::{self, ARGUMENTS};
+use crate::convert::array1;
+use crate::dict_input;
 use crate::errors::{input_error, raise};
 
-/// What stands for the file in the messages of the thermal functions.
-const ARGUMENTS: &str = "<arguments>";
-
 /// The thermal case of the arguments, checked as `ohl thermal` checks a file; `rename` maps the case's
-/// field names to the arguments'.
+/// field names to the arguments'. `conductor` and `standard` must be str and `weather` a dict (else
+/// `TypeError`); an error in the weather dict names its path (`weather.sun.day_of_year`), not a line of
+/// the case's TOML text (`dict_input`).
 fn case(
     py: Python<'_>,
-    conductor: &str,
-    weather: &Bound<'_, PyDict>,
-    standard: &str,
+    conductor: &Bound<'_, PyAny>,
+    weather: &Bound<'_, PyAny>,
+    standard: &Bound<'_, PyAny>,
     mut fields: toml::Table,
     rename: impl Fn(&str) -> String,
 ) -> PyResult<ThermalCase> {
-    fields.insert("conductor".into(), conductor.into());
-    fields.insert("standard".into(), standard.into());
-    fields.insert("weather".into(), toml::Value::Table(table(weather, "weather")?));
-    let text = toml::to_string(&fields).map_err(|e| PyTypeError::new_err(e.to_string()))?;
-    parse_case(&text, ARGUMENTS).map_err(|e| {
+    fields.insert("conductor".into(), args::text("conductor", conductor)?.into());
+    fields.insert("standard".into(), args::text("standard", standard)?.into());
+    fields
+        .insert("weather".into(), toml::Value::Table(dict_input::table_of("weather", weather, ARGUMENTS, "weather")?));
+    let text = dict_input::to_text(py, &fields, ARGUMENTS)?;
+    dict_input::check::<ThermalCase>(&fields, ARGUMENTS).and_then(|()| parse_case(&text, ARGUMENTS)).map_err(|e| {
         let e = match e {
             InputError::Invalid { file, mut problems } => {
                 for p in &mut problems {
@@ -77,7 +79,9 @@ pub fn conductors() -> Vec<String> {
 /// A conductor of the catalogue by its name or an alias (case-insensitive): every field, SI units and
 /// kelvin. An unknown name raises `ohl.ScenarioError` listing the names available.
 #[pyfunction]
-pub fn conductor<'py>(py: Python<'py>, name: &str) -> PyResult<Bound<'py, PyDict>> {
+pub fn conductor<'py>(py: Python<'py>, name: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyDict>> {
+    let name = args::text("name", name)?;
+    let name = name.as_str();
     let c = catalog::find(name).map_err(|e| {
         let p =
             ohl::scenario::Problem { field: "conductor".into(), value: format!("{name:?}"), allowed: e.to_string() };
@@ -127,14 +131,14 @@ pub fn conductor<'py>(py: Python<'py>, name: &str) -> PyResult<Bound<'py, PyDict
 /// The heat-balance terms [W/m] at temperatures `temperature_k` [K] and currents `current_a` [A] (equal
 /// lengths).
 #[pyfunction]
-#[pyo3(signature = (temperature_k, current_a, conductor, weather, standard = "ieee738", scalar = false))]
+#[pyo3(signature = (temperature_k, current_a, conductor, weather, standard, scalar))]
 pub fn heat_terms<'py>(
     py: Python<'py>,
     temperature_k: Vec<f64>,
     current_a: Vec<f64>,
-    conductor: &str,
-    weather: &Bound<'py, PyDict>,
-    standard: &str,
+    conductor: &Bound<'py, PyAny>,
+    weather: &Bound<'py, PyAny>,
+    standard: &Bound<'py, PyAny>,
     scalar: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
     if temperature_k.len() != current_a.len() {
@@ -172,9 +176,9 @@ fn steady_solutions<'py, E: std::fmt::Display + Send>(
     inputs: Vec<f64>,
     input: &str,
     output: &str,
-    conductor: &str,
-    weather: &Bound<'py, PyDict>,
-    standard: &str,
+    conductor: &Bound<'py, PyAny>,
+    weather: &Bound<'py, PyAny>,
+    standard: &Bound<'py, PyAny>,
     scalar: bool,
     solve: impl Fn(&Model, f64) -> Result<(f64, (f64, f64)), E> + Send + Sync,
 ) -> PyResult<Bound<'py, PyDict>> {
@@ -194,13 +198,13 @@ fn steady_solutions<'py, E: std::fmt::Display + Send>(
 
 /// The steady conductor temperature [K] for each current [A], with the terms there (as `ohl thermal`).
 #[pyfunction]
-#[pyo3(signature = (current_a, conductor, weather, standard = "ieee738", scalar = false))]
+#[pyo3(signature = (current_a, conductor, weather, standard, scalar))]
 pub fn steady_temperature<'py>(
     py: Python<'py>,
     current_a: Vec<f64>,
-    conductor: &str,
-    weather: &Bound<'py, PyDict>,
-    standard: &str,
+    conductor: &Bound<'py, PyAny>,
+    weather: &Bound<'py, PyAny>,
+    standard: &Bound<'py, PyAny>,
     scalar: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
     steady_solutions(py, current_a, "current_a", "temperature_k", conductor, weather, standard, scalar, |m, i| {
@@ -210,13 +214,13 @@ pub fn steady_temperature<'py>(
 
 /// The steady ampacity [A] for each maximum conductor temperature [K], with the terms there.
 #[pyfunction]
-#[pyo3(signature = (max_temperature_k, conductor, weather, standard = "ieee738", scalar = false))]
+#[pyo3(signature = (max_temperature_k, conductor, weather, standard, scalar))]
 pub fn ampacity<'py>(
     py: Python<'py>,
     max_temperature_k: Vec<f64>,
-    conductor: &str,
-    weather: &Bound<'py, PyDict>,
-    standard: &str,
+    conductor: &Bound<'py, PyAny>,
+    weather: &Bound<'py, PyAny>,
+    standard: &Bound<'py, PyAny>,
     scalar: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
     steady_solutions(
@@ -234,20 +238,22 @@ pub fn ampacity<'py>(
 
 /// The conductor temperature after a current schedule (RK4, as `ohl thermal`'s `[transient]`).
 #[pyfunction]
-#[pyo3(signature = (current_a, end_time_s, conductor, weather, standard = "ieee738", initial_temperature_k = None,
-    step_s = 1.0, limit_k = None))]
 #[allow(clippy::too_many_arguments)]
 pub fn transient<'py>(
     py: Python<'py>,
     current_a: Vec<[f64; 2]>,
-    end_time_s: f64,
-    conductor: &str,
-    weather: &Bound<'py, PyDict>,
-    standard: &str,
-    initial_temperature_k: Option<f64>,
-    step_s: f64,
-    limit_k: Option<f64>,
+    end_time_s: &Bound<'py, PyAny>,
+    conductor: &Bound<'py, PyAny>,
+    weather: &Bound<'py, PyAny>,
+    standard: &Bound<'py, PyAny>,
+    initial_temperature_k: Option<&Bound<'py, PyAny>>,
+    step_s: &Bound<'py, PyAny>,
+    limit_k: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyDict>> {
+    let end_time_s = args::real("end_time_s", end_time_s)?;
+    let step_s = args::real("step_s", step_s)?;
+    let initial_temperature_k = args::optional_real("initial_temperature_k", initial_temperature_k)?;
+    let limit_k = args::optional_real("limit_k", limit_k)?;
     let mut t = toml::Table::new();
     t.insert("current_a".into(), toml::Value::Array(current_a.iter().map(|p| floats(p)).collect()));
     t.insert("end_time_s".into(), end_time_s.into());
@@ -287,64 +293,69 @@ pub fn transient<'py>(
     Ok(d)
 }
 
-/// The de-icing case of the arguments (`[deicing]` of `ohl thermal`).
-#[allow(clippy::too_many_arguments)]
+/// The arguments of an ice shell common to `deicing` and `deicing_current`, as Python gave them.
+struct Shell<'a, 'py> {
+    thickness_m: &'a Bound<'py, PyAny>,
+    conductor: &'a Bound<'py, PyAny>,
+    weather: &'a Bound<'py, PyAny>,
+    standard: &'a Bound<'py, PyAny>,
+    density_kg_per_m3: &'a Bound<'py, PyAny>,
+    criterion: &'a Bound<'py, PyAny>,
+    step_s: &'a Bound<'py, PyAny>,
+}
+
+/// The de-icing case of the arguments (`[deicing]` of `ohl thermal`) with the asked quantity (`current_a`
+/// or `shed_within_s`) and its value.
 fn deicing_case(
     py: Python<'_>,
-    thickness_m: f64,
-    conductor: &str,
-    weather: &Bound<'_, PyDict>,
-    standard: &str,
-    density_kg_per_m3: f64,
-    criterion: &str,
-    step_s: f64,
-    asked: (&str, f64),
-) -> PyResult<(ohl::thermal::deicing::Deicing, DeicingOptions)> {
+    shell: Shell<'_, '_>,
+    asked: (&str, &Bound<'_, PyAny>),
+) -> PyResult<(ohl::thermal::deicing::Deicing, DeicingOptions, f64)> {
+    let thickness_m = args::real("thickness_m", shell.thickness_m)?;
+    let value = args::real(asked.0, asked.1)?;
+    let density_kg_per_m3 = args::real("density_kg_per_m3", shell.density_kg_per_m3)?;
+    let criterion = args::text("criterion", shell.criterion)?;
+    let step_s = args::real("step_s", shell.step_s)?;
     let mut t = toml::Table::new();
     t.insert("thickness_m".into(), thickness_m.into());
     t.insert("density_kg_per_m3".into(), density_kg_per_m3.into());
     t.insert("criterion".into(), criterion.into());
     t.insert("step_s".into(), step_s.into());
-    t.insert(asked.0.into(), floats(&[asked.1]));
+    t.insert(asked.0.into(), floats(&[value]));
     let mut f = toml::Table::new();
     f.insert("deicing".into(), toml::Value::Table(t));
-    let c = case(py, conductor, weather, standard, f, |field| {
+    let c = case(py, shell.conductor, shell.weather, shell.standard, f, |field| {
         scalar_field(field.strip_prefix("deicing.").unwrap_or(field), asked.0, true)
     })?;
     let de = c.deicing().map_err(|e| failed(py, e))?.expect("the case has the [deicing] table it was given");
     let opts = DeicingOptions { step_s, ..Default::default() };
-    Ok((de, opts))
+    Ok((de, opts, value))
 }
 
-/// De-icing of an ice shell by a current: warming, melting and the time to shed.
+/// De-icing of an ice shell by a current: warming, melting and the time to shed. `record_every_s` is the
+/// interval of the series [s], `>= 0` and finite (`DeicingOptions::record_every_s`; 0 records every step).
 #[pyfunction]
-#[pyo3(signature = (thickness_m, current_a, conductor, weather, standard = "ieee738", density_kg_per_m3 = 900.0,
-    criterion = "slot", step_s = 1.0, record_every_s = 10.0))]
 #[allow(clippy::too_many_arguments)]
 pub fn deicing<'py>(
     py: Python<'py>,
-    thickness_m: f64,
-    current_a: f64,
-    conductor: &str,
-    weather: &Bound<'py, PyDict>,
-    standard: &str,
-    density_kg_per_m3: f64,
-    criterion: &str,
-    step_s: f64,
-    record_every_s: f64,
+    thickness_m: &Bound<'py, PyAny>,
+    current_a: &Bound<'py, PyAny>,
+    conductor: &Bound<'py, PyAny>,
+    weather: &Bound<'py, PyAny>,
+    standard: &Bound<'py, PyAny>,
+    density_kg_per_m3: &Bound<'py, PyAny>,
+    criterion: &Bound<'py, PyAny>,
+    step_s: &Bound<'py, PyAny>,
+    record_every_s: &Bound<'py, PyAny>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let (de, mut opts) = deicing_case(
-        py,
-        thickness_m,
-        conductor,
-        weather,
-        standard,
-        density_kg_per_m3,
-        criterion,
-        step_s,
-        ("current_a", current_a),
-    )?;
-    opts.record_every_s = record_every_s;
+    let shell = Shell { thickness_m, conductor, weather, standard, density_kg_per_m3, criterion, step_s };
+    let (de, mut opts, current_a) = deicing_case(py, shell, ("current_a", current_a))?;
+    let record = args::real("record_every_s", record_every_s)?;
+    if !(record.is_finite() && record >= 0.0) {
+        let allowed = "must be a finite number >= 0 s (0 records every step)";
+        return Err(args::bad_value(py, "record_every_s", ohl::scenario::validate::number(record), allowed));
+    }
+    opts.record_every_s = record;
     let (min, r) = py.detach(|| (de.minimum_current_a(), de.run(current_a, &opts)));
     let min = min.map_err(|e| failed(py, e))?;
     let r = r.map_err(|e| failed(py, e))?;
@@ -376,31 +387,20 @@ pub fn deicing<'py>(
 
 /// The least current [A] that sheds the shell within `shed_within_s` [s] (bisection to 1e-3 A).
 #[pyfunction]
-#[pyo3(signature = (thickness_m, shed_within_s, conductor, weather, standard = "ieee738", density_kg_per_m3 = 900.0,
-    criterion = "slot", step_s = 1.0))]
 #[allow(clippy::too_many_arguments)]
-pub fn deicing_current(
-    py: Python<'_>,
-    thickness_m: f64,
-    shed_within_s: f64,
-    conductor: &str,
-    weather: &Bound<'_, PyDict>,
-    standard: &str,
-    density_kg_per_m3: f64,
-    criterion: &str,
-    step_s: f64,
+pub fn deicing_current<'py>(
+    py: Python<'py>,
+    thickness_m: &Bound<'py, PyAny>,
+    shed_within_s: &Bound<'py, PyAny>,
+    conductor: &Bound<'py, PyAny>,
+    weather: &Bound<'py, PyAny>,
+    standard: &Bound<'py, PyAny>,
+    density_kg_per_m3: &Bound<'py, PyAny>,
+    criterion: &Bound<'py, PyAny>,
+    step_s: &Bound<'py, PyAny>,
 ) -> PyResult<f64> {
-    let (de, mut opts) = deicing_case(
-        py,
-        thickness_m,
-        conductor,
-        weather,
-        standard,
-        density_kg_per_m3,
-        criterion,
-        step_s,
-        ("shed_within_s", shed_within_s),
-    )?;
+    let shell = Shell { thickness_m, conductor, weather, standard, density_kg_per_m3, criterion, step_s };
+    let (de, mut opts, shed_within_s) = deicing_case(py, shell, ("shed_within_s", shed_within_s))?;
     opts.record_every_s = 10.0;
     py.detach(|| de.current_to_shed_in(shed_within_s, &opts)).map_err(|e| failed(py, e))
 }

@@ -163,8 +163,10 @@ def test_int_and_float_in_a_dict() -> None:
     d["geometry"]["segments"] = np.int64(20)
     d["geometry"]["right_support_m"] = np.array([0.0, 160.0, 0.0])
     assert ohl.from_dict(d).segments == 20
-    with pytest.raises(TypeError, match="geometry.segments"):
+    # None cannot be written to TOML: an error of the dict, at its field (python/README.md, "Errors").
+    with pytest.raises(ohl.ScenarioError, match="geometry.segments") as e:
         ohl.from_dict({**d, "geometry": {**d["geometry"], "segments": None}})
+    assert (e.value.field, e.value.value) == ("geometry.segments", "None")
 
 
 def test_scenario_properties(tmp_path: Path) -> None:

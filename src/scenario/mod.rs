@@ -122,7 +122,7 @@ fn catalog_defaults(text: &str, file: &str) -> Result<Option<toml::Table>, Input
 /// `rated_tensile_strength_n`, `thermal_expansion_per_k` and `axial_stiffness_n` (unless
 /// `youngs_modulus_pa` is given). The name is looked up in `user` (a user catalogue's entries) first, then in
 /// the built-in catalogue. Returns whether it names one.
-pub(crate) fn fill_from_catalog(
+pub fn fill_from_catalog(
     c: &mut toml::Table,
     file: &str,
     field: &str,
