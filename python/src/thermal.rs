@@ -144,13 +144,22 @@ pub fn heat_terms<'py>(
     if temperature_k.len() != current_a.len() {
         return Err(PyTypeError::new_err("temperature_k and current_a must have the same length"));
     }
+    // The terms are evaluated at any conductor temperature in the range of a thermal case's maximum
+    // temperatures, also below the air (negative convection), which a maximum temperature may not be.
+    for (k, &t) in temperature_k.iter().enumerate() {
+        if !(250.0..=600.0).contains(&t) {
+            let param = scalar_field(&format!("temperature_k[{k}]"), "temperature_k", scalar);
+            return Err(crate::args::bad_value(
+                py,
+                &param,
+                ohl::scenario::validate::number(t),
+                "must be in [250, 600] K",
+            ));
+        }
+    }
     let mut f = toml::Table::new();
     f.insert("current_a".into(), floats(&current_a));
-    f.insert("max_temperature_k".into(), floats(&temperature_k));
-    let c = case(py, conductor, weather, standard, f, |field| {
-        let field = field.replacen("max_temperature_k", "temperature_k", 1);
-        scalar_field(&scalar_field(&field, "temperature_k", scalar), "current_a", scalar)
-    })?;
+    let c = case(py, conductor, weather, standard, f, |field| scalar_field(field, "current_a", scalar))?;
     let m = model(py, &c)?;
     let terms: Vec<_> = py.detach(|| temperature_k.iter().zip(&current_a).map(|(&t, &i)| m.terms(t, i)).collect());
     let d = terms_dict(py, &terms)?;

@@ -180,6 +180,12 @@ def test_every_bad_file_as_a_dict(path: Path) -> None:
     if path.stem == "valid":
         ohl.from_dict(d)
         return
+    if "weather" in d or path.stem == "scenario_given_to_thermal" or "conductor_catalog" in str(d):
+        # A case of `ohl thermal` (test_thermal covers the thermal functions), a scenario given to it, or a
+        # user catalogue (a path relative to the case file, which a dict does not have).
+        pytest.skip("not a scenario file read by ohl.load")
+    if path.stem == "heat_conduction_above_budget":
+        pytest.skip("valid, refused by the work budget of a run (test_errors)")
     with pytest.raises(ohl.ScenarioError) as file_error:
         ohl.load(rel)
     e = dict_error(d, line="line" in d)
@@ -194,7 +200,8 @@ def test_every_bad_file_as_a_dict(path: Path) -> None:
     line = path.read_text(encoding="utf-8").splitlines()[int(m.group(1)) - 1]
     names = [re.sub(r"\[\d+\]", "", s) for s in e.field.split(".")]
     # the field's own key on that line, or (a missing field) its table's header
-    assert names[-1] in line or (e.value == "(missing)" and names[-2] in line), (e.field, line)
+    # (missing fields of an inline table in an array: the file points at the element's own line)
+    assert names[-1] in line or (e.value == "(missing)" and (names[-2] in line or "{" in line)), (e.field, line)
 
 
 # --- line dicts --------------------------------------------------------------------------------------

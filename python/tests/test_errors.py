@@ -34,6 +34,16 @@ def cli_error(binary: Path, path: str) -> str:
 @pytest.mark.parametrize("path", BAD, ids=[p.stem for p in BAD])
 def test_every_bad_input_gives_the_command_lines_message(path: Path, ohl_cli: Path) -> None:
     rel = str(path.relative_to(REPO))
+    if path.stem == "scenario_given_to_thermal":
+        # A valid scenario, refused by `ohl thermal` (test_thermal covers the thermal functions).
+        assert ohl.load(rel).segments > 0
+        return
+    if path.stem == "heat_conduction_above_budget":
+        # Valid, but above the work budget: refused by `ohl run` and by `ohl.run`, not by loading.
+        with pytest.raises(ohl.WorkBudgetError, match="heat node updates"):
+            ohl.run(ohl.load(rel))
+        assert "heat node updates" in cli_error(ohl_cli, rel)
+        return
     with pytest.raises(ohl.ScenarioError) as e:
         ohl.load(rel)
     if b"[rod]" in path.read_bytes():
@@ -45,13 +55,14 @@ def test_every_bad_input_gives_the_command_lines_message(path: Path, ohl_cli: Pa
         return
     assert str(e.value) == cli_error(ohl_cli, rel)
     assert isinstance(e.value, ValueError)
-    assert e.value.file == rel
+    # An error inside a user conductor catalogue names the catalogue, and the case that reads it.
+    assert e.value.file == rel or e.value.file.endswith(f"(conductor_catalog of {rel})")
     if e.value.problems:
         first = e.value.problems[0]
         assert (e.value.field, e.value.value, e.value.allowed) == (first.field, first.value, first.allowed)
         assert len(e.value.problems) == len(str(e.value).splitlines())
         for p, line in zip(e.value.problems, str(e.value).splitlines()):
-            assert line == f"{rel}: field `{p.field}` = {p.value} is not allowed: {p.allowed}"
+            assert line == f"{e.value.file}: field `{p.field}` = {p.value} is not allowed: {p.allowed}"
     else:  # a syntax or type error: line and column in the message
         assert e.value.field is None and e.value.value is None and e.value.allowed is None
 
