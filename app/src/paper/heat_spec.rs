@@ -316,7 +316,10 @@ pub fn validate(h: &HeatCase) -> Vec<Problem> {
         // The work of the run: (N + 1) nodes over max_time / tau steps of tau = r h^2, h = 1 / N (it may stop
         // earlier, when equalised); the same budget as a wire run (`ohl::scenario::work`).
         let updates = (n + 1.0) * (h.stop.max_time * n * n / run.step_ratio).ceil();
-        if least_ratio <= 0.5 && run.step_ratio > 0.0 && !(updates <= BUDGET_NODE_STEPS) {
+        if least_ratio <= 0.5
+            && run.step_ratio > 0.0
+            && updates.partial_cmp(&BUDGET_NODE_STEPS).is_none_or(|o| o.is_gt())
+        {
             c.fail(
                 &format!("runs[{k}].step_ratio"),
                 number(run.step_ratio),
