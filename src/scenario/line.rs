@@ -355,11 +355,7 @@ pub fn parse(text: &str, file: &str) -> Result<LineScenario, InputError> {
             }
         }
     }
-    if resolved {
-        super::locate::from_table(doc, text, file)
-    } else {
-        super::from_toml(text, file)
-    }
+    if resolved { super::locate::from_table(doc, text, file) } else { super::from_toml(text, file) }
 }
 
 /// Whether a TOML text is a line scenario (it has a `[line]` table).

@@ -300,7 +300,9 @@ pub(crate) fn check(
                 // A tension at or above the rated tensile strength breaks the conductor (lines are strung
                 // at 10 to 25 % of it); the field named is the one the value was written in.
                 if let Some(r) = rts.filter(|&r| r > 0.0 && h >= r) {
-                    let field = if sp.horizontal_tension_n.is_some() { f("horizontal_tension_n") } else {
+                    let field = if sp.horizontal_tension_n.is_some() {
+                        f("horizontal_tension_n")
+                    } else {
                         "section.horizontal_tension_n".to_string()
                     };
                     if !c.0.iter().any(|p| p.field == field) {

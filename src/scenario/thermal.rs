@@ -271,7 +271,10 @@ pub fn unused_weather_inputs(at: &str, w: &WeatherSpec, standard: StandardSpec) 
              atmosphere",
         ),
         StandardSpec::Cigre601 => (
-            s.atmosphere.map(|a| ("atmosphere", format!("\"{}\"", format!("{a:?}").to_lowercase()))).into_iter().collect(),
+            s.atmosphere
+                .map(|a| ("atmosphere", format!("\"{}\"", format!("{a:?}").to_lowercase())))
+                .into_iter()
+                .collect(),
             "read by IEEE 738 only (standard = \"ieee738\"): ignored by CIGRE TB 601, which describes the sky by \
              clearness_ratio and albedo",
         ),
@@ -584,8 +587,9 @@ pub struct ThermalCase {
 /// Whether TOML text is a thermal case (a file for `ohl thermal`): a top-level `weather` table, or a
 /// `conductor` given as a name rather than a `[conductor]` table. Text that does not parse is not.
 pub fn is_thermal_case(text: &str) -> bool {
-    text.parse::<toml::Table>()
-        .is_ok_and(|t| t.get("weather").is_some_and(toml::Value::is_table) || t.get("conductor").is_some_and(toml::Value::is_str))
+    text.parse::<toml::Table>().is_ok_and(|t| {
+        t.get("weather").is_some_and(toml::Value::is_table) || t.get("conductor").is_some_and(toml::Value::is_str)
+    })
 }
 
 /// What a file that is not a thermal case is, and the command that reads it; `None` for a thermal case
@@ -644,7 +648,10 @@ pub fn parse_case(text: &str, file: &str) -> Result<ThermalCase, super::InputErr
             );
         }
     }
-    if case.current_a.is_empty() && case.max_temperature_k.is_empty() && case.transient.is_none() && case.deicing.is_none()
+    if case.current_a.is_empty()
+        && case.max_temperature_k.is_empty()
+        && case.transient.is_none()
+        && case.deicing.is_none()
     {
         c.fail(
             "current_a",

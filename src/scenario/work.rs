@@ -358,7 +358,10 @@ mod tests {
              hold_range = [0.4, 0.6]\nhold_temperature_k = 400.0\nheat_time_per_s = 1000.0\n\
              [[events]]\ntime_s = 1.5\naction = \"heat_conduction_off\"\n"
         )
-        .replace("linear_density_kg_per_m = 1.0\n", "linear_density_kg_per_m = 1.0\nthermal_expansion_per_k = 2.38e-5\n");
+        .replace(
+            "linear_density_kg_per_m = 1.0\n",
+            "linear_density_kg_per_m = 1.0\nthermal_expansion_per_k = 2.38e-5\n",
+        );
         let p = plan(&parse(&text, "test").unwrap(), "test").unwrap();
         let e = p.work_estimate();
         let dt = p.solver.params().dt_s;

@@ -49,8 +49,8 @@
 
 use serde::Deserialize;
 
-use ohl::scenario::validate::{Check, Problem};
 use ohl::scenario::validate::number;
+use ohl::scenario::validate::{Check, Problem};
 use ohl::scenario::work::{BUDGET_NODE_STEPS, BUDGET_WALL_S};
 use ohl::scenario::{InputError, from_toml};
 
