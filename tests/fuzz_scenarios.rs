@@ -3,20 +3,44 @@
 //! ([`ohl::scenario::work`]) runs (a few hundred steps here) to a record whose every value is finite, or
 //! ends with the typed `RunError::Unstable`; it never completes with a NaN.
 //!
-//! Inputs come from two generators:
+//! Inputs come from five generators, each a test of its own (they run in parallel):
 //!
-//! - structured scenarios: TOML built from random but type-correct values of every field, mostly in a
-//!   plausible range and otherwise extreme (0, negative, 1e-300, 1e300, `nan`, `inf`, `-inf`, any
-//!   `f64`), segment counts up to 5000, optional sections and random event lists of every action;
-//! - mutations of the seed corpus `app/tests/bad_inputs/*.toml` and `paper_cases/*.toml`: lines removed,
-//!   duplicated, swapped or inserted, values replaced by extreme ones, bytes changed.
+//! - structured scenarios (`scenarios_never_panic_and_never_complete_with_nan`): TOML built from random
+//!   but type-correct values of every field, mostly in a plausible range and otherwise extreme (0,
+//!   negative, 1e-300, 1e300, `nan`, `inf`, `-inf`, any `f64`), segment counts up to 5000, optional
+//!   sections and random event lists of every action; and mutations of the seed corpus
+//!   `app/tests/bad_inputs/*.toml` and `paper_cases/*.toml`: lines removed, duplicated, swapped or
+//!   inserted, values replaced by extreme ones, bytes changed. `OHL_FUZZ_CASES`, default [`DEFAULT_CASES`];
+//! - `[section]` scenarios (`sections_...`): 0 to 5 supports (dead-ends at the ends, mostly suspensions
+//!   between, sometimes with an elastic crossarm and a damper), strung by a tension, a fraction of RTS or
+//!   per span by tension, sag or unstretched length (`[[section.spans]]`, sometimes one too many), a
+//!   stringing temperature, and the section events (break and ice in a span, insulator failure, clamp slip,
+//!   release, temperature, an unknown action); the same property and short run as above. Three inputs in
+//!   four have every value plausible, the others extreme values among them.
+//!   `OHL_FUZZ_SECTION_CASES`, default [`DEFAULT_SECTION_CASES`];
+//! - thermal cases of `ohl thermal` (`thermal_cases_...`, [`ohl::scenario::thermal::parse_case`]): IEEE 738
+//!   or CIGRE TB 601 (or an unknown standard), a catalogue conductor (or an unknown one) or one given by its
+//!   properties, weather with or without a sun, steady currents, maximum temperatures, a transient and a
+//!   de-icing. An accepted case is evaluated as `ohl thermal` does (steady temperatures, ampacities, the
+//!   transient, the least de-icing current, de-icing runs, the current that sheds in time), each run
+//!   bounded to [`THERMAL_STEPS`] RK4 steps ([`BISECTION_STEPS`] per run of a bisection; longer parts
+//!   skipped): finite numbers or a typed error, within [`PER_CASE_S`] per input.
+//!   `OHL_FUZZ_THERMAL_CASES`, default [`DEFAULT_THERMAL_CASES`];
+//! - scenarios with `[thermal]` and `[rating]` (`ratings_...`): a single span or a generated section,
+//!   with or without `[ground]`, limited by clearance or sag, with a maximum temperature and a current step
+//!   or not; a plan of at most [`RATING_SEGMENTS`] segments is rated as `ohl rating` does
+//!   ([`ohl::scenario::rating::rate`]): finite numbers or a typed error, within [`PER_CASE_S`].
+//!   `OHL_FUZZ_RATING_CASES`, default [`DEFAULT_RATING_CASES`].
 //!
-//! The number of inputs is `OHL_FUZZ_CASES` (default [`DEFAULT_CASES`], about 45 s in release on a
-//! shared 2-core machine) and the seed `OHL_FUZZ_SEED` (default fixed, so CI runs the same inputs). A
-//! longer run:
+//! Budget: the defaults take about 60 s together in release on a shared 2-core machine (measured with the
+//! five tests in parallel: single spans 200 000 inputs, sections 10 000, thermal cases 10 000, ratings
+//! 3 000; the single-span default was 400 000 before the other generators came). The seed is
+//! `OHL_FUZZ_SEED` (default fixed, so CI runs the same inputs); `OHL_FUZZ_VERBOSE=1` prints why each input
+//! was refused (`=2`: with the input), to see what a generator reaches. A longer run:
 //!
 //! ```sh
-//! OHL_FUZZ_CASES=1000000 OHL_FUZZ_SEED=7 cargo test --release --test fuzz_scenarios -- --nocapture
+//! OHL_FUZZ_CASES=1000000 OHL_FUZZ_SECTION_CASES=100000 OHL_FUZZ_SEED=7 \
+//!     cargo test --release --test fuzz_scenarios -- --nocapture
 //! ```
 //!
 //! A finding fails the test with the input proptest shrank it to, unless it is on the allow-list
@@ -32,7 +56,7 @@ use ohl::scenario::{self, Plan};
 use proptest::prelude::*;
 use proptest::test_runner::{Config, RngAlgorithm, TestCaseError, TestError, TestRng, TestRunner};
 
-/// Inputs tried by default (about 60 s in release on a shared 2-core machine, the budget issue 10 set).
+/// Single-span and mutated inputs tried by default (module doc: the budget of all generators).
 const DEFAULT_CASES: u32 = 200_000;
 
 /// Structured `[section]` scenarios tried by default.
