@@ -3,7 +3,7 @@
 //! ([`ohl::scenario::work`]) runs (a few hundred steps here) to a record whose every value is finite, or
 //! ends with the typed `RunError::Unstable`; it never completes with a NaN.
 //!
-//! Inputs come from five generators, each a test of its own (they run in parallel):
+//! Inputs come from these generators, in four tests (they run in parallel):
 //!
 //! - structured scenarios (`scenarios_never_panic_and_never_complete_with_nan`): TOML built from random
 //!   but type-correct values of every field, mostly in a plausible range and otherwise extreme (0,
@@ -33,7 +33,7 @@
 //!   `OHL_FUZZ_RATING_CASES`, default [`DEFAULT_RATING_CASES`].
 //!
 //! Budget: the defaults take about 60 s together in release on a shared 2-core machine (measured with the
-//! five tests in parallel: single spans 200 000 inputs, sections 10 000, thermal cases 10 000, ratings
+//! four tests in parallel: single spans 200 000 inputs, sections 10 000, thermal cases 10 000, ratings
 //! 3 000; the single-span default was 400 000 before the other generators came). The seed is
 //! `OHL_FUZZ_SEED` (default fixed, so CI runs the same inputs); `OHL_FUZZ_VERBOSE=1` prints why each input
 //! was refused (`=2`: with the input), to see what a generator reaches. A longer run:
@@ -551,12 +551,18 @@ fn check(text: &str, counts: &Counts) -> Result<(), String> {
     let parsed = guarded("parse", || scenario::parse(text, "fuzz.toml"))?;
     let sc = match parsed {
         Ok(sc) => sc,
-        Err(e) => return Ok(invalid(counts, &e, text)),
+        Err(e) => {
+            invalid(counts, &e, text);
+            return Ok(());
+        }
     };
     let built = guarded("plan", || scenario::plan(&sc, "fuzz.toml"))?;
     let mut plan = match built {
         Ok(plan) => plan,
-        Err(e) => return Ok(invalid(counts, &e, text)),
+        Err(e) => {
+            invalid(counts, &e, text);
+            return Ok(());
+        }
     };
     let within = guarded("work estimate", || plan.check_budget())?;
     if within.is_err() {
@@ -1067,7 +1073,7 @@ impl GenThermal {
     /// A `[<at>conductor]` table of properties, when the head gave no name.
     fn conductor_table(&self, at: &str) -> String {
         let v = &self.v;
-        if self.choice[1] % 4 != 0 {
+        if !self.choice[1].is_multiple_of(4) {
             return String::new();
         }
         let mut t = format!(
@@ -1083,7 +1089,7 @@ impl GenThermal {
             lit(v[18]),
             lit(v[19])
         );
-        if self.choice[2] % 3 == 0 {
+        if self.choice[2].is_multiple_of(3) {
             t += &format!(
                 "core_diameter_m = {}\ncore_mass_kg_per_m = 0.5\ncore_specific_heat_j_per_kg_k = 481.0\n",
                 lit(v[27])
@@ -1127,7 +1133,7 @@ impl GenThermal {
             .enumerate()
             .map(|(k, &(dt, i))| {
                 // Mostly increasing times; the first point sometimes later than 0.
-                time = if k == 0 && self.choice[7] % 3 != 0 { 0.0 } else { time + dt };
+                time = if k == 0 && !self.choice[7].is_multiple_of(3) { 0.0 } else { time + dt };
                 format!("[{}, {}]", lit(time), lit(i))
             })
             .collect();
@@ -1323,7 +1329,10 @@ fn check_thermal_case(text: &str, counts: &ThermalCounts) -> Result<(), String> 
     let parsed = guarded("thermal::parse_case", || scenario::thermal::parse_case(text, "fuzz.toml"))?;
     let case = match parsed {
         Ok(case) => case,
-        Err(e) => return Ok(counts.refused(&e, text)),
+        Err(e) => {
+            counts.refused(&e, text);
+            return Ok(());
+        }
     };
     ThermalCounts::bump(&counts.evaluated);
     let evaluated = guarded("thermal evaluation", || -> Result<Result<(), String>, String> {
@@ -1418,11 +1427,17 @@ fn check_rating(text: &str, counts: &ThermalCounts) -> Result<(), String> {
     let started = std::time::Instant::now();
     let sc = match guarded("parse", || scenario::parse(text, "fuzz.toml"))? {
         Ok(sc) => sc,
-        Err(e) => return Ok(counts.refused(&e, text)),
+        Err(e) => {
+            counts.refused(&e, text);
+            return Ok(());
+        }
     };
     let plan = match guarded("plan", || scenario::plan(&sc, "fuzz.toml"))? {
         Ok(plan) => plan,
-        Err(e) => return Ok(counts.refused(&e, text)),
+        Err(e) => {
+            counts.refused(&e, text);
+            return Ok(());
+        }
     };
     if plan.solver.wire().segments() > RATING_SEGMENTS {
         ThermalCounts::bump(&counts.skipped);
