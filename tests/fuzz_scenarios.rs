@@ -3,7 +3,7 @@
 //! ([`ohl::scenario::work`]) runs (a few hundred steps here) to a record whose every value is finite, or
 //! ends with the typed `RunError::Unstable`; it never completes with a NaN.
 //!
-//! Inputs come from these generators, in four tests (they run in parallel):
+//! Inputs come from these generators, in five tests (they run in parallel):
 //!
 //! - structured scenarios (`scenarios_never_panic_and_never_complete_with_nan`): TOML built from random
 //!   but type-correct values of every field, mostly in a plausible range and otherwise extreme (0,
@@ -30,11 +30,14 @@
 //!   with or without `[ground]`, limited by clearance or sag, with a maximum temperature and a current step
 //!   or not; a plan of at most [`RATING_SEGMENTS`] segments is rated as `ohl rating` does
 //!   ([`ohl::scenario::rating::rate`]): finite numbers or a typed error, within [`PER_CASE_S`].
-//!   `OHL_FUZZ_RATING_CASES`, default [`DEFAULT_RATING_CASES`].
+//!   `OHL_FUZZ_RATING_CASES`, default [`DEFAULT_RATING_CASES`];
+//! - line scenarios (`line_scenarios_...`): mutations of the two `[line]` cases of `cases/`, parsed and
+//!   planned only (no structured generation and no run yet). `OHL_FUZZ_LINE_CASES`, default
+//!   [`DEFAULT_LINE_CASES`].
 //!
 //! Budget: the defaults take about 60 s together in release on a shared 2-core machine (measured with the
-//! four tests in parallel: single spans 200 000 inputs, sections 10 000, thermal cases 10 000, ratings
-//! 3 000; the single-span default was 400 000 before the other generators came). The seed is
+//! tests in parallel: single spans 200 000 inputs, sections 10 000, thermal cases 10 000, ratings 3 000,
+//! lines 2 000; the single-span default was 400 000 before the other generators came). The seed is
 //! `OHL_FUZZ_SEED` (default fixed, so CI runs the same inputs); `OHL_FUZZ_VERBOSE=1` prints why each input
 //! was refused (`=2`: with the input), to see what a generator reaches. A longer run:
 //!
@@ -67,6 +70,9 @@ const DEFAULT_THERMAL_CASES: u32 = 10_000;
 
 /// Structured scenarios with `[thermal]` and `[rating]` tried by default.
 const DEFAULT_RATING_CASES: u32 = 3_000;
+
+/// Mutated line scenarios tried by default (parse and plan only).
+const DEFAULT_LINE_CASES: u32 = 2_000;
 
 /// Steps a fuzzed plan runs at most.
 const RUN_STEPS: f64 = 200.0;
@@ -1494,4 +1500,42 @@ fn ratings_evaluate_to_finite_numbers_or_typed_errors() {
         |t| check_rating(t, &counts),
         || counts.report(),
     );
+}
+
+/// Line scenarios (`[line]`, a first step of item 2 of issue 22): mutations of `cases/e_*.toml` and
+/// `cases/g_*.toml` (three phases in wind; a quad bundle with spacers); `scenario::line::parse` and `plan`
+/// return a plan or a typed error, never a panic. Not yet run: no steps of `ohl::run::line` here.
+#[test]
+fn line_scenarios_parse_and_plan_or_refuse() {
+    let root = env!("CARGO_MANIFEST_DIR");
+    let seeds: Vec<String> = ["cases/e_three_phases_wind.toml", "cases/g_quad_bundle_break.toml"]
+        .iter()
+        .map(|p| std::fs::read_to_string(format!("{root}/{p}")).expect("line seed"))
+        .collect();
+    let n = seeds.len();
+    let inputs = (0..n, prop::collection::vec(mutation(), 1..6)).prop_map(move |(k, m)| mutate(&seeds[k], &m));
+    let counts = Counts::default();
+    let check_line = |text: &String| -> Result<(), String> {
+        counts.tried.set(counts.tried.get() + 1);
+        let sc = match guarded("line::parse", || scenario::line::parse(text, "fuzz.toml"))? {
+            Ok(sc) => sc,
+            Err(e) => {
+                invalid(&counts, &e, text);
+                return Ok(());
+            }
+        };
+        match guarded("line::plan", || scenario::line::plan(&sc, "fuzz.toml"))? {
+            Ok(_) => counts.completed.set(counts.completed.get() + 1),
+            Err(e) => invalid(&counts, &e, text),
+        }
+        Ok(())
+    };
+    fuzz("fuzz_lines", cases("OHL_FUZZ_LINE_CASES", DEFAULT_LINE_CASES), inputs, check_line, || {
+        format!(
+            "{} inputs tried: {} refused with a message, {} planned",
+            counts.tried.get(),
+            counts.invalid.get(),
+            counts.completed.get()
+        )
+    });
 }
