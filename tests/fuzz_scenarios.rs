@@ -3,20 +3,47 @@
 //! ([`ohl::scenario::work`]) runs (a few hundred steps here) to a record whose every value is finite, or
 //! ends with the typed `RunError::Unstable`; it never completes with a NaN.
 //!
-//! Inputs come from two generators:
+//! Inputs come from these generators, in five tests (they run in parallel):
 //!
-//! - structured scenarios: TOML built from random but type-correct values of every field, mostly in a
-//!   plausible range and otherwise extreme (0, negative, 1e-300, 1e300, `nan`, `inf`, `-inf`, any
-//!   `f64`), segment counts up to 5000, optional sections and random event lists of every action;
-//! - mutations of the seed corpus `app/tests/bad_inputs/*.toml` and `paper_cases/*.toml`: lines removed,
-//!   duplicated, swapped or inserted, values replaced by extreme ones, bytes changed.
+//! - structured scenarios (`scenarios_never_panic_and_never_complete_with_nan`): TOML built from random
+//!   but type-correct values of every field, mostly in a plausible range and otherwise extreme (0,
+//!   negative, 1e-300, 1e300, `nan`, `inf`, `-inf`, any `f64`), segment counts up to 5000, optional
+//!   sections and random event lists of every action; and mutations of the seed corpus
+//!   `app/tests/bad_inputs/*.toml` and `paper_cases/*.toml`: lines removed, duplicated, swapped or
+//!   inserted, values replaced by extreme ones, bytes changed. `OHL_FUZZ_CASES`, default [`DEFAULT_CASES`];
+//! - `[section]` scenarios (`sections_...`): 0 to 5 supports (dead-ends at the ends, mostly suspensions
+//!   between, sometimes with an elastic crossarm and a damper), strung by a tension, a fraction of RTS or
+//!   per span by tension, sag or unstretched length (`[[section.spans]]`, sometimes one too many), a
+//!   stringing temperature, and the section events (break and ice in a span, insulator failure, clamp slip,
+//!   release, temperature, an unknown action); the same property and short run as above. Three inputs in
+//!   four have every value plausible, the others extreme values among them.
+//!   `OHL_FUZZ_SECTION_CASES`, default [`DEFAULT_SECTION_CASES`];
+//! - thermal cases of `ohl thermal` (`thermal_cases_...`, [`ohl::scenario::thermal::parse_case`]): IEEE 738
+//!   or CIGRE TB 601 (or an unknown standard), a catalogue conductor (or an unknown one) or one given by its
+//!   properties, weather with or without a sun, steady currents, maximum temperatures, a transient and a
+//!   de-icing. An accepted case is evaluated as `ohl thermal` does (steady temperatures, ampacities, the
+//!   transient, the least de-icing current, de-icing runs, the current that sheds in time), each run
+//!   bounded to [`THERMAL_STEPS`] RK4 steps ([`BISECTION_STEPS`] per run of a bisection; longer parts
+//!   skipped): finite numbers or a typed error, within [`PER_CASE_S`] per input.
+//!   `OHL_FUZZ_THERMAL_CASES`, default [`DEFAULT_THERMAL_CASES`];
+//! - scenarios with `[thermal]` and `[rating]` (`ratings_...`): a single span or a generated section,
+//!   with or without `[ground]`, limited by clearance or sag, with a maximum temperature and a current step
+//!   or not; a plan of at most [`RATING_SEGMENTS`] segments is rated as `ohl rating` does
+//!   ([`ohl::scenario::rating::rate`]): finite numbers or a typed error, within [`PER_CASE_S`].
+//!   `OHL_FUZZ_RATING_CASES`, default [`DEFAULT_RATING_CASES`];
+//! - line scenarios (`line_scenarios_...`): mutations of the two `[line]` cases of `cases/`, parsed and
+//!   planned only (no structured generation and no run yet). `OHL_FUZZ_LINE_CASES`, default
+//!   [`DEFAULT_LINE_CASES`].
 //!
-//! The number of inputs is `OHL_FUZZ_CASES` (default [`DEFAULT_CASES`], about 45 s in release on a
-//! shared 2-core machine) and the seed `OHL_FUZZ_SEED` (default fixed, so CI runs the same inputs). A
-//! longer run:
+//! Budget: the defaults take about 60 s together in release on a shared 2-core machine (measured with the
+//! tests in parallel: single spans 200 000 inputs, sections 10 000, thermal cases 10 000, ratings 3 000,
+//! lines 2 000; the single-span default was 400 000 before the other generators came). The seed is
+//! `OHL_FUZZ_SEED` (default fixed, so CI runs the same inputs); `OHL_FUZZ_VERBOSE=1` prints why each input
+//! was refused (`=2`: with the input), to see what a generator reaches. A longer run:
 //!
 //! ```sh
-//! OHL_FUZZ_CASES=1000000 OHL_FUZZ_SEED=7 cargo test --release --test fuzz_scenarios -- --nocapture
+//! OHL_FUZZ_CASES=1000000 OHL_FUZZ_SECTION_CASES=100000 OHL_FUZZ_SEED=7 \
+//!     cargo test --release --test fuzz_scenarios -- --nocapture
 //! ```
 //!
 //! A finding fails the test with the input proptest shrank it to, unless it is on the allow-list
@@ -32,8 +59,20 @@ use ohl::scenario::{self, Plan};
 use proptest::prelude::*;
 use proptest::test_runner::{Config, RngAlgorithm, TestCaseError, TestError, TestRng, TestRunner};
 
-/// Inputs tried by default (about 60 s in release on a shared 2-core machine, the budget issue 10 set).
-const DEFAULT_CASES: u32 = 400_000;
+/// Single-span and mutated inputs tried by default (module doc: the budget of all generators).
+const DEFAULT_CASES: u32 = 200_000;
+
+/// Structured `[section]` scenarios tried by default.
+const DEFAULT_SECTION_CASES: u32 = 10_000;
+
+/// Structured thermal cases tried by default.
+const DEFAULT_THERMAL_CASES: u32 = 10_000;
+
+/// Structured scenarios with `[thermal]` and `[rating]` tried by default.
+const DEFAULT_RATING_CASES: u32 = 3_000;
+
+/// Mutated line scenarios tried by default (parse and plan only).
+const DEFAULT_LINE_CASES: u32 = 2_000;
 
 /// Steps a fuzzed plan runs at most.
 const RUN_STEPS: f64 = 200.0;
@@ -86,6 +125,11 @@ fn extreme() -> impl Strategy<Value = f64> {
 /// Mostly in `[lo, hi]`, sometimes extreme.
 fn field(lo: f64, hi: f64) -> BoxedStrategy<f64> {
     prop_oneof![40 => lo..=hi, 1 => extreme()].boxed()
+}
+
+/// [`field`] if `wild`, else always in `[lo, hi]`.
+fn field_if(wild: bool, lo: f64, hi: f64) -> BoxedStrategy<f64> {
+    if wild { field(lo, hi) } else { (lo..=hi).boxed() }
 }
 
 /// A TOML literal of `x` (`nan`, `inf`, `-inf` or the shortest round-trip form).
@@ -251,7 +295,7 @@ impl Gen {
         t += &format!(
             "[loads]\ngravity_m_per_s2 = {}\nuniform_load_n_per_m = [{}, {}, {}]\n",
             lit(v[14]),
-            lit(v[15]),
+            lit(v[14] * v[15]),
             lit(v[16]),
             lit(v[17])
         );
@@ -457,11 +501,15 @@ struct Counts {
 
 thread_local! {
     static PANIC: RefCell<Option<String>> = const { RefCell::new(None) };
+    static GUARDING: Cell<bool> = const { Cell::new(false) };
 }
 
 /// `f()`, or the panic's message and location.
 fn guarded<T>(stage: &str, f: impl FnOnce() -> T) -> Result<T, String> {
-    catch_unwind(AssertUnwindSafe(f)).map_err(|_| {
+    GUARDING.with(|g| g.set(true));
+    let result = catch_unwind(AssertUnwindSafe(f));
+    GUARDING.with(|g| g.set(false));
+    result.map_err(|_| {
         let what = PANIC.with(|p| p.borrow_mut().take()).unwrap_or_else(|| "(no message)".into());
         format!("panic in {stage}: {what}")
     })
@@ -487,18 +535,40 @@ fn finite_record(o: &ohl::run::Outcome) -> Result<(), String> {
     Ok(())
 }
 
+/// Count a refused input and say why ([`verbose`]).
+fn invalid(counts: &Counts, e: &dyn std::fmt::Display, text: &str) {
+    counts.invalid.set(counts.invalid.get() + 1);
+    verbose("refused", e, text);
+}
+
+/// With `OHL_FUZZ_VERBOSE` set, print what became of an input (to see what the generators hit); with
+/// `OHL_FUZZ_VERBOSE=2`, the input too.
+fn verbose(what: &str, e: &dyn std::fmt::Display, text: &str) {
+    match std::env::var("OHL_FUZZ_VERBOSE").as_deref() {
+        Ok("2") => println!("{what}: {e}\ninput:\n{text}"),
+        Ok(_) => println!("{what}: {e}"),
+        Err(_) => {}
+    }
+}
+
 /// What became of one input: Ok (and counted), or a finding.
 fn check(text: &str, counts: &Counts) -> Result<(), String> {
     counts.tried.set(counts.tried.get() + 1);
     let parsed = guarded("parse", || scenario::parse(text, "fuzz.toml"))?;
-    let Ok(sc) = parsed else {
-        counts.invalid.set(counts.invalid.get() + 1);
-        return Ok(());
+    let sc = match parsed {
+        Ok(sc) => sc,
+        Err(e) => {
+            invalid(counts, &e, text);
+            return Ok(());
+        }
     };
     let built = guarded("plan", || scenario::plan(&sc, "fuzz.toml"))?;
-    let Ok(mut plan) = built else {
-        counts.invalid.set(counts.invalid.get() + 1);
-        return Ok(());
+    let mut plan = match built {
+        Ok(plan) => plan,
+        Err(e) => {
+            invalid(counts, &e, text);
+            return Ok(());
+        }
     };
     let within = guarded("work estimate", || plan.check_budget())?;
     if within.is_err() {
@@ -558,33 +628,60 @@ fn env_u64(name: &str) -> Option<u64> {
     Some(v.trim().parse().unwrap_or_else(|_| panic!("{name} = {v:?}: expected a non-negative integer")))
 }
 
-#[test]
-fn scenarios_never_panic_and_never_complete_with_nan() {
-    let cases = env_u64("OHL_FUZZ_CASES").map_or(DEFAULT_CASES, |c| c.min(u32::MAX as u64) as u32);
+/// Install (once) the panic hook that keeps the message of a panic inside [`guarded`] (per thread: each
+/// fuzz test runs on its own) and leaves any other panic to the previous hook.
+fn install_panic_hook() {
+    static ONCE: std::sync::Once = std::sync::Once::new();
+    ONCE.call_once(|| {
+        let previous = std::panic::take_hook();
+        std::panic::set_hook(Box::new(move |info| {
+            if GUARDING.with(Cell::get) {
+                PANIC.with(|p| *p.borrow_mut() = Some(info.to_string()));
+            } else {
+                previous(info);
+            }
+        }));
+    });
+}
+
+/// Run `check` on `cases` inputs of `inputs` (seeded by `OHL_FUZZ_SEED`), print what became of them
+/// (`report`), and fail on the first finding with its shrunk input.
+fn fuzz<S: Strategy>(
+    name: &str,
+    cases: u32,
+    inputs: S,
+    check: impl Fn(&S::Value) -> Result<(), String>,
+    report: impl FnOnce() -> String,
+) where
+    S::Value: std::fmt::Display,
+{
     let seed = env_u64("OHL_FUZZ_SEED").unwrap_or(0x0b1);
-    let corpus = corpus();
-    let seeds = corpus.len();
-    let inputs = prop_oneof![
-        structured().prop_map(|g| g.toml()),
-        (0..seeds, prop::collection::vec(mutation(), 1..6)).prop_map(move |(k, m)| mutate(&corpus[k], &m)),
-    ];
     let mut bytes = [0u8; 32];
     bytes[..8].copy_from_slice(&seed.to_le_bytes());
     let config = Config { cases, failure_persistence: None, max_shrink_iters: 4096, ..Config::default() };
     let mut runner = TestRunner::new_with_rng(config, TestRng::from_seed(RngAlgorithm::ChaCha, &bytes));
-
-    let previous = std::panic::take_hook();
-    std::panic::set_hook(Box::new(|info| PANIC.with(|p| *p.borrow_mut() = Some(info.to_string()))));
-    let counts = Counts::default();
+    install_panic_hook();
     let started = std::time::Instant::now();
-    let result = runner.run(&inputs, |text| check(&text, &counts).map_err(TestCaseError::fail));
-    std::panic::set_hook(previous);
-
+    let result = runner.run(&inputs, |x| check(&x).map_err(TestCaseError::fail));
     let wall = started.elapsed().as_secs_f64();
-    println!(
-        "fuzz_scenarios: {cases} cases (seed {seed}), {} inputs tried in {wall:.1} s: {} invalid (refused with a \
-         message), {} above the work budget (refused), {} skipped (too long for the fuzz run), {} ran: {} completed \
-         with finite values, {} ended unstable (typed error, finite values up to it)",
+    println!("{name}: {cases} cases (seed {seed}) in {wall:.1} s: {}", report());
+    match result {
+        Ok(()) => {}
+        Err(TestError::Fail(why, x)) => panic!("finding: {why}\nminimal input:\n{x}"),
+        Err(TestError::Abort(why)) => panic!("fuzzer aborted: {why}"),
+    }
+}
+
+/// Cases of one generator: `var` if set, else `default`.
+fn cases(var: &str, default: u32) -> u32 {
+    env_u64(var).map_or(default, |c| c.min(u32::MAX as u64) as u32)
+}
+
+fn report_runs(counts: &Counts) -> String {
+    let mut r = format!(
+        "{} inputs tried: {} invalid (refused with a message), {} above the work budget (refused), {} skipped \
+         (too long for the fuzz run), {} ran: {} completed with finite values, {} ended unstable (typed error, \
+         finite values up to it)",
         counts.tried.get(),
         counts.invalid.get(),
         counts.refused.get(),
@@ -595,17 +692,44 @@ fn scenarios_never_panic_and_never_complete_with_nan() {
     );
     let known = counts.known.borrow();
     if !known.is_empty() {
-        println!("known findings (allow-list KNOWN), {} inputs:", known.len());
+        r += &format!("\nknown findings (allow-list KNOWN), {} inputs:", known.len());
         for k in KNOWN {
             let met = known.iter().filter(|f| f.starts_with(k.name)).count();
-            println!("- {} ({met} inputs): {}\n  minimal input:\n{}", k.name, k.why, k.input);
+            r += &format!("\n- {} ({met} inputs): {}\n  minimal input:\n{}", k.name, k.why, k.input);
         }
     }
-    match result {
-        Ok(()) => {}
-        Err(TestError::Fail(why, text)) => panic!("finding: {why}\nminimal input:\n{text}"),
-        Err(TestError::Abort(why)) => panic!("fuzzer aborted: {why}"),
-    }
+    r
+}
+
+#[test]
+fn scenarios_never_panic_and_never_complete_with_nan() {
+    let corpus = corpus();
+    let seeds = corpus.len();
+    let inputs = prop_oneof![
+        structured().prop_map(|g| g.toml()),
+        (0..seeds, prop::collection::vec(mutation(), 1..6)).prop_map(move |(k, m)| mutate(&corpus[k], &m)),
+    ];
+    let counts = Counts::default();
+    fuzz(
+        "fuzz_scenarios",
+        cases("OHL_FUZZ_CASES", DEFAULT_CASES),
+        inputs,
+        |t| check(t, &counts),
+        || report_runs(&counts),
+    );
+}
+
+#[test]
+fn sections_never_panic_and_never_complete_with_nan() {
+    let counts = Counts::default();
+    let inputs = gen_section().prop_map(|g| g.toml());
+    fuzz(
+        "fuzz_sections",
+        cases("OHL_FUZZ_SECTION_CASES", DEFAULT_SECTION_CASES),
+        inputs,
+        |t| check(t, &counts),
+        || report_runs(&counts),
+    );
 }
 
 /// A finding of the fuzzer, fixed: the node pass flagged a node above the speed bound, then ground
@@ -626,4 +750,792 @@ fn ground_contact_after_a_flagged_step_is_a_typed_instability() {
         Err(ohl::run::RunError::Unstable { instability, .. }) => println!("typed: {instability}"),
         Err(e) => panic!("unexpected error {e}"),
     }
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Structured sections (`[section]`, issue 22)
+
+/// One support of a generated section: its kind, its values and which optional parts it has, and the
+/// span that follows it (unused after the last support).
+#[derive(Clone, Debug)]
+struct GenSupport {
+    kind: u8,
+    v: Vec<f64>,
+    crossarm: bool,
+    damping: bool,
+    span: u8,
+    segments: i64,
+}
+
+fn gen_support(wild: bool) -> impl Strategy<Value = GenSupport> {
+    let field = |lo, hi| field_if(wild, lo, hi);
+    let v: Vec<BoxedStrategy<f64>> = vec![
+        field(-2.0, 2.0),    // 0 x1
+        field(100.0, 400.0), // 1 distance along x2 from the previous support
+        field(-10.0, 10.0),  // 2 x3
+        field(0.5, 6.0),     // 3 insulator_length_m
+        field(0.0, 200.0),   // 4 insulator_mass_kg
+        field(1e6, 1e9),     // 5 insulator_stiffness_n
+        field(0.0, 1e4),     // 6 insulator_damping_n_s
+        field(1e4, 1e8),     // 7 crossarm longitudinal
+        field(1e4, 1e8),     // 8 crossarm transverse
+        field(10.0, 1e4),    // 9 crossarm mass
+        field(0.0, 1e5),     // 10 crossarm damping
+        field(5e3, 5e4),     // 11 span horizontal_tension_n
+        field(1.0, 20.0),    // 12 span sag_m
+        field(0.995, 1.05),  // 13 span unstretched length / distance
+        field(0.5, 3.0),     // 14 span linear density
+        field(1e6, 1e8),     // 15 span axial stiffness
+    ];
+    let segments = prop_oneof![20 => 2i64..16, 1 => -1i64..2, 1 => 16i64..400];
+    (0u8..20, v, any::<bool>(), any::<bool>(), 0u8..12, segments).prop_map(
+        |(kind, v, crossarm, damping, span, segments)| GenSupport { kind, v, crossarm, damping, span, segments },
+    )
+}
+
+/// One section event: action (break, ice, insulator failure, clamp slip, release, temperature, an
+/// unknown one), time, the span or support it addresses and two values.
+#[derive(Clone, Debug)]
+struct GenSectionEvent {
+    action: u8,
+    time_s: f64,
+    target: i64,
+    v: Vec<f64>,
+}
+
+fn gen_section_event(wild: bool) -> impl Strategy<Value = GenSectionEvent> {
+    let field = |lo, hi| field_if(wild, lo, hi);
+    let target = prop_oneof![10 => 0i64..6, 1 => -1i64..40];
+    (0u8..13, field(0.0, 1.0), target, vec![field(0.0, 1.0), field(-2.0, 2.0), field(250.0, 400.0)])
+        .prop_map(|(action, time_s, target, v)| GenSectionEvent { action, time_s, target, v })
+}
+
+/// A structured `[section]` scenario.
+#[derive(Clone, Debug)]
+struct GenSection {
+    supports: Vec<GenSupport>,
+    v: Vec<f64>,
+    choice: Vec<u8>,
+    segments_per_span: i64,
+    events: Vec<GenSectionEvent>,
+}
+
+/// A section, mostly with every value plausible (3 in 4), otherwise with extreme values among them.
+fn gen_section() -> impl Strategy<Value = GenSection> {
+    prop_oneof![3 => gen_section_with(false), 1 => gen_section_with(true)]
+}
+
+fn gen_section_with(wild: bool) -> impl Strategy<Value = GenSection> {
+    let field = |lo, hi| field_if(wild, lo, hi);
+    let v: Vec<BoxedStrategy<f64>> = vec![
+        field(1e6, 1e8),     // 0 axial_stiffness_n
+        field(0.5, 3.0),     // 1 linear density
+        field(1e4, 2e5),     // 2 rated_tensile_strength_n
+        field(0.0, 3e-5),    // 3 thermal expansion
+        field(250.0, 320.0), // 4 reference temperature
+        field(5e3, 5e4),     // 5 section horizontal_tension_n
+        field(0.05, 0.3),    // 6 tension_fraction_of_rts
+        field(240.0, 350.0), // 7 stringing_temperature_k
+        field(0.01, 0.1),    // 8 end time
+        field(0.1, 1.0),     // 9 courant
+        field(0.0, 0.3),     // 10 mu
+        field(0.0, 20.0),    // 11 gravity
+        field(1.0, 20.0),    // 12 initial sag
+    ];
+    let supports = prop_oneof![20 => prop::collection::vec(gen_support(wild), 2..6), 1 => prop::collection::vec(gen_support(wild), 0..2)];
+    let segs = prop_oneof![20 => 2i64..20, 1 => -1i64..2, 1 => Just(1_000_001i64), 1 => 20i64..2000];
+    (supports, v, prop::collection::vec(0u8..20, 8), segs, prop::collection::vec(gen_section_event(wild), 0..4))
+        .prop_map(|(supports, v, choice, segments_per_span, events)| GenSection {
+            supports,
+            v,
+            choice,
+            segments_per_span,
+            events,
+        })
+}
+
+impl GenSection {
+    /// The `[conductor]` and `[section]` tables (and `[initial]`), without a duration.
+    fn body(&self) -> String {
+        let (v, c) = (&self.v, &self.choice);
+        let mut t =
+            format!("[conductor]\naxial_stiffness_n = {}\nlinear_density_kg_per_m = {}\n", lit(v[0]), lit(v[1]));
+        if c[0] % 4 != 0 || matches!(c[2], 12..=15) {
+            t += &format!("rated_tensile_strength_n = {}\n", lit(v[2]));
+        }
+        if c[1] % 2 == 1 {
+            t += &format!("thermal_expansion_per_k = {}\nreference_temperature_k = {}\n", lit(v[3]), lit(v[4]));
+        }
+        t += "[section]\n";
+        match c[2] {
+            0..=11 => t += &format!("horizontal_tension_n = {}\n", lit(v[5])),
+            12..=15 => t += &format!("tension_fraction_of_rts = {}\n", lit(v[6])),
+            16 => t += &format!("horizontal_tension_n = {}\ntension_fraction_of_rts = {}\n", lit(v[5]), lit(v[6])),
+            _ => {}
+        }
+        if c[3] % 4 == 1 {
+            t += &format!("stringing_temperature_k = {}\n", lit(v[7]));
+        }
+        if c[4] != 0 {
+            t += &format!("segments_per_span = {}\n", self.segments_per_span);
+        }
+        // Supports: the ends mostly dead-ends, the others mostly suspensions.
+        let n = self.supports.len();
+        let mut x2 = 0.0;
+        let mut rows = Vec::new();
+        for (k, s) in self.supports.iter().enumerate() {
+            if k > 0 {
+                x2 += s.v[1];
+            }
+            let end = k == 0 || k + 1 == n;
+            let suspension = if end { s.kind == 19 } else { s.kind < 16 };
+            let p = format!("[{}, {}, {}]", lit(s.v[0]), lit(x2), lit(s.v[2]));
+            if suspension {
+                let mut row = format!(
+                    "{{ kind = \"suspension\", pivot_m = {p}, insulator_length_m = {}, insulator_mass_kg = {}, \
+                     insulator_stiffness_n = {}",
+                    lit(s.v[3]),
+                    lit(s.v[4]),
+                    lit(s.v[5])
+                );
+                if s.damping {
+                    row += &format!(", insulator_damping_n_s = {}", lit(s.v[6]));
+                }
+                if s.crossarm {
+                    row += &format!(
+                        ", crossarm = {{ longitudinal_n_per_m = {}, transverse_n_per_m = {}, mass_kg = {}, \
+                         damping_n_s_per_m = {} }}",
+                        lit(s.v[7]),
+                        lit(s.v[8]),
+                        lit(s.v[9]),
+                        lit(s.v[10])
+                    );
+                }
+                rows.push(row + " }");
+            } else {
+                rows.push(format!("{{ kind = \"dead_end\", point_m = {p} }}"));
+            }
+        }
+        t += &format!("supports = [\n  {},\n]\n", rows.join(",\n  "));
+        // Spans: none (section defaults), or one table per span (sometimes one too many).
+        if c[5] % 3 != 0 && n > 1 {
+            let count = if c[5] == 19 { n } else { n - 1 };
+            for k in 0..count {
+                let s = &self.supports[(k + 1) % n];
+                t += "[[section.spans]]\n";
+                match s.span {
+                    0 | 1 => {}
+                    2 => t += &format!("horizontal_tension_n = {}\n", lit(s.v[11])),
+                    3 => t += &format!("sag_m = {}\n", lit(s.v[12])),
+                    4 => t += &format!("unstretched_length_m = {}\n", lit(s.v[13] * s.v[1])),
+                    5 => {
+                        t += &format!(
+                            "horizontal_tension_n = {}\nlinear_density_kg_per_m = {}\naxial_stiffness_n = {}\n",
+                            lit(s.v[11]),
+                            lit(s.v[14]),
+                            lit(s.v[15])
+                        )
+                    }
+                    6 if s.damping && s.crossarm => {
+                        t += &format!("sag_m = {}\nunstretched_length_m = {}\n", lit(s.v[12]), lit(s.v[13] * s.v[1]))
+                    }
+                    6 => t += &format!("sag_m = {}\nsegments = {}\n", lit(s.v[12]), s.segments),
+                    _ => t += &format!("segments = {}\nhorizontal_tension_n = {}\n", s.segments, lit(s.v[11])),
+                }
+            }
+        }
+        match c[6] {
+            0..=5 => t += "[initial]\nshape = \"equilibrium\"\n",
+            6 => t += &format!("[initial]\nshape = \"parabola\"\nsag_m = {}\n", lit(v[12])),
+            7..=9 => t += "[initial]\nshape = \"straight\"\n",
+            _ => {}
+        }
+        t
+    }
+
+    /// A whole section scenario: the body, loads, numerics, a short duration and the events.
+    fn toml(&self) -> String {
+        let (v, c, n) = (&self.v, &self.choice, self.supports.len());
+        let mut t = String::from("name = \"fuzz section\"\n") + &self.body();
+        t += &format!("[loads]\ngravity_m_per_s2 = {}\n", lit(v[11]));
+        if c[7] % 2 == 1 {
+            t += &format!("[numerics]\ncourant = {}\nmu = {}\n", lit(v[9]), lit(v[10]));
+        }
+        t += &format!("[duration]\nend_time_s = {}\n", lit(v[8]));
+        for e in &self.events {
+            // A target in 0..6 addresses a support of the right kind for the action (if any), else as is.
+            let kind = |suspension: bool| -> Vec<usize> {
+                (0..n).filter(|&k| (k > 0 && k + 1 < n && self.supports[k].kind < 16) == suspension).collect()
+            };
+            let pick = |of: Vec<usize>| match (of.len(), e.target) {
+                (len, 0..6) if len > 0 => of[e.target as usize % len] as i64,
+                _ => e.target,
+            };
+            let span = format!("span = {}\n", pick((0..n.saturating_sub(1)).collect()));
+            let support = format!("support = {}\n", e.target);
+            let hung = format!("support = {}\n", pick(kind(true)));
+            let dead_end = format!("support = {}\n", pick(kind(false)));
+            let body = match e.action % 7 {
+                6 if e.action == 6 => format!("action = \"collapse\"\n{support}"),
+                6 => format!("action = \"break\"\nat_fraction = {}\n", lit(e.v[0])),
+                0 => format!("action = \"break\"\n{span}at_fraction = {}\n", lit(e.v[0])),
+                1 => format!("action = \"ice\"\n{span}linear_density_kg_per_m = {}\n", lit(e.v[1])),
+                2 => format!("action = \"insulator_failure\"\n{hung}"),
+                3 => format!("action = \"clamp_slip\"\n{hung}"),
+                4 => format!("action = \"release\"\n{dead_end}"),
+                _ => format!("action = \"temperature\"\ntemperature_k = {}\n", lit(e.v[2])),
+            };
+            // The time as a fraction of the end time (sometimes beyond it).
+            t += &format!("[[events]]\ntime_s = {}\n{body}", lit(e.time_s * v[8]));
+        }
+        t
+    }
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Structured thermal cases (`ohl thermal`) and scenarios with `[thermal]` and `[rating]` (issue 22)
+
+const CONDUCTOR_NAMES: &[&str] = &["ACSR Drake", "drake", "ACSR Linnet", "ACSR Zebra", "AAAC 366-AL3", "no such wire"];
+
+/// A generated heat balance: conductor, weather, sun, currents and temperatures, transient and de-icing.
+#[derive(Clone, Debug)]
+struct GenThermal {
+    v: Vec<f64>,
+    choice: Vec<u8>,
+    currents: Vec<f64>,
+    temperatures: Vec<f64>,
+    schedule: Vec<(f64, f64)>,
+}
+
+fn gen_thermal() -> impl Strategy<Value = GenThermal> {
+    let v: Vec<BoxedStrategy<f64>> = vec![
+        field(230.0, 330.0),  // 0 air temperature
+        field(0.0, 10.0),     // 1 wind speed
+        field(0.0, 180.0),    // 2 wind angle
+        field(0.0, 3000.0),   // 3 elevation
+        field(-60.0, 60.0),   // 4 latitude
+        field(1.0, 366.0),    // 5 day of year
+        field(0.0, 24.0),     // 6 solar hour
+        field(0.0, 360.0),    // 7 line azimuth
+        field(0.0, 1.5),      // 8 clearness ratio
+        field(0.0, 1.0),      // 9 albedo
+        field(0.0, 1200.0),   // 10 measured global radiation
+        field(0.0, 30.0),     // 11 inclination
+        field(0.01, 0.04),    // 12 diameter
+        field(0.002, 0.005),  // 13 outer strand diameter
+        field(5e-5, 1e-4),    // 14 resistance low
+        field(1.1, 1.3),      // 15 resistance high / low
+        field(0.2, 0.9),      // 16 emissivity
+        field(0.2, 0.9),      // 17 absorptivity
+        field(0.5, 2.0),      // 18 outer mass
+        field(800.0, 1000.0), // 19 outer specific heat
+        field(1.0, 1e5),      // 20 transient end time
+        field(0.5, 600.0),    // 21 step
+        field(280.0, 450.0),  // 22 limit / initial temperature
+        field(1e-3, 0.03),    // 23 ice thickness
+        field(300.0, 950.0),  // 24 ice density
+        field(100.0, 3000.0), // 25 de-icing current
+        field(600.0, 2e4),    // 26 shed within
+        field(0.0, 0.1),      // 27 core diameter
+    ];
+    (
+        v,
+        prop::collection::vec(0u8..8, 10),
+        prop::collection::vec(field(0.0, 2000.0), 0..3),
+        prop::collection::vec(field(300.0, 450.0), 0..3),
+        prop::collection::vec((field(0.0, 3600.0), field(0.0, 2000.0)), 1..4),
+    )
+        .prop_map(|(v, choice, currents, temperatures, schedule)| GenThermal {
+            v,
+            choice,
+            currents,
+            temperatures,
+            schedule,
+        })
+}
+
+fn list(xs: &[f64]) -> String {
+    format!("[{}]", xs.iter().map(|&x| lit(x)).collect::<Vec<_>>().join(", "))
+}
+
+impl GenThermal {
+    fn standard(&self) -> &'static str {
+        ["ieee738", "cigre601", "ieee738", "cigre601", "bogus"][self.choice[0] as usize % 5]
+    }
+
+    /// `standard = ...`, `conductor = "name"` or nothing (then [`Self::conductor_table`]), inclination.
+    fn head(&self) -> String {
+        let (v, c) = (&self.v, &self.choice);
+        let mut t = if c[0] % 4 == 0 { String::new() } else { format!("standard = \"{}\"\n", self.standard()) };
+        if c[1] % 4 != 0 {
+            t += &format!("conductor = \"{}\"\n", CONDUCTOR_NAMES[c[2] as usize % CONDUCTOR_NAMES.len()]);
+        }
+        if c[3] % 3 == 0 && (self.standard() == "cigre601" || c[3] == 0) {
+            t += &format!("inclination_deg = {}\n", lit(v[11]));
+        }
+        t
+    }
+
+    /// A `[<at>conductor]` table of properties, when the head gave no name.
+    fn conductor_table(&self, at: &str) -> String {
+        let v = &self.v;
+        if !self.choice[1].is_multiple_of(4) {
+            return String::new();
+        }
+        let mut t = format!(
+            "[{at}conductor]\ndiameter_m = {}\nouter_strand_diameter_m = {}\nresistance_low_ohm_per_m = {}\n\
+             temperature_low_k = 293.15\nresistance_high_ohm_per_m = {}\ntemperature_high_k = 348.15\n\
+             emissivity = {}\nabsorptivity = {}\nouter_mass_kg_per_m = {}\nouter_specific_heat_j_per_kg_k = {}\n",
+            lit(v[12]),
+            lit(v[13]),
+            lit(v[14]),
+            lit(v[14] * v[15]),
+            lit(v[16]),
+            lit(v[17]),
+            lit(v[18]),
+            lit(v[19])
+        );
+        if self.choice[2].is_multiple_of(3) {
+            t += &format!(
+                "core_diameter_m = {}\ncore_mass_kg_per_m = 0.5\ncore_specific_heat_j_per_kg_k = 481.0\n",
+                lit(v[27])
+            );
+        }
+        t
+    }
+
+    /// A `[<at>weather]` table, with a sun sometimes.
+    fn weather(&self, at: &str) -> String {
+        let (v, c) = (&self.v, &self.choice);
+        let mut t = format!("[{at}weather]\nair_temperature_k = {}\nwind_speed_m_per_s = {}\n", lit(v[0]), lit(v[1]));
+        if c[4] % 2 == 0 {
+            t += &format!("wind_angle_deg = {}\nelevation_m = {}\n", lit(v[2]), lit(v[3]));
+        }
+        if c[5] % 3 != 0 {
+            t += &format!(
+                "[{at}weather.sun]\nlatitude_deg = {}\nday_of_year = {}\nsolar_hour = {}\nline_azimuth_deg = {}\n",
+                lit(v[4]),
+                lit(v[5]),
+                lit(v[6]),
+                lit(v[7])
+            );
+            match c[6] % 5 {
+                1 => t += "atmosphere = \"industrial\"\n",
+                2 => t += &format!("clearness_ratio = {}\nalbedo = {}\n", lit(v[8]), lit(v[9])),
+                3 if self.standard() == "cigre601" || c[6] == 3 => {
+                    t += &format!("measured_global_w_per_m2 = {}\n", lit(v[10]))
+                }
+                _ => {}
+            }
+        }
+        t
+    }
+
+    fn schedule(&self) -> String {
+        let mut time = 0.0;
+        let points: Vec<String> = self
+            .schedule
+            .iter()
+            .enumerate()
+            .map(|(k, &(dt, i))| {
+                // Mostly increasing times; the first point sometimes later than 0.
+                time = if k == 0 && !self.choice[7].is_multiple_of(3) { 0.0 } else { time + dt };
+                format!("[{}, {}]", lit(time), lit(i))
+            })
+            .collect();
+        format!("[{}]", points.join(", "))
+    }
+
+    /// A thermal case for `ohl thermal` ([`ohl::scenario::thermal::parse_case`]).
+    fn case_toml(&self) -> String {
+        let (v, c) = (&self.v, &self.choice);
+        let mut t = String::from("name = \"fuzz thermal\"\n") + &self.head();
+        if !self.currents.is_empty() || c[8] % 4 == 0 {
+            t += &format!("current_a = {}\n", list(&self.currents));
+        }
+        if !self.temperatures.is_empty() {
+            t += &format!("max_temperature_k = {}\n", list(&self.temperatures));
+        }
+        t += &self.conductor_table("");
+        t += &self.weather("");
+        if c[8] % 2 == 1 {
+            t += &format!(
+                "[transient]\ncurrent_a = {}\nend_time_s = {}\nstep_s = {}\n",
+                self.schedule(),
+                lit(v[20]),
+                lit(v[21])
+            );
+            match c[9] % 4 {
+                1 => t += &format!("limit_k = {}\n", lit(v[22])),
+                2 => t += &format!("initial_temperature_k = {}\n", lit(v[22])),
+                _ => {}
+            }
+        }
+        if c[9] % 3 == 0 {
+            t += &format!(
+                "[deicing]\nthickness_m = {}\ndensity_kg_per_m3 = {}\ncurrent_a = {}\nshed_within_s = {}\nstep_s = {}\n",
+                lit(v[23]),
+                lit(v[24]),
+                list(&[v[25]][..(c[4] % 2) as usize]),
+                list(&[v[26]][..(c[6] % 2) as usize]),
+                lit(v[21])
+            );
+            if c[7] % 2 == 0 {
+                t += "criterion = \"full_melt\"\n";
+            }
+        }
+        t
+    }
+
+    /// `[thermal]` and `[rating]` tables appended to a scenario (of a single span or a section).
+    fn scenario_tables(&self, ground: bool, limits: [f64; 2]) -> String {
+        let (v, c) = (&self.v, &self.choice);
+        let mut t = String::from("[thermal]\n") + &self.head() + &format!("current_a = {}\n", self.schedule());
+        if c[9] % 4 == 2 {
+            t += &format!("initial_temperature_k = {}\n", lit(v[22]));
+        }
+        t += &self.conductor_table("thermal.");
+        t += &self.weather("thermal.");
+        t += "[rating]\n";
+        match c[8] % 4 {
+            0 | 1 if ground || c[8] == 1 => t += &format!("min_clearance_m = {}\n", lit(limits[0])),
+            2 => t += &format!("max_sag_m = {}\nspan = {}\n", lit(limits[1]), c[3] % 4),
+            _ => t += &format!("max_sag_m = {}\n", lit(limits[1])),
+        }
+        if c[5] % 2 == 0 {
+            t += &format!("max_temperature_k = {}\n", lit(v[22]));
+        }
+        if c[6] % 2 == 0 {
+            t += &format!("step_to_a = {}\n", lit(v[25]));
+        }
+        t
+    }
+}
+
+/// A scenario of a single span or a section with `[thermal]` and `[rating]`.
+#[derive(Clone, Debug)]
+struct GenRating {
+    thermal: GenThermal,
+    section: Option<GenSection>,
+    v: Vec<f64>,
+    segments: i64,
+    ground: bool,
+}
+
+fn gen_rating() -> impl Strategy<Value = GenRating> {
+    let v: Vec<BoxedStrategy<f64>> = vec![
+        field(1e6, 1e8),     // 0 axial stiffness
+        field(0.5, 3.0),     // 1 linear density
+        field(1e-5, 3e-5),   // 2 thermal expansion
+        field(100.0, 500.0), // 3 span
+        field(-10.0, 10.0),  // 4 right support height above the left
+        field(1.0, 1.02),    // 5 unstretched length / span
+        field(-5.0, 25.0),   // 6 ground height (supports at 30 m)
+        field(1.0, 25.0),    // 7 min_clearance_m
+        field(2.0, 40.0),    // 8 max_sag_m
+    ];
+    let segments = prop_oneof![20 => 2i64..40, 1 => -1i64..2, 1 => 40i64..3000];
+    (gen_thermal(), prop::option::weighted(0.3, gen_section()), v, segments, any::<bool>())
+        .prop_map(|(thermal, section, v, segments, ground)| GenRating { thermal, section, v, segments, ground })
+}
+
+impl GenRating {
+    fn toml(&self) -> String {
+        let v = &self.v;
+        let mut t = String::from("name = \"fuzz rating\"\n");
+        match &self.section {
+            Some(s) => t += &s.body(),
+            None => {
+                t += &format!(
+                    "[conductor]\naxial_stiffness_n = {}\nlinear_density_kg_per_m = {}\nthermal_expansion_per_k = {}\n\
+                     [geometry]\nleft_support_m = [0.0, 0.0, 30.0]\nright_support_m = [0.0, {}, {}]\nsegments = {}\n\
+                     unstretched_length_m = {}\n",
+                    lit(v[0]),
+                    lit(v[1]),
+                    lit(v[2]),
+                    lit(v[3]),
+                    lit(30.0 + v[4]),
+                    self.segments,
+                    lit(v[3] * v[5])
+                )
+            }
+        }
+        t += "[duration]\nend_time_s = 0.5\n";
+        if self.ground {
+            t += &format!("[ground]\nheight_m = {}\nrestitution = 0.5\n", lit(v[6]));
+        }
+        t + &self.thermal.scenario_tables(self.ground, [v[7], v[8]])
+    }
+}
+
+// ---------------------------------------------------------------------------------------------------
+// The thermal and rating properties
+
+/// RK4 steps a fuzzed transient or de-icing run takes at most (a longer one is skipped or capped).
+const THERMAL_STEPS: f64 = 2.0e4;
+
+/// RK4 steps per run of a fuzzed de-icing bisection (`current_to_shed_in`, tens of runs).
+const BISECTION_STEPS: f64 = 2.0e3;
+
+/// Wall time one thermal or rating input may take [s] (the work budgets of the validation bound it).
+const PER_CASE_S: f64 = 5.0;
+
+/// Segments of a rated line at most (each rating takes tens of static solves).
+const RATING_SEGMENTS: usize = 400;
+
+#[derive(Default)]
+struct ThermalCounts {
+    tried: Cell<u64>,
+    invalid: Cell<u64>,
+    evaluated: Cell<u64>,
+    errors: Cell<u64>,
+    skipped: Cell<u64>,
+    slowest_s: Cell<f64>,
+}
+
+impl ThermalCounts {
+    fn report(&self) -> String {
+        format!(
+            "{} inputs tried: {} invalid (refused with a message), {} evaluated, {} of them ended in a typed error \
+             of a solve, {} parts skipped (too many steps for the fuzz run); slowest input {:.3} s",
+            self.tried.get(),
+            self.invalid.get(),
+            self.evaluated.get(),
+            self.errors.get(),
+            self.skipped.get(),
+            self.slowest_s.get()
+        )
+    }
+
+    fn refused(&self, e: &dyn std::fmt::Display, text: &str) {
+        Self::bump(&self.invalid);
+        verbose("refused", e, text);
+    }
+
+    fn bump(c: &Cell<u64>) {
+        c.set(c.get() + 1);
+    }
+}
+
+fn finite(what: &str, xs: &[f64]) -> Result<(), String> {
+    match xs.iter().find(|x| !x.is_finite()) {
+        Some(x) => Err(format!("{what}: non-finite value {x} in {xs:?}")),
+        None => Ok(()),
+    }
+}
+
+/// A thermal case: parse, then what `ohl thermal` evaluates (steady temperatures, ampacities, a transient,
+/// de-icing), with the steps bounded; typed errors are counted, a panic or a non-finite value is a finding.
+fn check_thermal_case(text: &str, counts: &ThermalCounts) -> Result<(), String> {
+    use ohl::thermal::deicing::DeicingOptions;
+    use ohl::thermal::steady;
+    use ohl::thermal::transient::{CurrentSchedule, Transient, time_to_reach};
+    ThermalCounts::bump(&counts.tried);
+    let started = std::time::Instant::now();
+    let parsed = guarded("thermal::parse_case", || scenario::thermal::parse_case(text, "fuzz.toml"))?;
+    let case = match parsed {
+        Ok(case) => case,
+        Err(e) => {
+            counts.refused(&e, text);
+            return Ok(());
+        }
+    };
+    ThermalCounts::bump(&counts.evaluated);
+    let evaluated = guarded("thermal evaluation", || -> Result<Result<(), String>, String> {
+        let Ok(model) = case.model() else { return Err("the model of a validated case failed".into()) };
+        for &i in &case.current_a {
+            if let Ok(s) = steady::temperature(&model, i) {
+                finite(&format!("steady temperature at {i} A"), &[s.temperature_k])?;
+            } else {
+                return Ok(Err("steady".into()));
+            }
+        }
+        for &t in &case.max_temperature_k {
+            match steady::ampacity(&model, t) {
+                Ok(a) => finite(&format!("ampacity at {t} K"), &[a.current_a])?,
+                Err(_) => return Ok(Err("ampacity".into())),
+            }
+        }
+        if let Some(t) = &case.transient {
+            if t.end_time_s / t.step_s > THERMAL_STEPS {
+                ThermalCounts::bump(&counts.skipped);
+            } else {
+                let schedule = CurrentSchedule::new(t.current_a.iter().map(|p| (p[0], p[1])).collect())
+                    .ok_or("a validated transient.current_a refused by CurrentSchedule::new")?;
+                let t0 = match t.initial_temperature_k {
+                    Some(k) => k,
+                    None => match steady::temperature(&model, schedule.initial_a()) {
+                        Ok(s) => s.temperature_k,
+                        Err(_) => return Ok(Err("transient start".into())),
+                    },
+                };
+                let tr = Transient { model: &model, current: &schedule, step_s: t.step_s };
+                for s in tr.run(0.0, t0, t.end_time_s) {
+                    finite("transient sample", &[s.time_s, s.current_a, s.temperature_k])?;
+                }
+                if let Some(Some(at)) = t.limit_k.map(|l| time_to_reach(&tr, 0.0, t0, l, t.end_time_s)) {
+                    finite("time to the limit", &[at])?;
+                }
+            }
+        }
+        if let (Ok(Some(de)), Some(d)) = (case.deicing(), &case.deicing) {
+            match de.minimum_current_a() {
+                Ok(i) => finite("de-icing minimum current", &[i])?,
+                Err(_) => return Ok(Err("de-icing minimum".into())),
+            }
+            let capped = DeicingOptions { step_s: d.step_s, record_every_s: 10.0, ..Default::default() };
+            let capped = DeicingOptions { max_time_s: capped.max_time_s.min(THERMAL_STEPS * d.step_s), ..capped };
+            for &i in &d.current_a {
+                match de.run(i, &capped) {
+                    Ok(r) => {
+                        finite("de-icing run", &[r.shed_time_s, r.warm_time_s, r.energy.closure_j_per_m])?;
+                        for s in &r.series {
+                            finite("de-icing sample", &[s.time_s, s.conductor_k, s.surface_k, s.melted_kg_per_m])?;
+                        }
+                    }
+                    Err(_) => return Ok(Err("de-icing run".into())),
+                }
+            }
+            for &t in &d.shed_within_s {
+                if t / d.step_s > BISECTION_STEPS {
+                    ThermalCounts::bump(&counts.skipped);
+                    continue;
+                }
+                match de.current_to_shed_in(t, &DeicingOptions { step_s: d.step_s, ..Default::default() }) {
+                    Ok(i) => finite(&format!("current to shed within {t} s"), &[i])?,
+                    Err(_) => return Ok(Err("de-icing bisection".into())),
+                }
+            }
+        }
+        Ok(Ok(()))
+    })?;
+    match evaluated {
+        Err(finding) => return Err(finding),
+        Ok(Err(what)) => {
+            verbose("solve failed", &what, text);
+            ThermalCounts::bump(&counts.errors)
+        }
+        Ok(Ok(())) => {}
+    }
+    let took = started.elapsed().as_secs_f64();
+    counts.slowest_s.set(counts.slowest_s.get().max(took));
+    if took > PER_CASE_S {
+        return Err(format!("took {took:.1} s, above the per-case bound of {PER_CASE_S} s"));
+    }
+    Ok(())
+}
+
+/// A scenario with `[thermal]` and `[rating]`: parse, plan, and (for a small line) the rating of
+/// `ohl rating`: finite numbers or a typed error.
+fn check_rating(text: &str, counts: &ThermalCounts) -> Result<(), String> {
+    use ohl::scenario::rating::{RatingError, rate};
+    ThermalCounts::bump(&counts.tried);
+    let started = std::time::Instant::now();
+    let sc = match guarded("parse", || scenario::parse(text, "fuzz.toml"))? {
+        Ok(sc) => sc,
+        Err(e) => {
+            counts.refused(&e, text);
+            return Ok(());
+        }
+    };
+    let plan = match guarded("plan", || scenario::plan(&sc, "fuzz.toml"))? {
+        Ok(plan) => plan,
+        Err(e) => {
+            counts.refused(&e, text);
+            return Ok(());
+        }
+    };
+    if plan.solver.wire().segments() > RATING_SEGMENTS {
+        ThermalCounts::bump(&counts.skipped);
+        return Ok(());
+    }
+    drop(plan);
+    match guarded("rating::rate", || rate(&sc, "fuzz.toml"))? {
+        Ok(r) => {
+            ThermalCounts::bump(&counts.evaluated);
+            let mut xs = vec![r.limit_m, r.at_air_m, r.at_rating_m, r.rating_a, r.governing_temperature_k];
+            xs.extend(r.limit_temperature_k.iter().chain(&r.clearance_ampacity_a).chain(&r.temperature_ampacity_a));
+            if let Some((from, to, start, when)) = r.step {
+                xs.extend([from, to, start]);
+                xs.extend(when);
+            }
+            finite("rating", &xs)?;
+        }
+        Err(RatingError::Input(e)) => counts.refused(&e, text),
+        Err(e) => {
+            verbose("solve failed", &e, text);
+            ThermalCounts::bump(&counts.evaluated);
+            ThermalCounts::bump(&counts.errors);
+        }
+    }
+    let took = started.elapsed().as_secs_f64();
+    counts.slowest_s.set(counts.slowest_s.get().max(took));
+    if took > PER_CASE_S {
+        return Err(format!("took {took:.1} s, above the per-case bound of {PER_CASE_S} s"));
+    }
+    Ok(())
+}
+
+#[test]
+fn thermal_cases_evaluate_to_finite_numbers_or_typed_errors() {
+    let counts = ThermalCounts::default();
+    let inputs = gen_thermal().prop_map(|g| g.case_toml());
+    fuzz(
+        "fuzz_thermal_cases",
+        cases("OHL_FUZZ_THERMAL_CASES", DEFAULT_THERMAL_CASES),
+        inputs,
+        |t| check_thermal_case(t, &counts),
+        || counts.report(),
+    );
+}
+
+#[test]
+fn ratings_evaluate_to_finite_numbers_or_typed_errors() {
+    let counts = ThermalCounts::default();
+    let inputs = gen_rating().prop_map(|g| g.toml());
+    fuzz(
+        "fuzz_ratings",
+        cases("OHL_FUZZ_RATING_CASES", DEFAULT_RATING_CASES),
+        inputs,
+        |t| check_rating(t, &counts),
+        || counts.report(),
+    );
+}
+
+/// Line scenarios (`[line]`, a first step of item 2 of issue 22): mutations of `cases/e_*.toml` and
+/// `cases/g_*.toml` (three phases in wind; a quad bundle with spacers); `scenario::line::parse` and `plan`
+/// return a plan or a typed error, never a panic. Not yet run: no steps of `ohl::run::line` here.
+#[test]
+fn line_scenarios_parse_and_plan_or_refuse() {
+    let root = env!("CARGO_MANIFEST_DIR");
+    let seeds: Vec<String> = ["cases/e_three_phases_wind.toml", "cases/g_quad_bundle_break.toml"]
+        .iter()
+        .map(|p| std::fs::read_to_string(format!("{root}/{p}")).expect("line seed"))
+        .collect();
+    let n = seeds.len();
+    let inputs = (0..n, prop::collection::vec(mutation(), 1..6)).prop_map(move |(k, m)| mutate(&seeds[k], &m));
+    let counts = Counts::default();
+    let check_line = |text: &String| -> Result<(), String> {
+        counts.tried.set(counts.tried.get() + 1);
+        let sc = match guarded("line::parse", || scenario::line::parse(text, "fuzz.toml"))? {
+            Ok(sc) => sc,
+            Err(e) => {
+                invalid(&counts, &e, text);
+                return Ok(());
+            }
+        };
+        match guarded("line::plan", || scenario::line::plan(&sc, "fuzz.toml"))? {
+            Ok(_) => counts.completed.set(counts.completed.get() + 1),
+            Err(e) => invalid(&counts, &e, text),
+        }
+        Ok(())
+    };
+    fuzz("fuzz_lines", cases("OHL_FUZZ_LINE_CASES", DEFAULT_LINE_CASES), inputs, check_line, || {
+        format!(
+            "{} inputs tried: {} refused with a message, {} planned",
+            counts.tried.get(),
+            counts.invalid.get(),
+            counts.completed.get()
+        )
+    });
 }

@@ -14,6 +14,16 @@
 //! study observes it). Inside a step the current is taken from the schedule's piece containing the step
 //! (its left and right limits at a step in the current are then the right ones).
 //!
+//! The fixed step is also shortened where it would leave RK4's stability interval: linearised about the
+//! current temperature, `dT/dt = lambda (T - T_eq)` with `lambda = d(dT/dt)/dT < 0` (a central difference),
+//! and one RK4 step multiplies `T - T_eq` by `R(z) = 1 + z + z^2/2 + z^3/6 + z^4/24`, `z = h lambda`, with
+//! `|R(z)| <= 1` on the real axis only for `-2.785 <= z <= 0` (the classical method's stability interval).
+//! The step is kept to `h <= 2 / |lambda|`, where `R(-2) = 1/3` is still positive (no overshoot); for conductors this is about twice
+//! the thermal time constant `tau = m c / (dq_loss/dT)`, tens of minutes in still air and a few minutes in
+//! wind, so only steps of the order of `step_s`'s upper bound (600 s) are shortened. Without it such a step
+//! amplifies rounding at every step until the temperature is negative and the heat balance is NaN (found by
+//! the fuzzer of `tests/fuzz_scenarios.rs`).
+//!
 //! [`time_to_reach`] finds the first time the temperature reaches a limit: the step that crosses it is
 //! re-integrated from its start with shorter lengths, bisected to `1e-6 s`.
 
@@ -117,13 +127,22 @@ impl Transient<'_> {
         rk4_step(|s, y: &[f64; 1]| [self.rate(mid, s, y[0])], t, &[temperature_k], h)[0]
     }
 
-    /// The length of the next step from `t` toward `end` [s]: at most `step_s`, landing on the schedule's
-    /// points.
-    fn next_step(&self, t: f64, end: f64) -> f64 {
+    /// The length of the next step from `(t, T)` toward `end` [s]: at most `step_s` and RK4's stable step
+    /// (module doc), landing on the schedule's points.
+    fn next_step(&self, t: f64, temperature_k: f64, end: f64) -> f64 {
         let stop = self.current.next_break(t).map_or(end, |b| b.min(end));
         let h = stop - t;
-        // Land exactly on `stop` in equal steps no longer than `step_s`.
-        h / (h / self.step_s).ceil().max(1.0)
+        let longest = self.step_s.min(self.stable_step_s(0.5 * (t + stop), t, temperature_k));
+        // Land exactly on `stop` in equal steps no longer than `longest`.
+        h / (h / longest).ceil().max(1.0)
+    }
+
+    /// RK4's stable step at `(t, T)` [s], `2 / |d(dT/dt)/dT|` (module doc); infinite where the net heat does
+    /// not fall with the temperature.
+    fn stable_step_s(&self, mid: f64, t: f64, temperature_k: f64) -> f64 {
+        const DT_K: f64 = 1e-3;
+        let slope = (self.rate(mid, t, temperature_k + DT_K) - self.rate(mid, t, temperature_k - DT_K)) / (2.0 * DT_K);
+        if slope < 0.0 { 2.0 / -slope } else { f64::INFINITY }
     }
 
     /// Integrate from `(t0, T0)` to `t_end` [s]; returns the samples at every step (the first is the start).
@@ -131,7 +150,7 @@ impl Transient<'_> {
         let mut out = vec![Sample { time_s: t0, temperature_k: initial_k, current_a: self.current.at(t0) }];
         let (mut t, mut temp) = (t0, initial_k);
         while t < t_end {
-            let h = self.next_step(t, t_end);
+            let h = self.next_step(t, temp, t_end);
             temp = self.advance(t, temp, h);
             t = if t_end - (t + h) < 1e-12 * t_end.abs().max(1.0) { t_end } else { t + h };
             out.push(Sample { time_s: t, temperature_k: temp, current_a: self.current.at(t) });
@@ -156,7 +175,7 @@ pub fn time_to_reach(tr: &Transient, t0: f64, initial_k: f64, limit_k: f64, max_
     let end = t0 + max_time_s;
     let (mut t, mut temp) = (t0, initial_k);
     while t < end {
-        let h = tr.next_step(t, end);
+        let h = tr.next_step(t, temp, end);
         let next = tr.advance(t, temp, h);
         if reached(next) {
             // Bisect on the step length: the sub-step from (t, temp) is an RK4 step of the same accuracy.
@@ -307,5 +326,38 @@ mod tests {
         // Bisection to 1e-6 s; RK4 with 30 s steps is good to ~1e-5 K here; dT/dt ~ 0.02 K/s.
         assert!((at - limit).abs() < 1e-3);
         assert!(time_to_reach(&tr, 0.0, t0, K + 500.0, 7200.0).is_none());
+    }
+
+    #[test]
+    fn a_step_above_the_stability_limit_is_shortened() {
+        // A fuzzer finding: ACSR Linnet (IEEE 738) at night in -43 C air and 6 m/s wind, 1000 A from its
+        // steady state, with 458 s steps. The exact solution is the steady temperature at every time; the step
+        // is about 4 time constants (h |lambda| about 5, outside RK4's interval [-2.785, 0]), so unshortened
+        // steps amplified rounding by |R| > 1 each until the temperature was NaN.
+        let conductor = crate::thermal::catalog::find("ACSR Linnet").unwrap().thermal();
+        let weather = crate::thermal::weather::Weather {
+            air_temperature_k: 230.0,
+            wind_speed_m_per_s: 5.962,
+            wind_angle_deg: 90.0,
+            elevation_m: 0.0,
+            sun: None,
+        };
+        let model = crate::thermal::Model::new(crate::thermal::Standard::Ieee738, conductor, weather);
+        let sched = CurrentSchedule::constant(1000.0);
+        let t_ss = steady::temperature(&model, 1000.0).unwrap().temperature_k;
+        let tr = Transient { model: &model, current: &sched, step_s: 458.0 };
+        let samples = tr.run(0.0, t_ss, 1.0e5);
+        let worst = samples.iter().map(|s| (s.temperature_k - t_ss).abs()).fold(0.0, f64::max);
+        println!("steady {t_ss:.6} K; {} samples; largest departure {worst:.3e} K", samples.len());
+        // The steady state is a fixed point of each step up to the steady solver's residual (its temperature
+        // to about 1e-9 K): a stable step keeps the departure there.
+        assert!(worst < 1e-6, "largest departure {worst} K");
+        // From 50 K below it, the shortened steps still converge: after 1e5 s (hundreds of time constants)
+        // the temperature is the steady one, as with 1 s steps.
+        let cold = tr.final_temperature_k(0.0, t_ss - 50.0, 1.0e5);
+        let fine =
+            Transient { model: &model, current: &sched, step_s: 1.0 }.final_temperature_k(0.0, t_ss - 50.0, 1.0e5);
+        println!("from 50 K below: {cold:.9} K (458 s asked), {fine:.9} K (1 s)");
+        assert!((cold - t_ss).abs() < 1e-6 && (fine - t_ss).abs() < 1e-6);
     }
 }
