@@ -12,17 +12,18 @@
 //! elastic support); the Jacobian is assembled from each conductor's own exact Jacobian
 //! ([`super::jacobian::values`], shifted to its block), each link's 3x3 blocks from the link element on
 //! dual numbers ([`crate::element::link`]: the same function the explicit step evaluates on `f64`), and
-//! each support's spring block. The sparsity pattern is built once from the topology and the factorisation
+//! each support's spring block ([`super::line_jacobian`], shared with the implicit integrator of the
+//! verification). The sparsity pattern is built once from the topology and the factorisation
 //! analysed once (faer's symbolic/numeric split); only the values change per iteration.
 //!
 //! Regularisation, as for one conductor: every conductor's segments get the tension floor; a slack
 //! tension-only link (a string) is linearised with its linear law. The residual is never changed.
 
-use super::dual::Dual;
 use super::jacobian::{pattern, values};
+use super::line_jacobian::{link_block, support_block};
 use super::newton::{Equations, Scales, StaticError, StaticOptions, StaticReport, iterate, load_scales};
 use crate::element::LinkLaw;
-use crate::line::dof::{DofMap, EndDofs};
+use crate::line::dof::DofMap;
 use crate::line::handle::Endpoint;
 use crate::scheme::WindGate;
 use crate::scheme::line::LineExplicit;
@@ -212,37 +213,13 @@ impl Equations for LineEquations<'_> {
             } else {
                 LinkLaw { compression: true, ..link.law }
             };
-            let va: [Dual<6>; 3] = std::array::from_fn(|k| Dual::var(ra[k], k));
-            let vb: [Dual<6>; 3] = std::array::from_fn(|k| Dual::var(rb[k], 3 + k));
-            let z = [Dual::c(0.0); 3];
-            let fb = law.force_on_b(va, vb, z, z);
-            let ends: [(EndDofs, f64, usize); 2] =
-                [(self.dofs.endpoint(&link.a), -1.0, 0), (self.dofs.endpoint(&link.b), 1.0, 3)];
-            for (r, sign, _) in ends {
-                if r.first.is_none() {
-                    continue;
-                }
-                for (c, _, slot) in ends {
-                    if c.first.is_none() {
-                        continue;
-                    }
-                    for k in 0..r.width {
-                        for l in 0..c.width {
-                            vals.push(sign * fb[k].d[slot + l]);
-                        }
-                    }
-                }
-            }
+            // At rest: the velocities are zero and only the position derivatives enter (cv = 0).
+            let ends = [self.dofs.endpoint(&link.a), self.dofs.endpoint(&link.b)];
+            link_block(&law, (ra, [0.0; 3]), (rb, [0.0; 3]), ends, 0.0, vals);
         }
         for (s, sup) in line.supports().enumerate() {
             let (Some(_), Some(el)) = (self.dofs.support(s), sup.elastic) else { continue };
-            // d/dp of -k_l (d.e_l) e_l - k_t (d.e_t) e_t, horizontal block.
-            let (el_, et) = (el.along, el.across());
-            for k in 0..2 {
-                for l in 0..2 {
-                    vals.push(-el.along_n_per_m * el_[k] * el_[l] - el.across_n_per_m * et[k] * et[l]);
-                }
-            }
+            support_block(&el, 0.0, 0.0, vals);
         }
     }
 

@@ -78,6 +78,7 @@ pub mod dual;
 pub mod ground;
 pub mod jacobian;
 pub mod line;
+pub mod line_jacobian;
 mod newton;
 pub mod pivots;
 pub mod sparse_lu;

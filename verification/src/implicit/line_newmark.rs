@@ -34,10 +34,12 @@
 //! - each conductor's block: `ohl::statics::jacobian::values(c, 2/dt, 4/dt^2 + (2/dt) zeta, None)`, its
 //!   exact position and velocity derivatives (dual numbers over each segment's two ends) and `-cm m` on
 //!   the diagonal, where the mass damping `-zeta m v` adds `-(2/dt) zeta m`;
-//! - each intact link's blocks: `LinkLaw::force_on_b` on `Dual<12>` over `(r_a, r_b, v_a, v_b)`, the
-//!   entry `d/dr + (2/dt) d/dv` (the velocity part is the link's axial damping `BA`), with the sign of
-//!   the row's end (`+` for `b`, `-` for `a`); a support end's columns are its two horizontal components;
-//! - each elastic support's 2x2 block: `-k_l e_l e_l^T - k_t e_t e_t^T - ((2/dt) c_d + (4/dt^2) M_s) I`.
+//! - each intact link's blocks (`ohl::statics::line_jacobian::link_block`, as the line statics):
+//!   `LinkLaw::force_on_b` on `Dual<12>` over `(r_a, r_b, v_a, v_b)`, the entry `d/dr + (2/dt) d/dv` (the
+//!   velocity part is the link's axial damping `BA`), with the sign of the row's end (`+` for `b`, `-` for
+//!   `a`); a support end's columns are its two horizontal components;
+//! - each elastic support's 2x2 block (`ohl::statics::line_jacobian::support_block`):
+//!   `-k_l e_l e_l^T - k_t e_t e_t^T - ((2/dt) c_d + (4/dt^2) M_s) I`.
 //!
 //! Second order in time for smooth motions (the trapezoidal rule is symmetric, so its global error
 //! expands in even powers of `dt`), with every velocity-dependent force taken at the new level: no lag,
@@ -47,12 +49,12 @@
 //! pattern): a step refuses it.
 
 use faer::sparse::Pair;
-use ohl::line::dof::{DofMap, EndDofs};
+use ohl::line::dof::DofMap;
 use ohl::scheme::{LineExplicit, WindGate};
 use ohl::statics::SparseLu;
-use ohl::statics::dual::Dual;
 use ohl::statics::jacobian::{max_axial_stiffness_n_per_m, values};
 use ohl::statics::line::{line_dofs, line_pattern};
+use ohl::statics::line_jacobian::{link_block, support_block};
 
 /// Newton iterations allowed per step.
 const MAX_ITERATIONS: usize = 30;
@@ -282,40 +284,12 @@ impl LineNewmark {
             self.vals.extend_from_slice(&self.local);
         }
         for link in line.links().iter().filter(|l| l.intact) {
-            let ((ra, va), (rb, vb)) = (line.endpoint_state(&link.a), line.endpoint_state(&link.b));
-            let var =
-                |r: [f64; 3], slot: usize| -> [Dual<12>; 3] { std::array::from_fn(|k| Dual::var(r[k], slot + k)) };
-            let fb = link.law.force_on_b(var(ra, 0), var(rb, 3), var(va, 6), var(vb, 9));
-            let ends: [(EndDofs, f64, usize); 2] =
-                [(self.dofs.endpoint(&link.a), -1.0, 0), (self.dofs.endpoint(&link.b), 1.0, 3)];
-            for (r, sign, _) in ends {
-                if r.first.is_none() {
-                    continue;
-                }
-                for (c, _, slot) in ends {
-                    if c.first.is_none() {
-                        continue;
-                    }
-                    for k in 0..r.width {
-                        for l in 0..c.width {
-                            self.vals.push(sign * (fb[k].d[slot + l] + cv * fb[k].d[6 + slot + l]));
-                        }
-                    }
-                }
-            }
+            let ends = [self.dofs.endpoint(&link.a), self.dofs.endpoint(&link.b)];
+            link_block(&link.law, line.endpoint_state(&link.a), line.endpoint_state(&link.b), ends, cv, &mut self.vals);
         }
         for (s, sup) in line.supports().enumerate() {
             let (Some(_), Some(el)) = (self.dofs.support(s), sup.elastic) else { continue };
-            let (e_l, e_t) = (el.along, el.across());
-            for k in 0..2 {
-                for l in 0..2 {
-                    let mut x = -el.along_n_per_m * e_l[k] * e_l[l] - el.across_n_per_m * e_t[k] * e_t[l];
-                    if k == l {
-                        x -= cv * el.damping_n_s_per_m + cm * el.mass_kg;
-                    }
-                    self.vals.push(x);
-                }
-            }
+            support_block(&el, cv, cm, &mut self.vals);
         }
     }
 
