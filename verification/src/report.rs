@@ -1,5 +1,6 @@
 //! What a study returns, its tables (written as CSV and as Markdown) and the assembled `REPORT.md`.
 
+use ohl_app::plot::{Chart, render_titled};
 use std::fmt::Write as _;
 use std::path::Path;
 
@@ -135,6 +136,22 @@ impl StudyReport {
                 )
             })
             .collect()
+    }
+
+    /// Draw `panels` (`cols` to a row, each `panel_size` pixels, under the heading `title`) into
+    /// `dir/stem.png` and `dir/stem.svg`, and list the PNG among the study's figures.
+    pub fn figure(
+        &mut self,
+        panels: &[Chart],
+        cols: usize,
+        panel_size: (u32, u32),
+        title: &str,
+        dir: &Path,
+        stem: &str,
+    ) -> Result<(), String> {
+        render_titled(panels, cols, panel_size, title, &dir.join(stem)).map_err(|e| e.to_string())?;
+        self.figures.push(format!("{stem}.png"));
+        Ok(())
     }
 
     /// Write the tables' CSVs.

@@ -20,7 +20,7 @@ use crate::setup::{G_M_PER_S2, SPAN_M, aerodynamic_wind, loads, params, straight
 use ohl::element::aero::{Aerodynamic, SegmentLoad};
 use ohl::element::tension::{LawKind, TensionLaw, TensionOnly};
 use ohl::scheme::{Explicit, WindLoad};
-use ohl_app::plot::{Chart, Series, Style, render_titled};
+use ohl_app::plot::{Chart, Series, Style};
 use std::path::Path;
 
 const TERMS: [&str; 6] =
@@ -210,7 +210,7 @@ pub fn run(budget: Budget, dir: &Path) -> Result<StudyReport, String> {
         }
     }
     let _ = SPAN_M;
-    render_titled(
+    rep.figure(
         &charts,
         3,
         (520, 400),
@@ -218,10 +218,9 @@ pub fn run(budget: Budget, dir: &Path) -> Result<StudyReport, String> {
             "energy: discrete energy balance, term by term, of the weight release and the wind | {}",
             crate::setup::PAPER_WIRE
         ),
-        &dir.join("energy_budget"),
-    )
-    .map_err(|e| e.to_string())?;
-    rep.figures.push("energy_budget.png".into());
+        dir,
+        "energy_budget",
+    )?;
     rep.tables.push(table);
     rep.discussion = "The balance closes to rounding: every joule of kinetic energy is accounted for by the work of \
         the elastic forces, gravity and the wind, minus the dissipation by internal friction, by the wind damping \

@@ -20,7 +20,7 @@ use ohl::exact::modes::TautString;
 use ohl::exact::{ElasticArc, ElasticCatenary};
 use ohl::scheme::Explicit;
 use ohl::wire::{Conductor, Wire};
-use ohl_app::plot::{Chart, Series, Style, render_titled};
+use ohl_app::plot::{Chart, Series, Style};
 use std::path::Path;
 
 /// RK4 route for a catenary: largest distance of the path from the closed form and of the end from B [m].
@@ -256,7 +256,7 @@ pub fn run(budget: Budget, dir: &Path) -> Result<StudyReport, String> {
         format!("{late:.6}"),
         (late - 1.35695).abs() < 1e-6,
     );
-    render_titled(
+    rep.figure(
         &[Chart {
             title: "Taut string, transverse mode 1".into(),
             x_label: "segments N [-]".into(),
@@ -271,10 +271,9 @@ pub fn run(budget: Budget, dir: &Path) -> Result<StudyReport, String> {
         1,
         (640, 440),
         &format!("exact: the exact references against independent routes | {}", crate::setup::PAPER_WIRE),
-        &dir.join("exact_references"),
-    )
-    .map_err(|e| e.to_string())?;
-    rep.figures.push("exact_references.png".into());
+        dir,
+        "exact_references",
+    )?;
     rep.tables.push(table);
     Ok(rep)
 }

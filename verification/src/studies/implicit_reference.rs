@@ -43,7 +43,7 @@ use ohl::element::tension::LawKind;
 use ohl::scheme::Explicit;
 use ohl::statics::jacobian::replica_gap;
 use ohl::statics::{StaticError, StaticOptions, rounding_floor_n, solve as solve_static};
-use ohl_app::plot::{Chart, Series, Style, render_titled};
+use ohl_app::plot::{Chart, Series, Style};
 use rayon::prelude::*;
 use std::path::Path;
 
@@ -352,7 +352,7 @@ pub fn run(budget: Budget, dir: &Path) -> Result<StudyReport, String> {
             ));
         }
     }
-    render_titled(
+    rep.figure(
         &[
             Chart {
                 title: format!("Newton residual, N = {n_static}"),
@@ -376,10 +376,9 @@ pub fn run(budget: Budget, dir: &Path) -> Result<StudyReport, String> {
         2,
         (620, 440),
         &format!("implicit: Newton statics and the implicit reference on faer | {}", crate::setup::PAPER_WIRE),
-        &dir.join("newton_convergence"),
-    )
-    .map_err(|e| e.to_string())?;
-    rep.figures.push("newton_convergence.png".into());
+        dir,
+        "newton_convergence",
+    )?;
     // Replica check: the Jacobian's function values equal the library's forces (moving, windy state).
     let mut probe = initial(Dynamic::WindStep, 20, 1e-3)?;
     for (i, v) in probe.wire_mut().v[0].iter_mut().enumerate() {
@@ -512,15 +511,14 @@ pub fn run(budget: Budget, dir: &Path) -> Result<StudyReport, String> {
             ..Default::default()
         });
     }
-    render_titled(
+    rep.figure(
         &charts,
         2,
         (620, 440),
         &format!("implicit: Newton statics and the implicit reference on faer | {}", crate::setup::PAPER_WIRE),
-        &dir.join("implicit_reference"),
-    )
-    .map_err(|e| e.to_string())?;
-    rep.figures.push("implicit_reference.png".into());
+        dir,
+        "implicit_reference",
+    )?;
     rep.tables.push(t_newton);
     rep.tables.push(t_summary);
     rep.tables.push(t_dyn);

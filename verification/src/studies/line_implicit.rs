@@ -119,7 +119,7 @@ use ohl::scheme::{LineError, LineExplicit, Loads, StepParams, WindGate};
 use ohl::statics::{StaticOptions, solve_line};
 use ohl::wire::Conductor;
 use ohl::wire::section::{Layout, Section, Span, Stringing, Support as SectionSupport};
-use ohl_app::plot::{Chart, Series, Style, render_titled};
+use ohl_app::plot::{Chart, Series, Style};
 use rayon::prelude::*;
 use std::path::Path;
 use std::time::Instant;
@@ -832,15 +832,11 @@ pub fn run(budget: Budget, dir: &Path) -> Result<StudyReport, String> {
         ],
         ..Default::default()
     });
-    render_titled(
+    rep.figure(
         &charts,
         2,
         (640, 460),
-        "line_implicit: explicit line scheme vs Newmark on the whole line (Drake phase and twin bundle, elastic tower top)",
-        &dir.join("line_implicit"),
-    )
-    .map_err(|e| e.to_string())?;
-    rep.figures.push("line_implicit.png".into());
+        "line_implicit: explicit line scheme vs Newmark on the whole line (Drake phase and twin bundle, elastic tower top)", dir, "line_implicit")?;
 
     // The rest state.
     let mut t_rest = Table::new(

@@ -117,7 +117,7 @@ use ohl::line::{ElasticSupport, Endpoint, LinkKind, Model, Role, Support};
 use ohl::scheme::{LineError, LineExplicit, Loads, StepParams, WindGate};
 use ohl::wire::Conductor;
 use ohl::wire::section::{Layout, Section, Span, Stringing, Support as SectionSupport};
-use ohl_app::plot::{Chart, Series, Style, render_titled};
+use ohl_app::plot::{Chart, Series, Style};
 use rayon::prelude::*;
 use std::path::Path;
 use std::time::Instant;
@@ -958,15 +958,11 @@ pub fn run(budget: Budget, dir: &Path) -> Result<StudyReport, String> {
         }
     }
     charts.push(hist);
-    render_titled(
+    rep.figure(
         &charts,
         2,
         (640, 460),
-        "line_statics: ACSR Drake bundles and phases on a shared elastic tower top vs exact_line (EA = 2.9e7 N, 1.628 kg/m)",
-        &dir.join("line_statics"),
-    )
-    .map_err(|e| e.to_string())?;
-    rep.figures.push("line_statics.png".into());
+        "line_statics: ACSR Drake bundles and phases on a shared elastic tower top vs exact_line (EA = 2.9e7 N, 1.628 kg/m)", dir, "line_statics")?;
 
     rep.tables.push(etable);
     rep.tables.push(otable);

@@ -38,7 +38,7 @@ use crate::setup::{
 use ohl::element::tension::LawKind;
 use ohl::scheme::Explicit;
 use ohl::wire::{Conductor, Wire};
-use ohl_app::plot::{Chart, Series, Style, render_titled};
+use ohl_app::plot::{Chart, Series, Style};
 use rayon::prelude::*;
 use std::f64::consts::{FRAC_PI_2, PI};
 use std::path::Path;
@@ -291,7 +291,7 @@ pub fn run(budget: Budget, dir: &Path) -> Result<StudyReport, String> {
         Style::Dashed,
         6,
     ));
-    render_titled(
+    rep.figure(
         &[Chart {
             title: format!("Manufactured solution, fixed Courant number {COURANT}"),
             x_label: "segments N [-] (dt proportional to 1/N)".into(),
@@ -304,10 +304,9 @@ pub fn run(budget: Budget, dir: &Path) -> Result<StudyReport, String> {
         1,
         (760, 520),
         &format!("mms: manufactured 3D solution of the dynamic equations | {}", crate::setup::PAPER_WIRE),
-        &dir.join("mms_convergence"),
-    )
-    .map_err(|e| e.to_string())?;
-    rep.figures.push("mms_convergence.png".into());
+        dir,
+        "mms_convergence",
+    )?;
     rep.tables.push(table);
     rep.discussion = "Without damping the scheme is second order in space and time together. The Kelvin-Voigt strain \
         rate and the wind damping (2.6) are evaluated with the velocities of the previous half step: the force \

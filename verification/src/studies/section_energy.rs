@@ -93,7 +93,7 @@ use ohl::element::tension::LawKind;
 use ohl::scheme::{Explicit, Ground, Loads, StepParams, WindGate};
 use ohl::wire::section::{self, CrossarmSpec, Layout, Section, Span, Stringing, Support};
 use ohl::wire::{Conductor, Wire};
-use ohl_app::plot::{Chart, Series, Style, render_titled};
+use ohl_app::plot::{Chart, Series, Style};
 use std::path::Path;
 
 const G: f64 = 9.81;
@@ -810,8 +810,7 @@ pub fn run(budget: Budget, dir: &Path) -> Result<StudyReport, String> {
             ..Default::default()
         },
     ];
-    render_titled(&charts, 4, (520, 420), "section_energy: energy budget of a 150 + 180 + 140 m ACSR Drake section on suspension strings (EA = 2.9e7 N, 1.628 kg/m)", &dir.join("section_energy")).map_err(|e| e.to_string())?;
-    rep.figures.push("section_energy.png".into());
+    rep.figure(&charts, 4, (520, 420), "section_energy: energy budget of a 150 + 180 + 140 m ACSR Drake section on suspension strings (EA = 2.9e7 N, 1.628 kg/m)", dir, "section_energy")?;
     rep.tables.push(budget_table);
     rep.tables.push(conv);
     rep.tables.push(clamp_table);

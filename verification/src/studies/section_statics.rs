@@ -108,7 +108,7 @@ use ohl::statics::{StaticError, StaticOptions, solve as solve_static};
 use ohl::wire::insulator::clamp_stable_step_s;
 use ohl::wire::section::{self, CrossarmSpec, Layout, Section, Span, Stringing, Support};
 use ohl::wire::{Conductor, Wire};
-use ohl_app::plot::{Chart, Series, Style, render_titled};
+use ohl_app::plot::{Chart, Series, Style};
 use rayon::prelude::*;
 use std::path::Path;
 use std::time::Instant;
@@ -1156,15 +1156,14 @@ pub fn run(budget: Budget, dir: &Path) -> Result<StudyReport, String> {
     }
 
     // ---- figures ----
-    render_titled(
+    rep.figure(
         &panels,
         2,
         (640, 460),
         "section_statics: exact statics of ACSR Drake sections on suspension strings (EA = 2.9e7 N, 1.628 kg/m)",
-        &dir.join("section_statics_convergence"),
-    )
-    .map_err(|e| e.to_string())?;
-    rep.figures.push("section_statics_convergence.png".into());
+        dir,
+        "section_statics_convergence",
+    )?;
     let mut shape = vec![];
     for case in [Case::Inclined, Case::Broken] {
         let idx = solved
@@ -1183,15 +1182,14 @@ pub fn run(budget: Budget, dir: &Path) -> Result<StudyReport, String> {
     let c = sol.supports[1].clamp;
     let window = ([c[0] - 25.0, c[0] + 10.0], [c[1] - 22.0, PIVOT_Z + 2.0]);
     shape.push(shape_chart(Case::Broken, s, layout, sec, sol, Some(window)));
-    render_titled(
+    rep.figure(
         &shape,
         1,
         (1100, 460),
         "section_statics: exact statics of ACSR Drake sections on suspension strings (EA = 2.9e7 N, 1.628 kg/m)",
-        &dir.join("section_statics_shape"),
-    )
-    .map_err(|e| e.to_string())?;
-    rep.figures.push("section_statics_shape.png".into());
+        dir,
+        "section_statics_shape",
+    )?;
 
     rep.tables.push(table);
     rep.tables.push(otable);

@@ -69,7 +69,7 @@ use ohl::scenario::{self, Scenario};
 use ohl::scheme::Explicit;
 use ohl::statics::jacobian::{pattern, unknown_index, values};
 use ohl::statics::{SparseLu, StaticOptions, solve as solve_static};
-use ohl_app::plot::{Chart, Series, Style, render_titled};
+use ohl_app::plot::{Chart, Series, Style};
 use rayon::prelude::*;
 use std::path::Path;
 
@@ -891,15 +891,14 @@ pub fn run(budget: Budget, dir: &Path) -> Result<StudyReport, String> {
         log_y: true,
         ..Default::default()
     });
-    render_titled(
+    rep.figure(
         &charts,
         3,
         (560, 420),
         "section_transients: cases (a) broken conductor and (b) ice shedding, 5 x 400 m ACSR Drake on strings",
-        &dir.join("section_transients"),
-    )
-    .map_err(|e| e.to_string())?;
-    rep.figures.push("section_transients.png".into());
+        dir,
+        "section_transients",
+    )?;
     rep.tables.push(runs_table);
     rep.tables.push(order_table);
     rep.tables.push(static_table);

@@ -67,7 +67,7 @@ use crate::setup::{
 use ohl::element::tension::LawKind;
 use ohl::scheme::{Explicit, courant};
 use ohl::statics::{StaticOptions, solve as solve_static};
-use ohl_app::plot::{Chart, Series, Style, render_titled};
+use ohl_app::plot::{Chart, Series, Style};
 use rayon::prelude::*;
 use std::collections::VecDeque;
 use std::path::Path;
@@ -499,7 +499,7 @@ pub fn run(budget: Budget, dir: &Path) -> Result<StudyReport, String> {
         over.to_string(),
         over,
     );
-    render_titled(
+    rep.figure(
         &charts,
         2,
         (620, 440),
@@ -507,10 +507,9 @@ pub fn run(budget: Budget, dir: &Path) -> Result<StudyReport, String> {
             "sensitivity: mu, b and the Courant number on the catenary and the wind arc, N = 50 | {}",
             crate::setup::PAPER_WIRE
         ),
-        &dir.join("sensitivity"),
-    )
-    .map_err(|e| e.to_string())?;
-    rep.figures.push("sensitivity.png".into());
+        dir,
+        "sensitivity",
+    )?;
     rep.tables.push(table);
     rep.tables.push(lt);
     // Numbers quoted in the discussion.

@@ -17,7 +17,7 @@ use crate::convergence::{gci, ls_order, three_grid_order};
 use crate::report::{Budget, StudyReport, Table, sci};
 use crate::setup::{Case, SPAN_M, explicit_for, max_distance, positions, settle};
 use ohl::statics::{StaticOptions, solve as solve_static};
-use ohl_app::plot::{Chart, Series, Style, render_titled};
+use ohl_app::plot::{Chart, Series, Style};
 use rayon::prelude::*;
 use std::path::Path;
 
@@ -234,7 +234,7 @@ pub fn run(budget: Budget, dir: &Path) -> Result<StudyReport, String> {
         log_y: true,
         ..Default::default()
     });
-    render_titled(
+    rep.figure(
         &charts,
         2,
         (640, 460),
@@ -242,10 +242,9 @@ pub fn run(budget: Budget, dir: &Path) -> Result<StudyReport, String> {
             "static: grid convergence of the settled explicit scheme to the exact statics | {}",
             crate::setup::PAPER_WIRE
         ),
-        &dir.join("static_convergence"),
-    )
-    .map_err(|e| e.to_string())?;
-    rep.figures.push("static_convergence.png".into());
+        dir,
+        "static_convergence",
+    )?;
     rep.tables.push(table);
     rep.tables.push(gtable);
     rep.discussion = "The errors fall as N^-2 on all three cases; the Richardson extrapolate of the mid-span \

@@ -101,7 +101,7 @@ use ohl::thermal::radiation::{STEFAN_BOLTZMANN_W_PER_M2_K4, radiation_w_per_m};
 use ohl::thermal::steady::{self, SteadyError};
 use ohl::thermal::transient::{CurrentSchedule, Sample, Transient, time_to_reach};
 use ohl::thermal::{HeatBalance, HeatTerms, Model, Standard, ThermalConductor, Weather, catalog, joule};
-use ohl_app::plot::{Chart, Series, Style, render_titled};
+use ohl_app::plot::{Chart, Series, Style};
 use std::path::Path;
 
 /// Offset between the kelvin and degree Celsius scales \[K\].
@@ -877,15 +877,14 @@ fn transient(rep: &mut StudyReport, dir: &Path, drake: &ThermalConductor) -> Res
         log_y: true,
         ..Default::default()
     };
-    render_titled(
+    rep.figure(
         &[panel_t, panel_e],
         2,
         (640, 460),
         "thermal: IEEE 738 / CIGRE TB 601 heat balance of ACSR Drake (catalogue data)",
-        &dir.join("thermal_transient"),
-    )
-    .map_err(|e| e.to_string())?;
-    rep.figures.push("thermal_transient.png".into());
+        dir,
+        "thermal_transient",
+    )?;
     Ok((
         table,
         TransientSummary {
@@ -1177,15 +1176,14 @@ fn deicing(
             ..Default::default()
         },
     ];
-    render_titled(
+    rep.figure(
         &panels,
         2,
         (640, 460),
         "thermal: IEEE 738 / CIGRE TB 601 heat balance of ACSR Drake (catalogue data)",
-        &dir.join("thermal_deicing"),
-    )
-    .map_err(|e| e.to_string())?;
-    rep.figures.push("thermal_deicing.png".into());
+        dir,
+        "thermal_deicing",
+    )?;
 
     Ok((
         vec![budget, otable, times_t],
