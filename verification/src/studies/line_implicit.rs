@@ -115,7 +115,7 @@ use ohl::element::LinkLaw;
 use ohl::element::tension::LawKind;
 use ohl::line::build::{Attach, BundleSpec, add_bundle, add_section_conductor};
 use ohl::line::{ElasticSupport, LinkKind, Model, Role, Support};
-use ohl::scheme::{LineError, LineExplicit, Loads, StepParams, WindGate};
+use ohl::scheme::{LineError, LineExplicit, Loads, StepParams};
 use ohl::statics::{StaticOptions, solve_line};
 use ohl::wire::Conductor;
 use ohl::wire::section::{Layout, Section, Span, Stringing, Support as SectionSupport};
@@ -203,13 +203,7 @@ pub(crate) struct Built {
 }
 
 fn loads() -> Loads {
-    Loads {
-        gravity_m_per_s2: G,
-        uniform_load_n_per_m: [0.0; 3],
-        wind: None,
-        wind_scale: 1.0,
-        wind_gate: WindGate::Always,
-    }
+    crate::setup::loads(G, [0.0; 3], None)
 }
 
 /// The line of the module doc: a single Drake phase and a twin Drake bundle, each two 400 m spans from

@@ -114,7 +114,7 @@ use crate::report::{Budget, StudyReport, Table, sci};
 use ohl::element::tension::LawKind;
 use ohl::line::build::{Attach, BundleSpec, add_bundle, add_section_conductor};
 use ohl::line::{ElasticSupport, Endpoint, LinkKind, Model, Role, Support};
-use ohl::scheme::{LineError, LineExplicit, Loads, StepParams, WindGate};
+use ohl::scheme::{LineError, LineExplicit, Loads, StepParams};
 use ohl::wire::Conductor;
 use ohl::wire::section::{Layout, Section, Span, Stringing, Support as SectionSupport};
 use ohl_app::plot::{Chart, Series, Style};
@@ -221,13 +221,7 @@ impl Case {
 }
 
 fn loads() -> Loads {
-    Loads {
-        gravity_m_per_s2: G,
-        uniform_load_n_per_m: [0.0; 3],
-        wind: None,
-        wind_scale: 1.0,
-        wind_gate: WindGate::Always,
-    }
+    crate::setup::loads(G, [0.0; 3], None)
 }
 
 fn span(n: usize) -> Span {

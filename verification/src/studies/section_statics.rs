@@ -103,7 +103,7 @@ use crate::convergence::{ls_order, pair_orders};
 use crate::exact_section as ex;
 use crate::report::{Budget, StudyReport, Table, sci};
 use ohl::element::tension::LawKind;
-use ohl::scheme::{Explicit, Loads, StepParams, WindGate};
+use ohl::scheme::{Explicit, Loads, StepParams};
 use ohl::statics::{StaticError, StaticOptions, solve as solve_static};
 use ohl::wire::insulator::clamp_stable_step_s;
 use ohl::wire::section::{self, CrossarmSpec, Layout, Section, Span, Stringing, Support};
@@ -309,13 +309,7 @@ fn exact_section(case: Case, strings: Option<Strings>, lengths: &[f64]) -> ex::S
 
 /// Loads: gravity only.
 fn loads() -> Loads {
-    Loads {
-        gravity_m_per_s2: G,
-        uniform_load_n_per_m: [0.0; 3],
-        wind: None,
-        wind_scale: 1.0,
-        wind_gate: WindGate::Always,
-    }
+    crate::setup::loads(G, [0.0; 3], None)
 }
 
 /// Stable step \[s\]: Courant `courant` on the shortest segment (bare conductor's wave speed: ice only lowers
