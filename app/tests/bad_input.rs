@@ -280,8 +280,11 @@ fn every_invalid_scenario_is_refused_with_a_precise_message() {
 fn every_invalid_heat_case_is_refused_with_a_precise_message() {
     let out = tmp("bad-heat");
     for (stem, needles) in PAPER_CASES {
-        let (code, _, err) = ohl(&["paper", stem, "--cases", dir().to_str().unwrap(), "--out", out.to_str().unwrap()]);
+        let (code, stdout, err) =
+            ohl(&["paper", stem, "--cases", dir().to_str().unwrap(), "--out", out.to_str().unwrap()]);
         assert_eq!(code, 2, "{stem}: exit code {code}, stderr:\n{err}");
+        // Only the refusal (on stderr): no empty results table, no summary of zero values.
+        assert!(stdout.trim().is_empty(), "{stem}: a refused case prints nothing on stdout:\n{stdout}");
         assert!(err.contains(&format!("{stem}.toml")), "{stem}: message does not name the file:\n{err}");
         for n in *needles {
             assert!(err.contains(n), "{stem}: message lacks `{n}`:\n{err}");

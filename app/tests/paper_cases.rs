@@ -120,6 +120,8 @@ fn an_invalid_heat_case_is_refused_with_the_field_and_exit_code_2() {
         .expect("run ohl");
     let err = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(2), "{err}");
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(!stdout.contains("| case |") && stdout.trim().is_empty(), "only the refusal is printed:\n{stdout}");
     assert!(err.contains("bad_heat.toml") && err.contains("runs[0].step_ratio") && err.contains("0.6"), "{err}");
     assert!(err.contains("rod.segments") && err.contains("51") && err.contains("even"), "{err}");
     assert!(!dir.join("figures").exists(), "nothing is written for an invalid case");

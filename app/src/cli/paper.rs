@@ -4,7 +4,7 @@
 //!
 //! Exit codes: 0 when every case ran (the table says which of the paper's values are not reproduced,
 //! and why); 1 when a case failed to run or its output could not be written; 2 for an invalid case file
-//! or an unknown case.
+//! or an unknown case. When every case is refused or fails, only the errors are printed (on stderr).
 
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -89,6 +89,10 @@ pub fn main(args: PaperArgs) -> ExitCode {
                 code = code.max(if matches!(e, PaperError::Input(_) | PaperError::NotACase(_)) { 2 } else { 1 });
             }
         }
+    }
+    // Every case refused or failed: the errors above are the whole answer (no empty table, no summary).
+    if rows.is_empty() && code != 0 {
+        return ExitCode::from(code);
     }
     out!();
     let table = table::format(&rows);
