@@ -17,11 +17,15 @@ use super::InputError;
 /// Read `text` into `T`: a syntax error keeps the parser's line and column; an error of a value names its
 /// field path and points at its line ([module doc](self)).
 pub(crate) fn from_text<T: DeserializeOwned>(text: &str, file: &str) -> Result<T, InputError> {
-    let table: toml::Table = text.parse().map_err(|e: toml::de::Error| InputError::Parse {
+    from_table(parse_table(text, file)?, text, file)
+}
+
+/// The TOML syntax of `text` into a table, once: a syntax error keeps the parser's line and column.
+pub(crate) fn parse_table(text: &str, file: &str) -> Result<toml::Table, InputError> {
+    text.parse().map_err(|e: toml::de::Error| InputError::Parse {
         file: file.to_string(),
         message: super::plain_types(&e.to_string()),
-    })?;
-    from_table(table, text, file)
+    })
 }
 
 /// Read an already parsed document (of `text`, perhaps completed: catalogue data filled in) into `T`,

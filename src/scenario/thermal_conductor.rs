@@ -349,13 +349,13 @@ fn catalog_label(path: &Path, file: &str) -> String {
 /// `file`), validate every entry, and replace `t`'s `conductor` by the entry's thermal properties if the
 /// entry is found there (a name not found there is left for the built-in catalogue, and refused with both
 /// catalogues' names if neither has it). `at` is the table's dotted prefix in messages (`thermal.` or
-/// empty). Returns the catalogue's entries (for `[conductor] catalog`) and whether `t` changed.
+/// empty). Returns the catalogue's entries (for `[conductor] catalog`).
 pub(crate) fn resolve_user_catalog(
     t: &mut toml::Table,
     at: &str,
     file: &str,
-) -> Result<(Option<Vec<CatalogConductor>>, bool), InputError> {
-    let Some(path) = t.get("conductor_catalog") else { return Ok((None, false)) };
+) -> Result<Option<Vec<CatalogConductor>>, InputError> {
+    let Some(path) = t.get("conductor_catalog") else { return Ok(None) };
     let invalid = |field: String, value: String, allowed: String| InputError::Invalid {
         file: file.into(),
         problems: vec![Problem { field, value, allowed }],
@@ -386,11 +386,9 @@ pub(crate) fn resolve_user_catalog(
     if !c.0.is_empty() {
         return Err(InputError::Invalid { file: label, problems: c.0 });
     }
-    let mut changed = false;
     if let Some(toml::Value::String(name)) = t.get("conductor").cloned() {
         if let Some(e) = find_in(&entries, &name) {
             t.insert("conductor".into(), toml::Value::Table(properties_table(&e.thermal())));
-            changed = true;
         } else if let Err(CatalogError::NotFound { available, .. }) = catalog::find(&name) {
             let user: Vec<String> = entries.iter().map(|e| e.name.clone()).collect();
             return Err(invalid(
@@ -405,7 +403,7 @@ pub(crate) fn resolve_user_catalog(
             ));
         }
     }
-    Ok((Some(entries), changed))
+    Ok(Some(entries))
 }
 
 /// The user catalogue entry called `name` (name or alias, ignoring case and surrounding whitespace).
