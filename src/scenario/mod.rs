@@ -8,7 +8,7 @@
 pub mod build;
 pub mod events;
 pub mod line;
-mod locate;
+pub mod locate;
 pub mod rating;
 pub mod schema;
 pub mod section;
