@@ -156,6 +156,25 @@ pub fn to_text(py: Python<'_>, t: &toml::Table, file: &str) -> PyResult<String> 
     })
 }
 
+/// Make a relative `thermal.conductor_catalog` of a scenario dict's table absolute: joined to `base_dir`
+/// (the argument, a path) or, without it, to the current working directory. A dict has no file whose
+/// folder a relative path could be taken from (a file's is resolved relative to its folder,
+/// `ohl::scenario::thermal_conductor`). A value that is not text is left for the library to refuse.
+pub fn rebase_catalog(t: &mut toml::Table, base_dir: Option<&Bound<'_, PyAny>>) -> PyResult<()> {
+    let base = match base_dir {
+        Some(b) if !b.is_none() => Some(crate::args::path("base_dir", b)?),
+        _ => None,
+    };
+    let Some(toml::Value::Table(thermal)) = t.get_mut("thermal") else { return Ok(()) };
+    let Some(toml::Value::String(rel)) = thermal.get_mut("conductor_catalog") else { return Ok(()) };
+    let base = match base {
+        Some(b) => b,
+        None => std::env::current_dir()?,
+    };
+    *rel = base.join(&*rel).to_string_lossy().into_owned();
+    Ok(())
+}
+
 /// The first error of a scenario dict's table read as a single-conductor scenario, at its field path,
 /// with the fields of a catalogue conductor filled in as `ohl::scenario::parse` fills them. A table with
 /// `line` is left to the library (which says what a line scenario is).
