@@ -282,7 +282,7 @@ fn heat_substeps(plan: &Plan, n: f64, dt: f64, horizon: f64) -> (f64, Option<usi
             let substeps = ((d / dt).ceil() + 1.0) * per_step;
             total += substeps;
             // NaN counts as the most (it is over any budget).
-            if most.is_none_or(|(m, _)| !(substeps <= m)) {
+            if most.is_none_or(|(m, _)| !substeps.partial_cmp(&m).is_some_and(|o| o.is_le())) {
                 most = Some((substeps, ordinal));
             }
         }
