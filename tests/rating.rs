@@ -82,8 +82,16 @@ fn a_rating_without_ampacity_says_why() {
     let s = scenario::parse(&text, FILE).unwrap();
     let e = rating::rate(&s, FILE).unwrap_err().to_string();
     println!("{e}");
-    assert!(e.starts_with("no ampacity at the limiting temperature: the clearance stays within its limit 1 m up to 315.150 K; "), "{e}");
-    assert!(e.contains("rating.max_temperature_k, at 315.150 K (42.00 C): no ampacity for 315.15 K (42 C): solar heating"), "{e}");
+    assert!(
+        e.starts_with(
+            "no ampacity at the limiting temperature: the clearance stays within its limit 1 m up to 315.150 K; "
+        ),
+        "{e}"
+    );
+    assert!(
+        e.contains("rating.max_temperature_k, at 315.150 K (42.00 C): no ampacity for 315.15 K (42 C): solar heating"),
+        "{e}"
+    );
     // The solar heating and cooling it quotes are the heat balance's own at 42 C.
     let model = Model::new(
         Standard::Ieee738,
