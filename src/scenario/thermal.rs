@@ -296,10 +296,7 @@ pub fn conductor(c: &mut Check, field: &str, spec: &ConductorSpec) -> Option<The
                 None
             }
         },
-        ConductorSpec::Properties(p) => {
-            let t = p.thermal();
-            check_thermal_conductor(c, field, &t).then_some(t)
-        }
+        ConductorSpec::Properties(p) => check_thermal_conductor(c, field, p).then(|| (**p).clone()),
     }
 }
 
