@@ -67,3 +67,38 @@ fn limiting_temperature_converges_to_the_exact_catenary_at_order_two() {
         assert!((p - 2.0).abs() < 0.15, "orders {orders:?}");
     }
 }
+
+#[test]
+fn a_rating_without_ampacity_says_why() {
+    // Still air and the example's sun at 40 C: the sun alone heats Drake above 42 C (IEEE 738 Annex B:
+    // about 22 W/m of solar heating against a few W/m of cooling 2 K above the air), so there is no
+    // ampacity for a maximum temperature of 42 C; the clearance stays above 1 m up to it. The message
+    // names both limits and what the ampacity said.
+    let text = std::fs::read_to_string(FILE)
+        .unwrap()
+        .replace("wind_speed_m_per_s = 0.61", "wind_speed_m_per_s = 0.0")
+        .replace("min_clearance_m = 11.0", "min_clearance_m = 1.0")
+        .replace("max_temperature_k = 373.15", "max_temperature_k = 315.15");
+    let s = scenario::parse(&text, FILE).unwrap();
+    let e = rating::rate(&s, FILE).unwrap_err().to_string();
+    println!("{e}");
+    assert!(
+        e.starts_with(
+            "no ampacity at the limiting temperature: the clearance stays within its limit 1 m up to 315.150 K; "
+        ),
+        "{e}"
+    );
+    assert!(
+        e.contains("rating.max_temperature_k, at 315.150 K (42.00 C): no ampacity for 315.15 K (42 C): solar heating"),
+        "{e}"
+    );
+    // The solar heating and cooling it quotes are the heat balance's own at 42 C.
+    let model = Model::new(
+        Standard::Ieee738,
+        catalog::find("ACSR Drake").unwrap().thermal(),
+        scenario::thermal::weather(&s.thermal.unwrap().weather),
+    );
+    let terms = ohl::thermal::HeatBalance::terms(&model, 315.15, 1.0);
+    assert!(terms.solar_w_per_m > terms.convection_w_per_m + terms.radiation_w_per_m, "{terms:?}");
+    assert!(e.contains(&format!("solar heating {:.3} W/m", terms.solar_w_per_m)), "{e}");
+}

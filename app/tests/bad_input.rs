@@ -204,7 +204,7 @@ const CASES: &[(&str, &[&str])] = &[
         "heat_conduction_without_expansion",
         &["field `events[0].action` = \"heat_conduction\"", "thermal_expansion_per_k > 0"],
     ),
-    ("heat_conduction_above_budget", &["heat node updates", "lower events[].heat_time_per_s"]),
+    ("heat_conduction_above_budget", &["heat node updates", "lower events[0].heat_time_per_s"]),
     (
         "ground_profile_point_with_three_numbers",
         &["line 15, column 13", "field `ground.profile_m`: point [1] has 3 numbers"],

@@ -93,7 +93,9 @@ def loads(text: str, name: str = "<string>") -> Scenario:
     return Scenario.from_toml(text, name)
 
 
-def from_dict(d: Mapping, name: str = "<dict>") -> Scenario:
+def from_dict(
+    d: Mapping, name: str = "<dict>", base_dir: Optional[Union[str, "os.PathLike[str]"]] = None
+) -> Scenario:
     """A scenario from a dict with the tables and keys of a scenario file.
 
     Tables are nested dicts, ``events`` a list of dicts. A Python ``int`` is a TOML integer and a
@@ -101,8 +103,12 @@ def from_dict(d: Mapping, name: str = "<dict>") -> Scenario:
     either (exactly as in a file). The dict is written as TOML (``Scenario.toml``) and read like a file,
     so a dict and the equivalent TOML text give bitwise the same run. Every error names the dict's field
     path (``geometry.segments``), as written in the dict.
+
+    A relative ``thermal.conductor_catalog`` (a user catalogue of conductors) is taken relative to
+    ``base_dir`` (default: the current working directory), as a file's is relative to the file's folder;
+    ``Scenario.toml`` holds the path made absolute.
     """
-    return Scenario.from_dict(d, name)
+    return Scenario.from_dict(d, name, base_dir)
 
 
 def load_line(path: Union[str, "os.PathLike[str]"]) -> LineScenario:

@@ -7,17 +7,14 @@
 //! NumPy scalars and arrays through `.tolist()`. What TOML cannot hold (None, an int beyond 64 bits, an
 //! object of another type, a key that is not a str, a dict that contains itself, nesting deeper than
 //! [`MAX_DEPTH`]) is refused there, at its path. The table is then read by the library's own schema
-//! ([`located`]): serde's first error is found in the TOML text by its span (`toml::de::Error::span`) and
-//! the span in the text's tree of spanned values (`toml::de::DeTable::parse`), which gives the path.
+//! ([`check`], through [`ohl::scenario::locate::from_table_alone`], which names the field path of serde's
+//! error in the table itself).
 
-use std::ops::Range;
-
-use ohl::scenario::{InputError, Problem, fill_from_catalog, plain_types};
+use ohl::scenario::locate::from_table_alone;
+use ohl::scenario::{InputError, Problem, fill_from_catalog};
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyDict, PyFloat, PyInt, PyList, PyMapping, PyString, PyTuple};
 use serde::de::DeserializeOwned;
-use toml::Spanned;
-use toml::de::{DeTable, DeValue};
 
 use crate::args::{short_repr, type_name, wrong_type};
 use crate::errors::input_error;
@@ -159,267 +156,23 @@ pub fn to_text(py: Python<'_>, t: &toml::Table, file: &str) -> PyResult<String> 
     })
 }
 
-/// A step of a field path: a key of a table or an index of an array.
-#[derive(Clone, Debug, PartialEq)]
-enum Step {
-    Key(String),
-    Index(usize),
-}
-
-/// A field path as the user writes it: `line.conductors[0].section.supports[2].kind`.
-fn path_text(steps: &[Step]) -> String {
-    let mut s = String::new();
-    for step in steps {
-        match step {
-            Step::Key(k) if s.is_empty() => s.push_str(k),
-            Step::Key(k) => {
-                s.push('.');
-                s.push_str(k);
-            }
-            Step::Index(i) => s.push_str(&format!("[{i}]")),
-        }
-    }
-    if s.is_empty() { "(the top level)".into() } else { s }
-}
-
-/// The first error of reading the table `t` (a dict's, written as TOML text) as a `T`, as a problem at
-/// the dict's field path; `None` if it reads.
-///
-/// serde gives the span of the innermost value it knows: a value, a key, or a table's header for a
-/// missing field. An internally tagged table (an `events` entry, a support of `section.supports`) is read
-/// through a buffer, so an error inside it comes back at the span of its whole array: the element is then
-/// found by reading the document with that array cut to each element alone (the first that fails alike is
-/// serde's), and the field inside it by what the message names (a key, a literal, a length).
-fn located<T: DeserializeOwned>(t: &toml::Table) -> Option<Problem> {
-    let text = toml::to_string(t).ok()?;
-    let e = toml::from_str::<T>(&text).err()?;
-    let message = plain_types(e.message());
-    // No span, or an empty one (serde's position for the document itself: a missing top-level table).
-    let Some(at) = e.span().filter(|s| !s.is_empty()) else { return Some(top(message)) };
-    let tree = DeTable::parse(&text).ok()?;
-    let Some(found) = deepest(tree.get_ref(), &at) else { return Some(top(message)) };
-    let mut steps = found.steps.clone();
-    let mut value = found.value;
-    if let Some(array) = tables_array(tree.get_ref(), &found) {
-        if let Some(i) = culprit::<T>(t, &array, &message) {
-            steps = array;
-            steps.push(Step::Index(i));
-            value = lookup(tree.get_ref(), &steps)?;
-        } else {
-            steps = array;
-            value = lookup(tree.get_ref(), &steps)?;
-        }
-    }
-    Some(refine(&text, steps, value, &message))
-}
-
-/// A problem at the top level: a missing top-level table, or an error without a position.
-fn top(message: String) -> Problem {
-    match quoted(&message, "missing field `", '`').map(str::to_string) {
-        Some(name) => Problem { field: name, value: "(missing)".into(), allowed: message },
-        None => Problem { field: "(the top level)".into(), value: "the dict".into(), allowed: message },
-    }
-}
-
-/// A value whose key or value span holds the error's position.
-struct Found<'t, 'i> {
-    steps: Vec<Step>,
-    value: &'t Spanned<DeValue<'i>>,
-    /// the span that holds the position (the narrowest wins; then the deepest)
-    span: Range<usize>,
-}
-
-/// The narrowest (then deepest) value or key whose span holds the error's span `at` (none for an error of
-/// the whole document, a missing top-level table).
-fn deepest<'t, 'i>(tree: &'t DeTable<'i>, at: &Range<usize>) -> Option<Found<'t, 'i>> {
-    let mut best = None;
-    let mut steps = Vec::new();
-    for (k, v) in tree.iter() {
-        steps.push(Step::Key(k.get_ref().to_string()));
-        find(Some(k.span()), v, &mut steps, at, &mut best);
-        steps.pop();
-    }
-    best
-}
-
-fn find<'t, 'i>(
-    key: Option<Range<usize>>,
-    v: &'t Spanned<DeValue<'i>>,
-    steps: &mut Vec<Step>,
-    at: &Range<usize>,
-    best: &mut Option<Found<'t, 'i>>,
-) {
-    for span in key.into_iter().chain([v.span()]) {
-        if span.start <= at.start && at.end <= span.end {
-            let better = best.as_ref().is_none_or(|b| {
-                span.len() < b.span.len() || (span.len() == b.span.len() && steps.len() > b.steps.len())
-            });
-            if better {
-                *best = Some(Found { steps: steps.clone(), value: v, span: span.clone() });
-            }
-        }
-    }
-    match v.get_ref() {
-        DeValue::Table(t) => {
-            for (k, x) in t.iter() {
-                steps.push(Step::Key(k.get_ref().to_string()));
-                find(Some(k.span()), x, steps, at, best);
-                steps.pop();
-            }
-        }
-        DeValue::Array(a) => {
-            for (i, x) in a.iter().enumerate() {
-                steps.push(Step::Index(i));
-                find(None, x, steps, at, best);
-                steps.pop();
-            }
-        }
-        _ => {}
-    }
-}
-
-/// The value at `steps` in the tree.
-fn lookup<'t, 'i>(tree: &'t DeTable<'i>, steps: &[Step]) -> Option<&'t Spanned<DeValue<'i>>> {
-    let (Step::Key(first), rest) = steps.split_first()? else { return None };
-    let mut v = tree.iter().find(|(k, _)| k.get_ref() == first).map(|(_, v)| v)?;
-    for step in rest {
-        v = match (step, v.get_ref()) {
-            (Step::Key(key), DeValue::Table(t)) => t.iter().find(|(k, _)| k.get_ref() == key).map(|(_, v)| v)?,
-            (Step::Index(i), DeValue::Array(a)) => a.get(*i)?,
-            _ => return None,
-        };
-    }
-    Some(v)
-}
-
-/// The path of the array of tables the error lies in, when serde could only point at the whole array:
-/// the value found is that array, or its first element with the same span (an array of tables written
-/// as `[[...]]` headers spans its first header).
-fn tables_array(tree: &DeTable<'_>, found: &Found<'_, '_>) -> Option<Vec<Step>> {
-    let of_tables = |v: &Spanned<DeValue<'_>>| -> bool {
-        matches!(v.get_ref(), DeValue::Array(a) if a.iter().next().is_some() && a.iter().all(|x| matches!(x.get_ref(), DeValue::Table(_))))
+/// Make a relative `thermal.conductor_catalog` of a scenario dict's table absolute: joined to `base_dir`
+/// (the argument, a path) or, without it, to the current working directory. A dict has no file whose
+/// folder a relative path could be taken from (a file's is resolved relative to its folder,
+/// `ohl::scenario::thermal_conductor`). A value that is not text is left for the library to refuse.
+pub fn rebase_catalog(t: &mut toml::Table, base_dir: Option<&Bound<'_, PyAny>>) -> PyResult<()> {
+    let base = match base_dir {
+        Some(b) if !b.is_none() => Some(crate::args::path("base_dir", b)?),
+        _ => None,
     };
-    if of_tables(found.value) {
-        return Some(found.steps.clone());
-    }
-    let (last, parent) = found.steps.split_last()?;
-    if *last != Step::Index(0) {
-        return None;
-    }
-    let array = lookup(tree, parent)?;
-    (of_tables(array) && array.span() == found.span).then(|| parent.to_vec())
-}
-
-/// Which element of the array at `array` in `t` gives the error `message`: the first whose document,
-/// with the array cut to that element alone, fails with the same message inside the array.
-fn culprit<T: DeserializeOwned>(t: &toml::Table, array: &[Step], message: &str) -> Option<usize> {
-    let n = match get(t, array)? {
-        toml::Value::Array(a) => a.len(),
-        _ => return None,
+    let Some(toml::Value::Table(thermal)) = t.get_mut("thermal") else { return Ok(()) };
+    let Some(toml::Value::String(rel)) = thermal.get_mut("conductor_catalog") else { return Ok(()) };
+    let base = match base {
+        Some(b) => b,
+        None => std::env::current_dir()?,
     };
-    let prefix = path_text(array);
-    (0..n).find(|&i| {
-        let mut one = t.clone();
-        let Some(toml::Value::Array(a)) = get_mut(&mut one, array) else { return false };
-        let element = a[i].clone();
-        *a = vec![element];
-        let Ok(text) = toml::to_string(&one) else { return false };
-        let Err(e) = toml::from_str::<T>(&text) else { return false };
-        if plain_types(e.message()) != message {
-            return false;
-        }
-        let (Some(at), Ok(tree)) = (e.span(), DeTable::parse(&text)) else { return false };
-        deepest(tree.get_ref(), &at).is_some_and(|f| path_text(&f.steps).starts_with(&prefix))
-    })
-}
-
-fn get<'t>(t: &'t toml::Table, steps: &[Step]) -> Option<&'t toml::Value> {
-    let (Step::Key(first), rest) = steps.split_first()? else { return None };
-    let mut v = t.get(first)?;
-    for step in rest {
-        v = match (step, v) {
-            (Step::Key(k), toml::Value::Table(t)) => t.get(k)?,
-            (Step::Index(i), toml::Value::Array(a)) => a.get(*i)?,
-            _ => return None,
-        };
-    }
-    Some(v)
-}
-
-fn get_mut<'t>(t: &'t mut toml::Table, steps: &[Step]) -> Option<&'t mut toml::Value> {
-    let (Step::Key(first), rest) = steps.split_first()? else { return None };
-    let mut v = t.get_mut(first)?;
-    for step in rest {
-        v = match (step, v) {
-            (Step::Key(k), toml::Value::Table(t)) => t.get_mut(k)?,
-            (Step::Index(i), toml::Value::Array(a)) => a.get_mut(*i)?,
-            _ => return None,
-        };
-    }
-    Some(v)
-}
-
-/// The problem at `steps`. serde reports a missing field at its table, and every error inside an
-/// internally tagged table at the table: the field the message names is looked up among its keys.
-fn refine(text: &str, steps: Vec<Step>, value: &Spanned<DeValue<'_>>, message: &str) -> Problem {
-    let path = path_text(&steps);
-    let DeValue::Table(t) = value.get_ref() else {
-        return Problem { field: path, value: source(text, value.span()), allowed: message.into() };
-    };
-    if let Some(name) = quoted(message, "missing field `", '`') {
-        return Problem { field: format!("{path}.{name}"), value: "(missing)".into(), allowed: message.into() };
-    }
-    let number = |s: &str| s.trim().parse::<f64>().ok();
-    let wanted = |k: &str, x: &Spanned<DeValue<'_>>| -> bool {
-        let literal = |open: &str| quoted(message, open, '`');
-        if let Some(name) = literal("unknown field `") {
-            return k == name;
-        }
-        if let Some(v) = literal("unknown variant `") {
-            return x.get_ref().as_str() == Some(v);
-        }
-        if let Some(v) = quoted(message, "invalid type: string \"", '"') {
-            return x.get_ref().as_str() == Some(v);
-        }
-        if let Some(v) = literal("invalid type: floating point `").or(literal("invalid type: integer `")) {
-            let is_number = matches!(x.get_ref(), DeValue::Float(_) | DeValue::Integer(_));
-            return is_number && number(v).is_some() && number(&source(text, x.span())) == number(v);
-        }
-        if let Some(v) = literal("invalid type: boolean `") {
-            return matches!(x.get_ref(), DeValue::Boolean(b) if b.to_string() == v);
-        }
-        if message.starts_with("invalid type: sequence") {
-            return matches!(x.get_ref(), DeValue::Array(_));
-        }
-        if message.starts_with("invalid type: map") {
-            return matches!(x.get_ref(), DeValue::Table(_));
-        }
-        if let Some(n) = message.strip_prefix("invalid length ").and_then(|r| r.split(',').next()) {
-            return matches!(x.get_ref(), DeValue::Array(a) if a.len().to_string() == n.trim());
-        }
-        false
-    };
-    let mut hits = t.iter().filter(|(k, x)| wanted(k.get_ref(), x));
-    if let (Some((k, x)), None) = (hits.next(), hits.next()) {
-        return Problem {
-            field: format!("{path}.{}", k.get_ref()),
-            value: source(text, x.span()),
-            allowed: message.into(),
-        };
-    }
-    Problem { field: path, value: "a table".into(), allowed: message.into() }
-}
-
-/// The text of `message` after `open`, up to `close`.
-fn quoted<'m>(message: &'m str, open: &str, close: char) -> Option<&'m str> {
-    let rest = message.strip_prefix(open)?;
-    rest.find(close).map(|end| &rest[..end])
-}
-
-/// A value as the TOML text writes it, cut to 60 characters.
-fn source(text: &str, span: Range<usize>) -> String {
-    let s = text.get(span).unwrap_or("?").trim();
-    if s.chars().count() > 60 { format!("{}...", s.chars().take(57).collect::<String>()) } else { s.to_string() }
+    *rel = base.join(&*rel).to_string_lossy().into_owned();
+    Ok(())
 }
 
 /// The first error of a scenario dict's table read as a single-conductor scenario, at its field path,
@@ -457,10 +210,8 @@ pub fn check_line(t: &toml::Table, file: &str) -> Result<(), InputError> {
     check::<ohl::scenario::line::LineScenario>(&resolved, file)
 }
 
-/// The first error of reading the table as a `T`, at its field path.
+/// The first error of reading the table as a `T`, at its field path (the library's
+/// [`ohl::scenario::locate::from_table_alone`]).
 pub fn check<T: DeserializeOwned>(t: &toml::Table, file: &str) -> Result<(), InputError> {
-    match located::<T>(t) {
-        Some(p) => Err(InputError::Invalid { file: file.into(), problems: vec![p] }),
-        None => Ok(()),
-    }
+    from_table_alone::<T>(t.clone(), file).map(|_| ())
 }

@@ -65,12 +65,21 @@ impl Scenario {
     /// list of dicts for `events`). Python `int` is a TOML integer and `float` a TOML float, so a field
     /// that takes a whole number (`segments`) needs an `int`; a number field takes either. The dict is
     /// written as TOML text (`Scenario.toml`) and read like a file; `name` stands for the file name in
-    /// messages, and every error names the dict's field path (`dict_input`).
+    /// messages, and every error names the dict's field path (`dict_input`). A relative
+    /// `thermal.conductor_catalog` (a user catalogue) is taken relative to `base_dir` (a path; default the
+    /// current working directory), as a file's is relative to the file's folder; the text holds it made
+    /// absolute.
     #[staticmethod]
-    #[pyo3(signature = (d, name = None))]
-    fn from_dict(py: Python<'_>, d: &Bound<'_, PyAny>, name: Option<&Bound<'_, PyAny>>) -> PyResult<Scenario> {
+    #[pyo3(signature = (d, name = None, base_dir = None))]
+    fn from_dict(
+        py: Python<'_>,
+        d: &Bound<'_, PyAny>,
+        name: Option<&Bound<'_, PyAny>>,
+        base_dir: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<Scenario> {
         let name = file_name(name, "<dict>")?;
-        let t = dict_input::table_of("d", d, &name, "")?;
+        let mut t = dict_input::table_of("d", d, &name, "")?;
+        dict_input::rebase_catalog(&mut t, base_dir)?;
         let text = dict_input::to_text(py, &t, &name)?;
         dict_input::check_scenario(&t, &name).map_err(|e| input_error(py, e))?;
         build(py, text, name)

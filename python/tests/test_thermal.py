@@ -3,6 +3,7 @@ and bit for bit against `ohl thermal` on the same inputs."""
 
 from __future__ import annotations
 
+import sys
 from pathlib import Path
 
 import numpy as np
@@ -187,3 +188,33 @@ def test_thermal_argument_errors() -> None:
     # The sun alone heats a conductor in hot still air above 41 C: no ampacity.
     with pytest.raises(ohl.ThermalError, match="no ampacity"):
         ohl.ampacity(314.0, conductor=DRAKE, weather={**ANNEX_B, "wind_speed_m_per_s": 0.0})
+
+
+@pytest.mark.skipif(sys.version_info < (3, 11), reason="tomllib (reading TOML into a dict) needs Python 3.11")
+def test_a_dict_finds_its_user_catalogue_in_base_dir(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """A dict's relative `thermal.conductor_catalog` is taken relative to `base_dir` (default: the current
+    working directory). The user catalogue holds the built-in Drake entry under another name, so the
+    scenario must plan exactly as with the built-in Drake (an independent expectation: the same numbers)."""
+    import tomllib
+
+    text = (REPO / "data/conductors.toml").read_text(encoding="utf-8")
+    drake = text[text.index("[[conductor]]\nname = \"ACSR Drake\"") :]
+    drake = drake[: drake.index("[[conductor]]", 1)]
+    drake = drake.replace('name = "ACSR Drake"', 'name = "My Drake"').replace('"drake", ', "")
+    (tmp_path / "cat").mkdir()
+    (tmp_path / "cat" / "mine.toml").write_text(drake, encoding="utf-8")
+    base = tomllib.loads((REPO / "examples/thermal/drake_span_rating.toml").read_text(encoding="utf-8"))
+    reference = ohl.from_dict(base)
+    d = dict(base, thermal=dict(base["thermal"], conductor="My Drake", conductor_catalog="cat/mine.toml"))
+    mine = ohl.from_dict(d, base_dir=tmp_path)
+    assert f'conductor_catalog = "{tmp_path / "cat" / "mine.toml"}"' in mine.toml
+    assert mine.initial_equilibrium == reference.initial_equilibrium
+    # The default is the current working directory.
+    monkeypatch.chdir(tmp_path)
+    assert ohl.Scenario.from_dict(d).initial_equilibrium == reference.initial_equilibrium
+    monkeypatch.chdir(tmp_path / "cat")
+    with pytest.raises(ohl.ScenarioError, match="readable conductor catalogue") as e:
+        ohl.from_dict(d)
+    assert e.value.field == "thermal.conductor_catalog"
+    with pytest.raises(TypeError, match=r"^argument `base_dir` must be a str or os.PathLike \(a path\), not int$"):
+        ohl.from_dict(d, base_dir=3)

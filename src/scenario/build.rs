@@ -82,6 +82,9 @@ pub struct Plan {
     pub spans: Vec<(usize, usize)>,
     /// the conductor's temperature history of a `[thermal]` table, played onto the wire during the run
     pub thermal: Option<super::thermal::ThermalHistory>,
+    /// the `[[events]]` index of each `heat_conduction` event, in the order of `events` (by time, then
+    /// the file's order), to name the event in messages
+    pub heat_conduction_events: Vec<usize>,
 }
 
 impl Plan {
@@ -347,6 +350,13 @@ pub fn build(s: &Scenario) -> Result<Plan, Vec<Problem>> {
     let (a, b) = (wire.position(0), wire.position(n));
     let mut events: Vec<Event> = s.events.iter().flat_map(|e| events_of(e, n, &spans, &wire, &support_node)).collect();
     events.sort_by(|p, q| p.time_s.total_cmp(&q.time_s));
+    // The same stable sort keeps the heat_conduction events in the order `events` has them.
+    let mut heat_conduction: Vec<(f64, usize)> = (s.events.iter().enumerate())
+        .filter(|(_, e)| matches!(e, EventSpec::HeatConduction { .. }))
+        .map(|(k, e)| (e.time_s(), k))
+        .collect();
+    heat_conduction.sort_by(|p, q| p.0.total_cmp(&q.0));
+    let heat_conduction_events = heat_conduction.into_iter().map(|(_, k)| k).collect();
     // A section's spans each get a mid-span probe `span{k}_mid`, measured from the span's own chord.
     let mut probes: Vec<(String, ProbeAt)> = Vec::new();
     if d.section.is_some() {
@@ -423,6 +433,7 @@ pub fn build(s: &Scenario) -> Result<Plan, Vec<Problem>> {
         warnings,
         spans: if d.section.is_some() { spans.iter().map(|&(f, n)| (f, f + n)).collect() } else { Vec::new() },
         thermal,
+        heat_conduction_events,
     })
 }
 

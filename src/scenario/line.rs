@@ -340,10 +340,7 @@ pub struct LinePlan {
 /// Parse a line scenario from TOML text (`file` names it in messages). Each conductor's `conductor`
 /// table may name a catalogue conductor, as `[conductor]` of a single-conductor scenario.
 pub fn parse(text: &str, file: &str) -> Result<LineScenario, InputError> {
-    let Ok(mut doc) = text.parse::<toml::Table>() else {
-        return super::from_toml(text, file);
-    };
-    let mut resolved = false;
+    let mut doc = super::locate::parse_table(text, file)?;
     if let Some(toml::Value::Table(line)) = doc.get_mut("line")
         && let Some(toml::Value::Array(cs)) = line.get_mut("conductors")
     {
@@ -351,16 +348,21 @@ pub fn parse(text: &str, file: &str) -> Result<LineScenario, InputError> {
             if let toml::Value::Table(c) = c
                 && let Some(toml::Value::Table(cd)) = c.get_mut("conductor")
             {
-                resolved |= super::fill_from_catalog(cd, file, &format!("line.conductors[{k}].conductor"), None)?;
+                super::fill_from_catalog(cd, file, &format!("line.conductors[{k}].conductor"), None)?;
             }
         }
     }
-    if resolved { super::locate::from_table(doc, text, file) } else { super::from_toml(text, file) }
+    super::locate::from_table(doc, text, file)
 }
 
 /// Whether a TOML text is a line scenario (it has a `[line]` table).
 pub fn is_line(text: &str) -> bool {
-    text.parse::<toml::Table>().is_ok_and(|t| t.contains_key("line"))
+    text.parse::<toml::Table>().is_ok_and(|t| is_line_table(&t))
+}
+
+/// Whether a parsed TOML document is a line scenario (it has a `line` key).
+pub fn is_line_table(t: &toml::Table) -> bool {
+    t.contains_key("line")
 }
 
 /// Check every field and build the line; every problem is reported with its field.

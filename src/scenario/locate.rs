@@ -17,11 +17,15 @@ use super::InputError;
 /// Read `text` into `T`: a syntax error keeps the parser's line and column; an error of a value names its
 /// field path and points at its line ([module doc](self)).
 pub(crate) fn from_text<T: DeserializeOwned>(text: &str, file: &str) -> Result<T, InputError> {
-    let table: toml::Table = text.parse().map_err(|e: toml::de::Error| InputError::Parse {
+    from_table(parse_table(text, file)?, text, file)
+}
+
+/// The TOML syntax of `text` into a table, once: a syntax error keeps the parser's line and column.
+pub(crate) fn parse_table(text: &str, file: &str) -> Result<toml::Table, InputError> {
+    text.parse().map_err(|e: toml::de::Error| InputError::Parse {
         file: file.to_string(),
         message: super::plain_types(&e.to_string()),
-    })?;
-    from_table(table, text, file)
+    })
 }
 
 /// Read an already parsed document (of `text`, perhaps completed: catalogue data filled in) into `T`,
@@ -40,6 +44,66 @@ pub(crate) fn from_table<T: DeserializeOwned>(table: toml::Table, text: &str, fi
         }
     }
     Err(InputError::Parse { file: file.to_string(), message: super::plain_types(&describe(text, &path, &message)) })
+}
+
+/// Read a document that has no source text (a Python dict made a table) into `T`. An error is a
+/// [`Problem`](super::Problem) at the field's path as the user wrote it (`events[1].at_fraction`,
+/// `(the top level)` for the document itself), with the value as TOML writes it (cut to 60 characters,
+/// `a table` for a table) and the parser's message in plain terms; a missing field is `(missing)`, and every
+/// field missing from the same table is a problem of its own.
+pub fn from_table_alone<T: DeserializeOwned>(table: toml::Table, file: &str) -> Result<T, InputError> {
+    let (mut path, error) = match read::<T>(table.clone()) {
+        Ok(v) => return Ok(v),
+        Err(e) => e,
+    };
+    let message = error.message();
+    let problem = |field: &[Step], value: String, allowed: &str| super::Problem {
+        field: if field.is_empty() { "(the top level)".into() } else { field_path(field) },
+        value,
+        allowed: super::plain_types(allowed),
+    };
+    if let Some(first) = missing_field(message) {
+        let problems = all_missing::<T>(table, &path, first)
+            .into_iter()
+            .map(|f| {
+                let at: Vec<Step> = path.iter().cloned().chain([Step::Key(f.clone())]).collect();
+                problem(&at, "(missing)".into(), &format!("missing field `{f}`"))
+            })
+            .collect();
+        return Err(InputError::Invalid { file: file.to_string(), problems });
+    }
+    let root = toml::Value::Table(table);
+    let mut node = &root;
+    for (k, step) in path.iter().enumerate() {
+        let next = match (step, node) {
+            (Step::Key(key), toml::Value::Table(t)) => t.get(key),
+            (Step::Index(i), toml::Value::Array(a)) => a.get(*i),
+            _ => None,
+        };
+        match next {
+            Some(n) => node = n,
+            None => {
+                path.truncate(k);
+                break;
+            }
+        }
+    }
+    // A table read through a buffer: find the offending entry among its own.
+    if let (toml::Value::Table(t), Some(wanted)) = (node, Wanted::from_message(message)) {
+        let hits: Vec<_> = t.iter().filter(|(key, value)| wanted.matches_value(key, value)).collect();
+        if let [(key, value)] = hits.as_slice() {
+            path.push(Step::Key(key.to_string()));
+            node = value;
+        }
+    }
+    let value = match node {
+        toml::Value::Table(_) => "a table".to_string(),
+        v => {
+            let s = v.to_string();
+            if s.chars().count() > 60 { format!("{}...", s.chars().take(57).collect::<String>()) } else { s }
+        }
+    };
+    Err(InputError::Invalid { file: file.to_string(), problems: vec![problem(&path, value, message)] })
 }
 
 /// A path segment of a value in the document.
@@ -239,6 +303,19 @@ impl Wanted {
             return Some(Wanted::Literal(between(rest, '`', '`')?));
         }
         None
+    }
+
+    /// Whether the entry `key = value` of a document without text is the one wanted (the value's
+    /// literal as TOML writes it).
+    fn matches_value(&self, key: &str, value: &toml::Value) -> bool {
+        match self {
+            Wanted::Key(k) => key == k,
+            Wanted::Literal(l) => {
+                let literal = value.to_string();
+                !value.is_table() && (literal == *l || parses_equal(&literal, l))
+            }
+            Wanted::Length(n) => matches!(value, toml::Value::Array(a) if a.len() == *n),
+        }
     }
 
     /// Whether the entry `key = value` (`literal` its text) is the one wanted.

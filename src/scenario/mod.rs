@@ -8,7 +8,7 @@
 pub mod build;
 pub mod events;
 pub mod line;
-mod locate;
+pub mod locate;
 pub mod rating;
 pub mod schema;
 pub mod section;
@@ -76,7 +76,8 @@ impl fmt::Display for Invalid<'_> {
 /// does not give from there: `linear_density_kg_per_m`, `diameter_m`, `rated_tensile_strength_n`,
 /// `thermal_expansion_per_k` and `axial_stiffness_n` (unless `youngs_modulus_pa` is given).
 pub fn parse(text: &str, file: &str) -> Result<Scenario, InputError> {
-    if line::is_line(text) {
+    let mut doc = locate::parse_table(text, file)?;
+    if line::is_line_table(&doc) {
         return Err(InputError::Parse {
             file: file.to_string(),
             message: "a line scenario ([line]: several conductors) is not a single-conductor scenario: run it with \
@@ -85,7 +86,7 @@ pub fn parse(text: &str, file: &str) -> Result<Scenario, InputError> {
                 .into(),
         });
     }
-    if thermal::is_thermal_case(text) {
+    if thermal::is_thermal_table(&doc) {
         return Err(InputError::Parse {
             file: file.to_string(),
             message: "a thermal case (a top-level [weather] and `conductor = \"NAME\"`), not a wire \
@@ -93,28 +94,24 @@ pub fn parse(text: &str, file: &str) -> Result<Scenario, InputError> {
                 .into(),
         });
     }
-    let scenario: Scenario = match catalog_defaults(text, file)? {
-        Some(resolved) => locate::from_table(resolved, text, file)?,
-        None => locate::from_text(text, file)?,
-    };
+    catalog_defaults(&mut doc, file)?;
+    let scenario: Scenario = locate::from_table(doc, text, file)?;
     let problems = validate::validate(&scenario);
     if problems.is_empty() { Ok(scenario) } else { Err(InputError::Invalid { file: file.to_string(), problems }) }
 }
 
-/// The document with the `[conductor]` fields of its catalogue conductor filled in and the `[thermal]`
+/// Fill in the document's `[conductor]` fields from its catalogue conductor and replace the `[thermal]`
 /// conductor of a user catalogue (`thermal.conductor_catalog`, [`thermal_conductor::resolve_user_catalog`])
-/// replaced by its properties, or `None` if it has neither (or does not parse: the caller reports that with
-/// line and column).
-fn catalog_defaults(text: &str, file: &str) -> Result<Option<toml::Table>, InputError> {
-    let Ok(mut doc) = text.parse::<toml::Table>() else { return Ok(None) };
-    let (user, mut changed) = match doc.get_mut("thermal") {
+/// by its properties; a document with neither is left as it is.
+fn catalog_defaults(doc: &mut toml::Table, file: &str) -> Result<(), InputError> {
+    let user = match doc.get_mut("thermal") {
         Some(toml::Value::Table(t)) => thermal_conductor::resolve_user_catalog(t, "thermal.", file)?,
-        _ => (None, false),
+        _ => None,
     };
     if let Some(toml::Value::Table(c)) = doc.get_mut("conductor") {
-        changed |= fill_from_catalog(c, file, "conductor", user.as_deref())?;
+        fill_from_catalog(c, file, "conductor", user.as_deref())?;
     }
-    Ok(changed.then_some(doc))
+    Ok(())
 }
 
 /// Fill the fields a conductor table `c` (at the dotted path `field`) does not give from the catalogue

@@ -196,14 +196,29 @@ pub fn rate(s: &Scenario, file: &str) -> Result<Rating, RatingError> {
         }
         Some(lo)
     };
-    let ampacity = |temp: f64| steady::ampacity(&model, temp).map(|a| a.current_a).ok();
-    let clearance_ampacity_a = limit_temperature_k.and_then(ampacity);
-    let temperature_ampacity_a = r.max_temperature_k.and_then(ampacity);
+    // Each limit's ampacity, or why it has none (kept for the message if neither has one).
+    let mut reasons = Vec::new();
+    let mut ampacity = |limit: String, temp: Option<f64>| match temp.map(|t| (t, steady::ampacity(&model, t))) {
+        Some((_, Ok(a))) => Some(a.current_a),
+        Some((t, Err(e))) => {
+            reasons.push(format!("{limit}, at {t:.3} K ({:.2} C): {e}", t - 273.15));
+            None
+        }
+        None => None,
+    };
+    let clearance_ampacity_a = ampacity(format!("the {quantity} limit {limit} m"), limit_temperature_k);
+    let temperature_ampacity_a = ampacity("rating.max_temperature_k".into(), r.max_temperature_k);
+    if limit_temperature_k.is_none() {
+        reasons.insert(0, format!("the {quantity} stays within its limit {limit} m up to {top:.3} K"));
+    }
     let (rating_a, governing) = match (clearance_ampacity_a, temperature_ampacity_a) {
         (Some(a), Some(b)) if b < a => (b, r.max_temperature_k.expect("given")),
         (Some(a), _) => (a, limit_temperature_k.expect("found")),
         (None, Some(b)) => (b, r.max_temperature_k.expect("given")),
-        (None, None) => return Err(RatingError::Failed("no ampacity at the limiting temperature".into())),
+        (None, None) => {
+            let why = reasons.join("; ");
+            return Err(RatingError::Failed(format!("no ampacity at the limiting temperature: {why}")));
+        }
     };
     let (m_gov, at_rating) = margin(governing)?;
     debug_assert!(m_gov >= -1e-6);

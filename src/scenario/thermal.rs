@@ -296,10 +296,7 @@ pub fn conductor(c: &mut Check, field: &str, spec: &ConductorSpec) -> Option<The
                 None
             }
         },
-        ConductorSpec::Properties(p) => {
-            let t = p.thermal();
-            check_thermal_conductor(c, field, &t).then_some(t)
-        }
+        ConductorSpec::Properties(p) => check_thermal_conductor(c, field, p).then(|| (**p).clone()),
     }
 }
 
@@ -587,16 +584,18 @@ pub struct ThermalCase {
 /// Whether TOML text is a thermal case (a file for `ohl thermal`): a top-level `weather` table, or a
 /// `conductor` given as a name rather than a `[conductor]` table. Text that does not parse is not.
 pub fn is_thermal_case(text: &str) -> bool {
-    text.parse::<toml::Table>().is_ok_and(|t| {
-        t.get("weather").is_some_and(toml::Value::is_table) || t.get("conductor").is_some_and(toml::Value::is_str)
-    })
+    text.parse::<toml::Table>().is_ok_and(|t| is_thermal_table(&t))
 }
 
-/// What a file that is not a thermal case is, and the command that reads it; `None` for a thermal case
-/// or text that does not parse.
-fn other_kind(text: &str) -> Option<&'static str> {
-    let t = text.parse::<toml::Table>().ok()?;
-    if is_thermal_case(text) {
+/// Whether a parsed TOML document is a thermal case ([`is_thermal_case`]).
+pub fn is_thermal_table(t: &toml::Table) -> bool {
+    t.get("weather").is_some_and(toml::Value::is_table) || t.get("conductor").is_some_and(toml::Value::is_str)
+}
+
+/// What a document that is not a thermal case is, and the command that reads it; `None` for a thermal
+/// case.
+fn other_kind(t: &toml::Table) -> Option<&'static str> {
+    if is_thermal_table(t) {
         None
     } else if t.contains_key("line") {
         Some("a line scenario ([line]), not a thermal case: run it with `ohl run`")
@@ -613,13 +612,12 @@ fn other_kind(text: &str) -> Option<&'static str> {
 
 /// Parse and validate a thermal case; `file` names it in messages.
 pub fn parse_case(text: &str, file: &str) -> Result<ThermalCase, super::InputError> {
-    if let Some(message) = other_kind(text) {
+    let mut doc = super::locate::parse_table(text, file)?;
+    if let Some(message) = other_kind(&doc) {
         return Err(super::InputError::Parse { file: file.to_string(), message: message.to_string() });
     }
-    let Ok(mut doc) = text.parse::<toml::Table>() else { return super::from_toml(text, file) };
-    let (_, resolved) = super::thermal_conductor::resolve_user_catalog(&mut doc, "", file)?;
-    let case: ThermalCase =
-        if resolved { super::locate::from_table(doc, text, file)? } else { super::from_toml(text, file)? };
+    super::thermal_conductor::resolve_user_catalog(&mut doc, "", file)?;
+    let case: ThermalCase = super::locate::from_table(doc, text, file)?;
     let mut c = Check(Vec::new());
     let k = conductor(&mut c, "conductor", &case.conductor);
     check_inclination(

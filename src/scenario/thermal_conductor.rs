@@ -47,16 +47,15 @@ use crate::thermal::catalog::{self, CatalogConductor, CatalogError};
 use crate::thermal::cigre601::convection::{is_smooth, roughness};
 use crate::thermal::{Standard, ThermalConductor};
 
-/// The name given to a conductor given by its properties without a `name` [-].
-pub const UNNAMED: &str = "conductor given by its properties";
+pub use crate::thermal::conductor::UNNAMED;
 
 /// The conductor of a thermal table: a catalogue name (a string) or its properties (a table).
 #[derive(Clone, Debug, PartialEq)]
 pub enum ConductorSpec {
     /// a name or alias of the built-in catalogue (or of the user catalogue, resolved at parse)
     Name(String),
-    /// the conductor's properties
-    Properties(Box<ConductorProperties>),
+    /// the conductor's properties (the table has the fields of [`ThermalConductor`], with its defaults)
+    Properties(Box<ThermalConductor>),
 }
 
 impl<'de> Deserialize<'de> for ConductorSpec {
@@ -71,7 +70,7 @@ impl<'de> Deserialize<'de> for ConductorSpec {
                 Ok(ConductorSpec::Name(v.to_string()))
             }
             fn visit_map<A: MapAccess<'de>>(self, map: A) -> Result<ConductorSpec, A::Error> {
-                let p = ConductorProperties::deserialize(de::value::MapAccessDeserializer::new(map))?;
+                let p = ThermalConductor::deserialize(de::value::MapAccessDeserializer::new(map))?;
                 Ok(ConductorSpec::Properties(Box::new(p)))
             }
         }
@@ -84,7 +83,7 @@ impl ConductorSpec {
     pub fn thermal(&self) -> Result<ThermalConductor, CatalogError> {
         match self {
             ConductorSpec::Name(n) => Ok(catalog::find(n)?.thermal()),
-            ConductorSpec::Properties(p) => Ok(p.thermal()),
+            ConductorSpec::Properties(p) => Ok((**p).clone()),
         }
     }
 
@@ -92,7 +91,7 @@ impl ConductorSpec {
     pub fn label(&self) -> String {
         match self {
             ConductorSpec::Name(n) => n.clone(),
-            ConductorSpec::Properties(p) => p.name.clone().unwrap_or_else(|| UNNAMED.into()),
+            ConductorSpec::Properties(p) => p.name.clone(),
         }
     }
 
@@ -106,116 +105,10 @@ impl ConductorSpec {
     }
 }
 
-fn zero() -> f64 {
-    0.0
-}
-
-fn one() -> f64 {
-    1.0
-}
-
-/// A conductor given by its properties (SI units, temperatures in kelvin; the field names are those of the
-/// catalogue, `data/conductors.toml`).
-#[derive(Clone, Debug, PartialEq, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct ConductorProperties {
-    /// name (free text) \[-\]; default "conductor given by its properties"
-    #[serde(default)]
-    pub name: Option<String>,
-    /// outside diameter `D` \[m\], in [1e-3, 0.2]
-    pub diameter_m: f64,
-    /// diameter of the steel core `D_c` \[m\], in [0, D); default 0 (no core; not used by the heat balance)
-    #[serde(default = "zero")]
-    pub core_diameter_m: f64,
-    /// diameter of one wire of the outer layer `d` \[m\], in [0, D/3] (0: a smooth surface; TB 601 roughness
-    /// `R_s = d / (2 (D - d))`)
-    pub outer_strand_diameter_m: f64,
-    /// AC resistance per unit length at `temperature_low_k` \[ohm/m\], in [1e-7, 0.1]
-    pub resistance_low_ohm_per_m: f64,
-    /// the low reference temperature `T_low` \[K\], in [200, 500]
-    pub temperature_low_k: f64,
-    /// AC resistance per unit length at `temperature_high_k` \[ohm/m\], in [R_low, 0.1]
-    pub resistance_high_ohm_per_m: f64,
-    /// the high reference temperature `T_high` \[K\], in (T_low, 600]
-    pub temperature_high_k: f64,
-    /// magnetic-core factor on the resistance `k_m` \[-\], in [1, 1.5]; default 1 (CIGRE TB 601 section 2.2
-    /// gives about 1.0-1.06 for ACSR)
-    #[serde(default = "one")]
-    pub magnetic_core_factor: f64,
-    /// surface emissivity `epsilon` \[-\], in [0, 1]
-    pub emissivity: f64,
-    /// solar absorptivity of the surface `alpha_s` \[-\], in [0, 1]
-    pub absorptivity: f64,
-    /// mass of the outer (aluminium) layers per unit length `m_a` \[kg/m\], in [1e-3, 100]
-    pub outer_mass_kg_per_m: f64,
-    /// specific heat of the outer layers at 20 C `c_a` \[J/(kg K)\], in [100, 5000] (aluminium 897)
-    pub outer_specific_heat_j_per_kg_k: f64,
-    /// temperature coefficient of `c_a`, `beta_a` \[1/K\], in [0, 1e-3]; default 0 (a constant specific heat, as
-    /// IEEE Std 738 takes it; CIGRE TB 601 section 4.3 gives 3.8e-4 for aluminium)
-    #[serde(default = "zero")]
-    pub outer_specific_heat_coefficient_per_k: f64,
-    /// mass of the core per unit length `m_s` \[kg/m\], in [0, 100]; default 0 (no core)
-    #[serde(default = "zero")]
-    pub core_mass_kg_per_m: f64,
-    /// specific heat of the core at 20 C `c_s` \[J/(kg K)\], in [100, 5000] when there is a core (steel 481);
-    /// default 0
-    #[serde(default = "zero")]
-    pub core_specific_heat_j_per_kg_k: f64,
-    /// temperature coefficient of `c_s`, `beta_s` \[1/K\], in [0, 1e-3]; default 0 (TB 601: steel 1.0e-4)
-    #[serde(default = "zero")]
-    pub core_specific_heat_coefficient_per_k: f64,
-}
-
-impl ConductorProperties {
-    /// The thermal data.
-    pub fn thermal(&self) -> ThermalConductor {
-        ThermalConductor {
-            name: self.name.clone().unwrap_or_else(|| UNNAMED.into()),
-            diameter_m: self.diameter_m,
-            core_diameter_m: self.core_diameter_m,
-            outer_strand_diameter_m: self.outer_strand_diameter_m,
-            resistance_low_ohm_per_m: self.resistance_low_ohm_per_m,
-            temperature_low_k: self.temperature_low_k,
-            resistance_high_ohm_per_m: self.resistance_high_ohm_per_m,
-            temperature_high_k: self.temperature_high_k,
-            magnetic_core_factor: self.magnetic_core_factor,
-            emissivity: self.emissivity,
-            absorptivity: self.absorptivity,
-            outer_mass_kg_per_m: self.outer_mass_kg_per_m,
-            outer_specific_heat_j_per_kg_k: self.outer_specific_heat_j_per_kg_k,
-            core_mass_kg_per_m: self.core_mass_kg_per_m,
-            core_specific_heat_j_per_kg_k: self.core_specific_heat_j_per_kg_k,
-            outer_specific_heat_coefficient_per_k: self.outer_specific_heat_coefficient_per_k,
-            core_specific_heat_coefficient_per_k: self.core_specific_heat_coefficient_per_k,
-        }
-    }
-}
-
-/// The properties table of a catalogue entry's thermal data (what a user catalogue's name is replaced by).
-fn properties_table(t: &ThermalConductor) -> toml::Table {
-    let mut m = toml::Table::new();
-    m.insert("name".into(), t.name.clone().into());
-    for (k, v) in [
-        ("diameter_m", t.diameter_m),
-        ("core_diameter_m", t.core_diameter_m),
-        ("outer_strand_diameter_m", t.outer_strand_diameter_m),
-        ("resistance_low_ohm_per_m", t.resistance_low_ohm_per_m),
-        ("temperature_low_k", t.temperature_low_k),
-        ("resistance_high_ohm_per_m", t.resistance_high_ohm_per_m),
-        ("temperature_high_k", t.temperature_high_k),
-        ("magnetic_core_factor", t.magnetic_core_factor),
-        ("emissivity", t.emissivity),
-        ("absorptivity", t.absorptivity),
-        ("outer_mass_kg_per_m", t.outer_mass_kg_per_m),
-        ("outer_specific_heat_j_per_kg_k", t.outer_specific_heat_j_per_kg_k),
-        ("outer_specific_heat_coefficient_per_k", t.outer_specific_heat_coefficient_per_k),
-        ("core_mass_kg_per_m", t.core_mass_kg_per_m),
-        ("core_specific_heat_j_per_kg_k", t.core_specific_heat_j_per_kg_k),
-        ("core_specific_heat_coefficient_per_k", t.core_specific_heat_coefficient_per_k),
-    ] {
-        m.insert(k.into(), toml::Value::Float(v));
-    }
-    m
+/// The properties table of a catalogue entry's thermal data (what a user catalogue's name is replaced by):
+/// its fields as [`ThermalConductor`] serialises them.
+fn properties_table(t: &ThermalConductor) -> Result<toml::Table, toml::ser::Error> {
+    toml::Table::try_from(t)
 }
 
 /// Check a conductor's thermal data, each field under `{at}.` (e.g. `thermal.conductor`, or `conductor[1]` of
@@ -349,13 +242,13 @@ fn catalog_label(path: &Path, file: &str) -> String {
 /// `file`), validate every entry, and replace `t`'s `conductor` by the entry's thermal properties if the
 /// entry is found there (a name not found there is left for the built-in catalogue, and refused with both
 /// catalogues' names if neither has it). `at` is the table's dotted prefix in messages (`thermal.` or
-/// empty). Returns the catalogue's entries (for `[conductor] catalog`) and whether `t` changed.
+/// empty). Returns the catalogue's entries (for `[conductor] catalog`).
 pub(crate) fn resolve_user_catalog(
     t: &mut toml::Table,
     at: &str,
     file: &str,
-) -> Result<(Option<Vec<CatalogConductor>>, bool), InputError> {
-    let Some(path) = t.get("conductor_catalog") else { return Ok((None, false)) };
+) -> Result<Option<Vec<CatalogConductor>>, InputError> {
+    let Some(path) = t.get("conductor_catalog") else { return Ok(None) };
     let invalid = |field: String, value: String, allowed: String| InputError::Invalid {
         file: file.into(),
         problems: vec![Problem { field, value, allowed }],
@@ -386,11 +279,11 @@ pub(crate) fn resolve_user_catalog(
     if !c.0.is_empty() {
         return Err(InputError::Invalid { file: label, problems: c.0 });
     }
-    let mut changed = false;
     if let Some(toml::Value::String(name)) = t.get("conductor").cloned() {
         if let Some(e) = find_in(&entries, &name) {
-            t.insert("conductor".into(), toml::Value::Table(properties_table(&e.thermal())));
-            changed = true;
+            let table = properties_table(&e.thermal())
+                .map_err(|err| InputError::Parse { file: label.clone(), message: err.to_string() })?;
+            t.insert("conductor".into(), toml::Value::Table(table));
         } else if let Err(CatalogError::NotFound { available, .. }) = catalog::find(&name) {
             let user: Vec<String> = entries.iter().map(|e| e.name.clone()).collect();
             return Err(invalid(
@@ -405,7 +298,7 @@ pub(crate) fn resolve_user_catalog(
             ));
         }
     }
-    Ok((Some(entries), changed))
+    Ok(Some(entries))
 }
 
 /// The user catalogue entry called `name` (name or alias, ignoring case and surrounding whitespace).

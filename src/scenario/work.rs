@@ -97,6 +97,9 @@ pub struct WorkEstimate {
     pub snapshot_rows: f64,
     /// bytes of `timeseries.csv` and `snapshots.csv` together (upper bound) [bytes]
     pub output_bytes: f64,
+    /// the `[[events]]` index of the `heat_conduction` event whose stretch takes the most heat sub-steps
+    /// (`None` without heat conduction) [-]
+    pub heat_event: Option<usize>,
 }
 
 impl WorkEstimate {
@@ -108,7 +111,7 @@ impl WorkEstimate {
         let horizon = plan.stop.horizon_s();
         let events = plan.events.len() as f64;
         let steps = (horizon / dt).ceil().max(0.0) + events;
-        let (heat_substeps, _) = heat_substeps(plan, n, dt, horizon);
+        let (heat_substeps, heat_event) = heat_substeps(plan, n, dt, horizon);
         let supports = plan.solver.wire().supports().len() as f64;
         let strings = plan.solver.wire().insulators.len() as f64;
         let span_columns = plan.spans.len() as f64 * if plan.ground.is_some() { 2.0 } else { 1.0 };
@@ -131,6 +134,7 @@ impl WorkEstimate {
             timeseries_columns,
             snapshot_rows: nan_is_inf(snapshot_rows),
             output_bytes: nan_is_inf(output_bytes),
+            heat_event,
         }
     }
 
@@ -251,8 +255,9 @@ fn node_steps_hint(e: &WorkEstimate) -> String {
         format!(
             "most of it is heat conduction ({:.3e} heat node updates): each run step of the heat_conduction events \
              takes ceil(dt heat_time_per_s / (h^2 / 2)) sub-steps with h = 1 / geometry.segments, so lower \
-             events[].heat_time_per_s (or the segments, or the time the conduction runs)",
-            e.heat_node_updates
+             events[{}].heat_time_per_s (or the segments, or the time the conduction runs)",
+            e.heat_node_updates,
+            e.heat_event.map_or(String::new(), |k| k.to_string())
         )
     } else {
         "check the duration and the time step (conductor stiffness, numerics.courant, geometry.segments)".into()
@@ -263,33 +268,41 @@ fn nan_is_inf(x: f64) -> f64 {
     if x.is_nan() { f64::INFINITY } else { x }
 }
 
-/// Heat sub-steps of the plan's conduction stretches, and the stretches' total duration [s].
-fn heat_substeps(plan: &Plan, n: f64, dt: f64, horizon: f64) -> (f64, f64) {
+/// Heat sub-steps of the plan's conduction stretches, and the `[[events]]` index of the `heat_conduction`
+/// event whose stretch takes the most ([`Plan::heat_conduction_events`]).
+fn heat_substeps(plan: &Plan, n: f64, dt: f64, horizon: f64) -> (f64, Option<usize>) {
     let max_step = 0.5 / (n * n);
-    let (mut total, mut duration) = (0.0, 0.0);
-    let mut running: Option<(f64, f64)> = None; // (start [s], heat time per second [1/s])
-    let mut close = |from: f64, per_s: f64, to: f64| {
+    let mut total = 0.0;
+    let mut most: Option<(f64, usize)> = None; // (sub-steps, ordinal among the heat_conduction events)
+    let mut running: Option<(f64, f64, usize)> = None; // (start [s], heat time per second [1/s], ordinal)
+    let mut close = |from: f64, per_s: f64, to: f64, ordinal: usize| {
         let d = (to.min(horizon) - from).max(0.0);
         if d > 0.0 {
             let per_step = (dt * per_s / max_step).ceil().max(1.0);
-            total += ((d / dt).ceil() + 1.0) * per_step;
-            duration += d;
+            let substeps = ((d / dt).ceil() + 1.0) * per_step;
+            total += substeps;
+            // NaN counts as the most (it is over any budget).
+            if most.is_none_or(|(m, _)| !substeps.partial_cmp(&m).is_some_and(|o| o.is_le())) {
+                most = Some((substeps, ordinal));
+            }
         }
     };
+    let mut ordinal = 0;
     for e in &plan.events {
         let stops =
             matches!(e.action, Action::HeatConduction { .. } | Action::HeatConductionOff | Action::Temperature { .. });
-        if stops && let Some((from, per_s)) = running.take() {
-            close(from, per_s, e.time_s);
+        if stops && let Some((from, per_s, k)) = running.take() {
+            close(from, per_s, e.time_s, k);
         }
         if let Action::HeatConduction { heat_time_per_s, .. } = e.action {
-            running = Some((e.time_s, heat_time_per_s));
+            running = Some((e.time_s, heat_time_per_s, ordinal));
+            ordinal += 1;
         }
     }
-    if let Some((from, per_s)) = running {
-        close(from, per_s, horizon);
+    if let Some((from, per_s, k)) = running {
+        close(from, per_s, horizon, k);
     }
-    (nan_is_inf(total), duration)
+    (nan_is_inf(total), most.and_then(|(_, k)| plan.heat_conduction_events.get(k).copied()))
 }
 
 #[cfg(test)]
@@ -369,5 +382,34 @@ mod tests {
         assert_eq!(e.heat_substeps, ((1.0 / dt).ceil() + 1.0) * per_step);
         assert_eq!(e.heat_node_updates, 21.0 * e.heat_substeps);
         assert_eq!(e.steps, (2.0 / dt).ceil() + 2.0);
+        assert_eq!(e.heat_event, Some(0));
+    }
+
+    #[test]
+    fn a_heat_refusal_names_the_event_that_drives_it() {
+        // Two conduction stretches written out of time order: events[0] (t = 10 s to the end at 20 s, 1 per
+        // second) and events[2] (t = 0.1 s until the temperature event events[1] at 5 s, 1000 per second).
+        // Sub-steps of a stretch: (ceil(d / dt) + 1) ceil(dt r / (h^2 / 2)); at N = 2000 (dt about 8e-5 s,
+        // h^2 / 2 = 1.25e-7) events[2]'s are about 3e2 times events[0]'s, and 2001 times their sum is above
+        // the budget.
+        let text = format!(
+            "{}[duration]\nend_time_s = 20.0\n\
+             [[events]]\ntime_s = 10.0\naction = \"heat_conduction\"\nhold_range = [0.4, 0.6]\n\
+             hold_temperature_k = 400.0\nheat_time_per_s = 1.0\n\
+             [[events]]\ntime_s = 5.0\naction = \"temperature\"\ntemperature_k = 300.0\n\
+             [[events]]\ntime_s = 0.1\naction = \"heat_conduction\"\nhold_range = [0.4, 0.6]\n\
+             hold_temperature_k = 400.0\nheat_time_per_s = 1000.0\n",
+            BASE.replace("segments = 20", "segments = 2000")
+        )
+        .replace(
+            "linear_density_kg_per_m = 1.0\n",
+            "linear_density_kg_per_m = 1.0\nthermal_expansion_per_k = 2.38e-5\n",
+        );
+        let p = plan(&parse(&text, "test").unwrap(), "test").unwrap();
+        assert_eq!(p.heat_conduction_events, vec![2, 0]);
+        let err = p.check_budget().unwrap_err();
+        assert_eq!(err.estimate().heat_event, Some(2));
+        let text = err.to_string();
+        assert!(text.contains("so lower events[2].heat_time_per_s (or"), "{text}");
     }
 }

@@ -45,6 +45,11 @@
 //! dH/dt = q_J - q,   dE_J/dt = q_J,   dE_loss/dt = q.
 //! ```
 //!
+//! A step `h` beyond RK4's stability interval ([`super::ode::stable_step`], `2 / |d(dH/dt)/dH|` at the
+//! step's start, the slope a central difference over +-1 mK of `T_c`) is taken as the fewest equal sub-steps
+//! that are within it (a stiff problem: a thin conductor in a thin shell, strong wind or a large `h`); a
+//! stable `h` is one step, as without the cap.
+//!
 //! The step that crosses `H(T_m)` is replaced by one of the length `s` (found by Brent's method on `s`) that
 //! lands on it, so the kink of the right-hand side at the switch to phase 2 lies on a step boundary and the
 //! scheme keeps its fourth order; phase 2 has constant rates and is closed form. The energy budget is
@@ -87,7 +92,7 @@
 
 use std::cell::Cell;
 
-use super::ode::rk4_step;
+use super::ode::{rk4_step, stable_step};
 use super::{HeatBalance, Standard, ThermalConductor, Weather, joule};
 
 /// Melting point of ice `T_m` [K] (0 C).
@@ -468,6 +473,11 @@ struct Capacity {
 }
 
 impl Capacity {
+    /// `C(T)` [J/(m K)].
+    fn capacity(&self, temperature_k: f64) -> f64 {
+        self.a + self.b * (temperature_k - self.start_k)
+    }
+
     fn enthalpy(&self, temperature_k: f64) -> f64 {
         let x = temperature_k - self.start_k;
         self.a * x + 0.5 * self.b * x * x
@@ -642,6 +652,17 @@ impl Deicing {
             }
         };
         let h = opts.step_s;
+        // A step of length `s` from `(t0, y0)` in `k` equal RK4 sub-steps.
+        let advance = |t0: f64, y0: &[f64; 3], s: f64, k: u32| -> [f64; 3] {
+            let sub = s / f64::from(k);
+            (0..k).fold(*y0, |y, j| rk4_step(rhs, t0 + f64::from(j) * sub, &y, sub))
+        };
+        // The sub-steps of `h` at `y` (module doc), at most 2^20.
+        let substeps = |t0: f64, y0: &[f64; 3]| -> u32 {
+            let dh = 1e-3 * cap.capacity(cap.temperature(y0[0]));
+            let stable = stable_step(|e| rhs(t0, &[e, 0.0, 0.0])[0], y0[0], dh);
+            (h / stable).ceil().clamp(1.0, 1_048_576.0) as u32
+        };
         let mut y = [0.0; 3];
         let mut time = 0.0;
         let mut n: u64 = 0;
@@ -656,7 +677,8 @@ impl Deicing {
                 if time >= opts.max_time_s {
                     return Err(not_shed(0.0));
                 }
-                let y1 = rk4_step(rhs, time, &y, h);
+                let k = substeps(time, &y);
+                let y1 = advance(time, &y, h, k);
                 if let Some(e) = failure.take() {
                     return Err(e);
                 }
@@ -666,7 +688,7 @@ impl Deicing {
                 if y1[0] >= h_melt {
                     // Land on the crossing: the step length s in (0, h] whose RK4 step reaches H(T_m).
                     let (y0, t_start) = (y, time);
-                    let g = |s: f64| rk4_step(rhs, t_start, &y0, s)[0] - h_melt;
+                    let g = |s: f64| advance(t_start, &y0, s, k)[0] - h_melt;
                     let s = brent(g, 0.0, h, y0[0] - h_melt, y1[0] - h_melt, 1e-12 * h);
                     if let Some(e) = failure.take() {
                         return Err(e);
@@ -674,7 +696,7 @@ impl Deicing {
                     if !s.is_finite() {
                         return Err(DeicingError::NonFinite { time_s: time });
                     }
-                    y = rk4_step(rhs, t_start, &y0, s);
+                    y = advance(t_start, &y0, s, k);
                     if let Some(e) = failure.take() {
                         return Err(e);
                     }
@@ -1085,6 +1107,32 @@ mod tests {
             .terms(t_c, 0.0);
         let ratio = (0.3 / 0.8) * (2.0 * sunny.outer_radius_m() / sunny.conductor.diameter_m);
         assert!(rel(ice, bare.solar_w_per_m * ratio) < 1e-12, "{ice} vs {}", bare.solar_w_per_m * ratio);
+    }
+
+    #[test]
+    fn a_step_beyond_the_stability_limit_is_divided() {
+        // A stiff phase 1: Drake in a 1 mm shell in -10 C air and a 30 m/s wind, twice the least current, with
+        // h = 600 s. The shell and the wind make the time constant C / (d(q - q_J)/dT) about a hundred seconds,
+        // so h |lambda| is far beyond RK4's interval [-2.785, 0]: one RK4 step multiplies the distance to the
+        // equilibrium by R(h lambda) >> 1 (R > 0: away from it, colder), and without the cap the first step
+        // already left for unphysical temperatures (the run failed with no surface temperature at T_c = -893
+        // K). With the cap the step is divided and the run agrees with h = 1 s to 1e-5 (observed 4e-7: the
+        // crossing of 0 C at 30 s is found inside the first step, in sub-steps of at most 2 / |lambda|).
+        let mut d = case(1e-3, C_TO_K - 10.0);
+        d.weather.wind_speed_m_per_s = 30.0;
+        let current = 2.0 * d.minimum_current_a().unwrap();
+        let fine = d.run(current, &opts(1.0)).unwrap();
+        let coarse = d.run(current, &opts(600.0)).unwrap();
+        println!(
+            "I = {current:.1} A: warm {:.6} s (h = 1 s), {:.6} s (h = 600 s); shed {:.6} s, {:.6} s",
+            fine.warm_time_s, coarse.warm_time_s, fine.shed_time_s, coarse.shed_time_s
+        );
+        assert!(rel(coarse.warm_time_s, fine.warm_time_s) < 1e-5, "{} vs {}", coarse.warm_time_s, fine.warm_time_s);
+        assert!(rel(coarse.shed_time_s, fine.shed_time_s) < 1e-5, "{} vs {}", coarse.shed_time_s, fine.shed_time_s);
+        // Phase 1 warms from the air temperature to 0 C without leaving that interval.
+        for s in coarse.series.iter().filter(|s| s.melted_kg_per_m == 0.0) {
+            assert!((C_TO_K - 10.0 - 1e-9..=MELTING_POINT_K + 1e-9).contains(&s.conductor_k), "{s:?}");
+        }
     }
 
     #[test]

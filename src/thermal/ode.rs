@@ -9,6 +9,13 @@
 //! fourth order in `h` for a smooth right-hand side (the transient study observes it). A right-hand side
 //! with a kink inside the step (a current step, the start of melting) lowers the order unless the caller
 //! lands a step on the kink, which the thermal solvers do.
+//!
+//! The step is also kept inside RK4's stability interval ([`stable_step`]): linearised about the current
+//! state, `dy/dt = lambda (y - y_eq)` with `lambda = df/dy < 0`, one step multiplies `y - y_eq` by
+//! `R(z) = 1 + z + z^2/2 + z^3/6 + z^4/24`, `z = h lambda`, and `|R(z)| <= 1` on the real axis only for
+//! `-2.785 <= z <= 0` (the classical method's stability interval). A step `h <= 2 / |lambda|` keeps
+//! `R(-2) = 1/3` positive (no overshoot). Without the cap a step beyond the interval amplifies rounding at
+//! every step until the state is NaN (a fuzzer finding, `tests/fuzz_scenarios.rs`).
 
 /// One RK4 step of `dy/dt = f(t, y)` from `(t, y)` over `h`; returns `y(t + h)`.
 pub fn rk4_step<const M: usize>(f: impl Fn(f64, &[f64; M]) -> [f64; M], t: f64, y: &[f64; M], h: f64) -> [f64; M] {
@@ -18,6 +25,13 @@ pub fn rk4_step<const M: usize>(f: impl Fn(f64, &[f64; M]) -> [f64; M], t: f64, 
     let k3 = f(t + 0.5 * h, &add(y, &k2, 0.5 * h));
     let k4 = f(t + h, &add(y, &k3, h));
     std::array::from_fn(|i| y[i] + h * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]) / 6.0)
+}
+
+/// The longest stable RK4 step of a scalar `dy/dt = f(y)` at `y` (module doc): `2 / |df/dy|`, the slope a
+/// central difference over `y +- dy`; infinite where `f` does not fall with `y` (or the slope is NaN).
+pub fn stable_step(f: impl Fn(f64) -> f64, y: f64, dy: f64) -> f64 {
+    let slope = (f(y + dy) - f(y - dy)) / (2.0 * dy);
+    if slope < 0.0 { 2.0 / -slope } else { f64::INFINITY }
 }
 
 #[cfg(test)]

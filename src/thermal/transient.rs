@@ -14,11 +14,10 @@
 //! study observes it). Inside a step the current is taken from the schedule's piece containing the step
 //! (its left and right limits at a step in the current are then the right ones).
 //!
-//! The fixed step is also shortened where it would leave RK4's stability interval: linearised about the
-//! current temperature, `dT/dt = lambda (T - T_eq)` with `lambda = d(dT/dt)/dT < 0` (a central difference),
-//! and one RK4 step multiplies `T - T_eq` by `R(z) = 1 + z + z^2/2 + z^3/6 + z^4/24`, `z = h lambda`, with
-//! `|R(z)| <= 1` on the real axis only for `-2.785 <= z <= 0` (the classical method's stability interval).
-//! The step is kept to `h <= 2 / |lambda|`, where `R(-2) = 1/3` is still positive (no overshoot); for conductors this is about twice
+//! The fixed step is also shortened where it would leave RK4's stability interval
+//! ([`super::ode::stable_step`]): linearised about the current temperature, `dT/dt = lambda (T - T_eq)` with
+//! `lambda = d(dT/dt)/dT < 0` (a central difference over +-1 mK), the step is kept to `h <= 2 / |lambda|`,
+//! where `R(-2) = 1/3` is still positive (no overshoot); for conductors this is about twice
 //! the thermal time constant `tau = m c / (dq_loss/dT)`, tens of minutes in still air and a few minutes in
 //! wind, so only steps of the order of `step_s`'s upper bound (600 s) are shortened. Without it such a step
 //! amplifies rounding at every step until the temperature is negative and the heat balance is NaN (found by
@@ -28,7 +27,7 @@
 //! re-integrated from its start with shorter lengths, bisected to `1e-6 s`.
 
 use super::HeatBalance;
-use super::ode::rk4_step;
+use super::ode::{rk4_step, stable_step};
 
 /// A current in time: piecewise linear through `(t [s], I [A])` points with non-decreasing times (two
 /// points at one time make a step), constant outside them.
@@ -141,8 +140,7 @@ impl Transient<'_> {
     /// not fall with the temperature.
     fn stable_step_s(&self, mid: f64, t: f64, temperature_k: f64) -> f64 {
         const DT_K: f64 = 1e-3;
-        let slope = (self.rate(mid, t, temperature_k + DT_K) - self.rate(mid, t, temperature_k - DT_K)) / (2.0 * DT_K);
-        if slope < 0.0 { 2.0 / -slope } else { f64::INFINITY }
+        stable_step(|temperature_k| self.rate(mid, t, temperature_k), temperature_k, DT_K)
     }
 
     /// Integrate from `(t0, T0)` to `t_end` [s]; returns the samples at every step (the first is the start).
