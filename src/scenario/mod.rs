@@ -9,6 +9,7 @@ pub mod build;
 pub mod events;
 pub mod line;
 mod locate;
+pub mod range;
 pub mod rating;
 pub mod schema;
 pub mod section;
