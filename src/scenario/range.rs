@@ -139,6 +139,9 @@ pub const LINEAR_DENSITY_KG_PER_M: Range = Range::closed(1.0e-3, 1.0e3, "kg/m");
 /// `[conductor]`, `[[section.spans]]`, catalogue entries.
 pub const AXIAL_STIFFNESS_N: Range = Range::closed(1.0, 1.0e10, "N");
 
+/// Rated tensile strength of a conductor [N] (ACSR Drake: about 140 kN).
+pub const RATED_TENSILE_STRENGTH_N: Range = Range::open_closed(0.0, 1.0e7, "N").note(" (ACSR Drake: about 140 kN)");
+
 /// Linear thermal expansion coefficient [1/K] (aluminium 23.8e-6, the paper's section 5.4).
 pub const THERMAL_EXPANSION_PER_K: Range = Range::closed(0.0, 1.0e-3, "1/K");
 

@@ -13,13 +13,17 @@
 
 use super::range::{
     AXIAL_STIFFNESS_N, INSULATOR_DAMPING_N_S, INSULATOR_LENGTH_M, INSULATOR_MASS_KG, INSULATOR_STIFFNESS_N,
-    LINEAR_DENSITY_KG_PER_M, Range as Allowed,
+    LINEAR_DENSITY_KG_PER_M, RATED_TENSILE_STRENGTH_N, Range as Allowed,
 };
 use super::schema::{Scenario, SectionSpec, ShapeSpec, SupportSpec};
 use super::validate::{Check, MAX_SEGMENTS, MAX_SPAN_M, number};
 use crate::wire::insulator::{damped_clamp_stable_step_s, pivot_stable_step_s};
 use crate::wire::section::{self, CrossarmSpec, Layout, Section, Span, Stringing, Support, plumb_clamp};
 use crate::wire::{Conductor, Wire};
+
+/// Horizontal stringing tension of a span [N] (`section.horizontal_tension_n`, a span's own).
+const HORIZONTAL_TENSION_N: Allowed =
+    Allowed::open_closed(0.0, 1.0e7, "N").note(" (lines are strung at 10 to 25 % of the rated strength)");
 
 /// Largest number of segments in one span.
 pub const MAX_SEGMENTS_PER_SPAN: usize = 1_000_000;
@@ -143,6 +147,9 @@ pub(crate) fn check(
         );
         return None;
     }
+    if let Some(h) = sec.horizontal_tension_n {
+        ok &= c.range("section.horizontal_tension_n", h, &HORIZONTAL_TENSION_N);
+    }
     let mut spans = Vec::with_capacity(n_spans);
     let mut total = 0usize;
     for k in 0..n_spans {
@@ -198,11 +205,8 @@ pub(crate) fn check(
                 ok &= c.range("section.tension_fraction_of_rts", fr, &Allowed::open_closed(0.0, 0.6, ""));
                 match rts {
                     Some(r) => {
-                        ok &= c.range(
-                            "conductor.rated_tensile_strength_n",
-                            r,
-                            &Allowed::open_closed(0.0, 1.0e7, "N").note(" (ACSR Drake: about 140 kN)"),
-                        );
+                        // Reported with [conductor] (`super::validate`).
+                        ok &= RATED_TENSILE_STRENGTH_N.contains(r);
                         Some(fr * r)
                     }
                     None => {
@@ -280,12 +284,12 @@ pub(crate) fn check(
                 Some(Stringing::Sag(sag))
             }
             (None, None, Some(h)) => {
-                ok &= c.range(
-                    &f("horizontal_tension_n"),
-                    h,
-                    &Allowed::open_closed(0.0, 1.0e7, "N")
-                        .note(" (lines are strung at 10 to 25 % of the rated strength)"),
-                );
+                // Name the field the value was written in: the span's own, or the section's (reported once,
+                // before the spans).
+                ok &= HORIZONTAL_TENSION_N.contains(h);
+                if sp.horizontal_tension_n.is_some() {
+                    c.range(&f("horizontal_tension_n"), h, &HORIZONTAL_TENSION_N);
+                }
                 if s.loads.gravity_m_per_s2 <= 0.0 {
                     ok = false;
                     c.fail(

@@ -7,7 +7,8 @@ use std::ops::Range;
 
 use super::events::{EventSpec, GroundSpec, HeatBoundarySpec, break_segment, node_range, segment_range};
 use super::range::{
-    AXIAL_STIFFNESS_N, EVENT_TEMPERATURE_K, LINEAR_DENSITY_KG_PER_M, Range as Allowed, THERMAL_EXPANSION_PER_K,
+    AXIAL_STIFFNESS_N, EVENT_TEMPERATURE_K, LINEAR_DENSITY_KG_PER_M, RATED_TENSILE_STRENGTH_N, Range as Allowed,
+    THERMAL_EXPANSION_PER_K,
 };
 use super::schema::{Scenario, ShapeSpec, SupportSpec, TensionLawSpec, WindLawSpec};
 use super::section::SectionGrid;
@@ -163,6 +164,9 @@ pub(crate) fn check(s: &Scenario) -> (Vec<Problem>, Derived) {
         &THERMAL_EXPANSION_PER_K.note(" (aluminium: 23.8e-6, section 5.4)"),
     );
     c.range("conductor.reference_temperature_k", cd.reference_temperature_k, &REFERENCE_TEMPERATURE);
+    if let Some(r) = cd.rated_tensile_strength_n {
+        c.range("conductor.rated_tensile_strength_n", r, &RATED_TENSILE_STRENGTH_N);
+    }
     let d_ok = match cd.diameter_m {
         Some(d) => c.range(
             "conductor.diameter_m",
