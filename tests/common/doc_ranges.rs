@@ -32,6 +32,6 @@ pub fn message_interval(allowed: &str) -> Option<(Interval, &str)> {
         None => (true, rest.strip_prefix("> ")?),
     };
     let (lo, rest) = rest.split_once(", at most ")?;
-    let end = rest.find(|c: char| c == ' ' || c == ':').unwrap_or(rest.len());
+    let end = rest.find([' ', ':']).unwrap_or(rest.len());
     Some(((lo_open, lo.parse().ok()?, rest[..end].parse().ok()?, false), &rest[end..]))
 }
