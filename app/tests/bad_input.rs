@@ -14,6 +14,12 @@ const CASES: &[(&str, &[&str])] = &[
     ("negative_stiffness", &["field `conductor.axial_stiffness_n` = -5", "> 0"]),
     ("zero_density", &["field `conductor.linear_density_kg_per_m` = 0", "> 0"]),
     ("nan_density", &["field `conductor.linear_density_kg_per_m` = NaN", "finite"]),
+    // Issue 22: fields checked only where they were used.
+    ("rated_tensile_strength_nan", &["field `conductor.rated_tensile_strength_n` = NaN", "must be in (0, 1e7] N"]),
+    (
+        "section_tension_unused_negative",
+        &["field `section.horizontal_tension_n` = -28000", "must be in (0, 1e7] N (lines are strung"],
+    ),
     ("one_segment", &["field `geometry.segments` = 1", "[2, 10000000]"]),
     ("negative_segments", &["line 9, column 12", "invalid value: integer `-4`"]),
     ("coincident_supports", &["field `geometry.right_support_m` = [0.0, 0.0, 0.0]", "apart"]),

@@ -150,6 +150,36 @@ pub(crate) fn check(
     if let Some(h) = sec.horizontal_tension_n {
         ok &= c.range("section.horizontal_tension_n", h, &HORIZONTAL_TENSION_N);
     }
+    // The section's tension, once for all spans.
+    let rts = s.conductor.rated_tensile_strength_n;
+    let section_h = match (sec.horizontal_tension_n, sec.tension_fraction_of_rts) {
+        (Some(h), Some(fr)) => {
+            ok = false;
+            c.fail("section.tension_fraction_of_rts", number(fr), "give it or section.horizontal_tension_n, not both");
+            Some(h)
+        }
+        (Some(h), None) => Some(h),
+        (None, Some(fr)) => {
+            ok &= c.range("section.tension_fraction_of_rts", fr, &Allowed::open_closed(0.0, 0.6, ""));
+            match rts {
+                Some(r) => {
+                    // Reported with [conductor] (`super::validate`).
+                    ok &= RATED_TENSILE_STRENGTH_N.contains(r);
+                    Some(fr * r)
+                }
+                None => {
+                    ok = false;
+                    c.fail(
+                        "conductor.rated_tensile_strength_n",
+                        "(missing)",
+                        "required with section.tension_fraction_of_rts",
+                    );
+                    None
+                }
+            }
+        }
+        (None, None) => None,
+    };
     let mut spans = Vec::with_capacity(n_spans);
     let mut total = 0usize;
     for k in 0..n_spans {
@@ -189,39 +219,6 @@ pub(crate) fn check(
             }
         };
         total += n;
-        let rts = s.conductor.rated_tensile_strength_n;
-        let section_h = match (sec.horizontal_tension_n, sec.tension_fraction_of_rts) {
-            (Some(h), Some(fr)) => {
-                ok = false;
-                c.fail(
-                    "section.tension_fraction_of_rts",
-                    number(fr),
-                    "give it or section.horizontal_tension_n, not both",
-                );
-                Some(h)
-            }
-            (Some(h), None) => Some(h),
-            (None, Some(fr)) => {
-                ok &= c.range("section.tension_fraction_of_rts", fr, &Allowed::open_closed(0.0, 0.6, ""));
-                match rts {
-                    Some(r) => {
-                        // Reported with [conductor] (`super::validate`).
-                        ok &= RATED_TENSILE_STRENGTH_N.contains(r);
-                        Some(fr * r)
-                    }
-                    None => {
-                        ok = false;
-                        c.fail(
-                            "conductor.rated_tensile_strength_n",
-                            "(missing)",
-                            "required with section.tension_fraction_of_rts",
-                        );
-                        None
-                    }
-                }
-            }
-            (None, None) => None,
-        };
         let rho = match sp.linear_density_kg_per_m {
             Some(r) => {
                 ok &= c.range(&f("linear_density_kg_per_m"), r, &LINEAR_DENSITY_KG_PER_M);
