@@ -1,7 +1,8 @@
 //! The allowed range of a numeric field, stated once: the validator checks a value against it
 //! ([`super::validate::Check::range`]) and the message says what is allowed by writing it ([`Range`]'s
-//! `Display`), so the check and its text cannot drift apart. `tests/scenario_ranges.rs` checks the same
-//! ranges against the *Allowed* column of `docs/scenario.md`.
+//! `Display`), so the check and its text cannot drift apart. `tests/scenario_reference.rs` checks the same
+//! ranges against the *Allowed* column of `docs/scenario.md`, `tests/line_reference.rs` against
+//! `docs/line.md`.
 //!
 //! A range is an interval `lo <= x <= hi` with either end open (`lo < x`, `x < hi`); a value must also be
 //! finite. An open lower end at 0 also refuses the subnormal numbers (below `f64::MIN_POSITIVE` =
