@@ -10,6 +10,10 @@
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::Path;
 
+#[path = "common/doc_ranges.rs"]
+mod doc_ranges;
+use doc_ranges::{leading_interval, message_interval};
+
 /// A line scenario with every table of the page present (the probe goes into each in turn).
 const FULL: &str = r#"
 [line]
@@ -44,6 +48,21 @@ fn documented() -> BTreeSet<String> {
         .lines()
         .filter(|l| l.starts_with("| `"))
         .filter_map(|l| l.split('`').nth(1).map(String::from))
+        .collect()
+}
+
+/// The rows of the page's table: (field path, the *unit, range* cell).
+fn documented_rows() -> Vec<(String, String)> {
+    let page = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/line.md")).unwrap();
+    let start = page.find("## Scenario format").expect("the page has its scenario section");
+    let end = page[start..].find("\n## ").map_or(page.len(), |e| start + e);
+    page[start..end]
+        .lines()
+        .filter(|l| l.starts_with("| `"))
+        .filter_map(|l| {
+            let cells: Vec<&str> = l.split('|').map(str::trim).collect();
+            Some((cells.get(1)?.trim_matches('`').to_string(), cells.get(2)?.to_string()))
+        })
         .collect()
 }
 
@@ -128,4 +147,66 @@ fn the_line_reference_is_the_schema() {
         let got = accepted(table);
         assert_eq!(&got, fields, "docs/line.md, table {table:?}: documented (right) vs accepted (left)");
     }
+}
+
+/// Every documented field of a `[line]` whose *unit, range* cell holds an interval of numbers (`N/m, [1e2,
+/// 1e10]`: the unit, then the interval; `[2, 8]`: no unit) is set in the full example to a value outside
+/// it (`nan`; for an integer, one below the lower end), the first element of each array on the way. The
+/// line scenario is parsed and validated (`ohl::scenario::line::parse` and `plan`, which checks the line's
+/// own tables), and a problem must name the field
+/// as the file writes it (`line.towers[0].elastic.mass_kg`) with the same interval (ends compared as
+/// numbers, open ends alike) followed by the cell's unit.
+#[test]
+fn every_documented_line_range_is_the_validators() {
+    let mut failures = Vec::new();
+    let mut tested = 0;
+    for (path, cell) in documented_rows() {
+        let (unit, rest) = match cell.split_once(", ") {
+            Some((u, r)) if !cell.starts_with(['[', '(']) => (u, r),
+            _ => ("", cell.as_str()),
+        };
+        let Some((expected, _)) = leading_interval(rest) else { continue };
+        let (table, name) = split(&path);
+        let mut doc: toml::Table = FULL.parse().unwrap();
+        let t = table_at(&mut doc, &table);
+        let bad = match t.get(&name) {
+            Some(toml::Value::Integer(_)) => toml::Value::Integer(expected.1 as i64 - 1),
+            _ => toml::Value::Float(f64::NAN),
+        };
+        t.insert(name.clone(), bad.clone());
+        let field = path.replace("[]", "[0]");
+        let text = toml::to_string(&doc).unwrap();
+        // The line's own tables are validated by `plan`.
+        let planned = ohl::scenario::line::parse(&text, "full").and_then(|sc| ohl::scenario::line::plan(&sc, "full"));
+        let problems = match planned {
+            Err(ohl::scenario::InputError::Invalid { problems, .. }) => problems,
+            Err(e) => {
+                failures.push(format!("{field} = {bad}: not a validation error: {e}"));
+                continue;
+            }
+            Ok(_) => {
+                failures.push(format!("{field} = {bad} is accepted"));
+                continue;
+            }
+        };
+        let Some(p) = problems.iter().find(|p| p.field == field) else {
+            let named: Vec<&str> = problems.iter().map(|p| p.field.as_str()).collect();
+            failures.push(format!("{field} = {bad} is refused, but the problems name {named:?}"));
+            continue;
+        };
+        tested += 1;
+        match message_interval(&p.allowed) {
+            Some((stated, after)) => {
+                if stated != expected {
+                    failures.push(format!("{field}: the page allows {cell:?}, the validator says {:?}", p.allowed));
+                }
+                if !unit.is_empty() && !after.starts_with(&format!(" {unit}")) {
+                    failures.push(format!("{field}: the page's unit is {unit:?}, the validator says {:?}", p.allowed));
+                }
+            }
+            None => failures.push(format!("{field}: the message states no interval: {:?}", p.allowed)),
+        }
+    }
+    assert!(failures.is_empty(), "docs/line.md's ranges differ from the validators':\n  {}", failures.join("\n  "));
+    assert!(tested >= 12, "only {tested} ranges were checked");
 }

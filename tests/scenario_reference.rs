@@ -25,15 +25,23 @@
 //! 4. **Words.** Every documented field is also set to the word `"zz_probe"`: where the field is a choice of
 //!    words (`law`, `shape`, `gate`, `standard`, ...) the "unknown variant" error lists the words accepted,
 //!    and they must be exactly the quoted words (`` `"word"` ``) in the field's row.
+//! 5. **Ranges** (`every_documented_range_is_the_validators`): a value outside the *Allowed* interval of each
+//!    numeric field must be refused with a message that names the field and states the same interval
+//!    and unit (the rule is in that test's doc).
 //!
 //! So a field added to a struct without a row fails (3), a row naming a field the parser does not know
 //! fails (3), a new table or event kind fails (3, through its parent's field list or the tag values), a
-//! renamed choice fails (4), and an example that stops parsing or validating fails (2).
+//! renamed choice fails (4), an example that stops parsing or validating fails (2), and a range that the
+//! page and the validator state differently fails (5).
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::Path;
 
 use ohl::scenario::Scenario;
+
+#[path = "common/doc_ranges.rs"]
+mod doc_ranges;
+use doc_ranges::{leading_interval, message_interval};
 use ohl::scenario::thermal::ThermalCase;
 
 /// The key and the word no table or choice has.
@@ -410,4 +418,178 @@ fn the_scenario_reference_is_the_schema() {
     }
 
     assert!(failures.is_empty(), "docs/scenario.md does not match the schema:\n  {}", failures.join("\n  "));
+}
+
+/// Documented numeric fields whose *Allowed* cell is not a plain interval of numbers, with the reason
+/// (their checks depend on other fields, or on more than one number).
+const RICHER: &[(&str, &str)] = &[
+    ("scenario.numerics.mass_damping_per_s", "`>= 0 with zeta dt < 1`: the bound is the time step"),
+    ("scenario.output.snapshot_times_s", "each in [0, end time]: the end is another field"),
+    ("scenario.output.peaks_from_s", "[0, end time]: the end is another field"),
+    ("scenario.geometry.unstretched_length_m", "[chord / 2, 100 chord]: the chord is the supports'"),
+    ("scenario.geometry.left_support_m", "a vector: each component within 1e5"),
+    ("scenario.geometry.right_support_m", "a vector, and the chord's length"),
+    ("scenario.initial.sag_m", "(0, chord]: the chord is the supports'"),
+    ("scenario.loads.uniform_load_n_per_m", "a vector: each component within 1e4"),
+    ("scenario.loads.wind.direction", "a vector, not zero"),
+    ("scenario.ground.height_m", "below every support and the initial shape"),
+    ("scenario.ground.profile_m", "points with increasing x2 and bounded slopes"),
+    ("scenario.section.supports[kind=dead_end].point_m", "a vector: each component within 1e5"),
+    ("scenario.section.supports[kind=suspension].pivot_m", "a vector: each component within 1e5"),
+    ("scenario.section.spans[].unstretched_length_m", "[chord / 2, 2 chord]: the chord is the supports'"),
+    ("scenario.section.spans[].sag_m", "(0, chord / 2]: the chord is the supports'"),
+    ("scenario.thermal.current_a", "points [t, I], each end its own range, times not decreasing"),
+    ("thermal_case.transient.current_a", "points [t, I] as thermal.current_a"),
+    ("scenario.thermal.inclination_deg", "[0, 80] or [0, 60] by the conductor's surface and the standard"),
+    ("thermal_case.inclination_deg", "[0, 80] or [0, 60] by the conductor's surface and the standard"),
+    ("scenario.thermal.deicing.spans", "span indices of the section"),
+    ("scenario.rating.span", "a span index of the line, checked by `ohl rating`"),
+];
+
+/// Fields of the `scenario.events[...]` tables: `time_s` is in [0, end time] (the end is another field);
+/// `span` and `support` are indices; `range` and `hold_range` are `[a, b]` with `0 <= a < b <= 1`.
+const RICHER_EVENT_FIELDS: &[&str] = &["time_s", "span", "support", "range", "hold_range"];
+
+/// Fields of `scenario.thermal.conductor` and `thermal_case.conductor` whose range ends are other fields.
+const RICHER_CONDUCTOR_FIELDS: &[&str] = &[
+    "core_diameter_m",
+    "outer_strand_diameter_m",
+    "resistance_high_ohm_per_m",
+    "temperature_high_k",
+    "core_specific_heat_j_per_kg_k",
+];
+
+/// The field as a message names it: the keys from the top of the file, with array indices
+/// (`section.supports[1].insulator_length_m`, `events[3].scale`).
+fn message_field(at: &Location, name: &str) -> String {
+    let mut out = String::new();
+    for (key, index) in at {
+        out.push_str(key);
+        if let Some(i) = index {
+            out.push_str(&format!("[{i}]"));
+        }
+        out.push('.');
+    }
+    out + name
+}
+
+/// Every documented field whose *Allowed* cell starts with an interval of numbers (after `integer in ` or,
+/// for an array of numbers, `each in `) is set, in an example of the page that uses it, to a value outside
+/// it: `nan` for a float, one below the lower end (else one above the upper end) for an integer, `nan` as
+/// the first element of an array. The file is then parsed and validated (`ohl::scenario::parse`,
+/// `ohl::scenario::thermal::parse_case`), and one of the problems reported must name the field as the
+/// file writes it, with the same interval (ends compared as numbers, so `1e3` is `1000`; which ends are
+/// open) followed by the cell's unit (the *Unit* column; none for `-`). The validators' own texts come
+/// from `ohl::scenario::range::Range`, so the page and the messages state each range the same way.
+///
+/// Numeric fields whose cell is not such an interval are listed in `RICHER`, `RICHER_EVENT_FIELDS` and
+/// `RICHER_CONDUCTOR_FIELDS` with the reason; a listed field whose cell became a plain interval fails
+/// (the list must not go stale).
+#[test]
+fn every_documented_range_is_the_validators() {
+    let md = page();
+    let tables = doc_tables(&md);
+    let tags = tag_keys(&tables);
+    let examples: Vec<(Kind, toml::Table)> = toml_blocks(&md)
+        .iter()
+        .map(|text| {
+            let kind = if text.lines().next() == Some(THERMAL_CASE_MARK) { Kind::ThermalCase } else { Kind::Scenario };
+            (kind, text.parse().unwrap())
+        })
+        .collect();
+    let mut instances: Vec<Instance> = Vec::new();
+    for (k, (kind, doc)) in examples.iter().enumerate() {
+        instances.extend(walk(doc, kind.root(), &Vec::new(), k, &tags));
+    }
+
+    let mut failures = Vec::new();
+    let mut tested = 0;
+    for t in &tables {
+        let kind = kind_of(&t.path);
+        for (name, row) in &t.rows {
+            let full = format!("{}.{name}", t.path);
+            let row_cells = cells(row);
+            let (unit, allowed) = (row_cells[1].as_str(), row_cells[3].as_str());
+            // The example that uses the field, and its value there.
+            let Some((i, value)) = instances.iter().filter(|i| i.path == t.path).find_map(|i| {
+                let mut doc = examples[i.example].1.clone();
+                table_at(&mut doc, &i.at).get(name).cloned().map(|v| (i, v))
+            }) else {
+                continue; // NOT_IN_EXAMPLES, checked by the_scenario_reference_is_the_schema
+            };
+            let numeric = |v: &toml::Value| v.is_float() || v.is_integer();
+            let array = value.as_array().is_some_and(|a| !a.is_empty() && a.iter().all(numeric));
+            if !numeric(&value) && !array {
+                continue;
+            }
+            let richer = RICHER.iter().any(|(f, _)| *f == full)
+                || (t.path.starts_with("scenario.events[") && RICHER_EVENT_FIELDS.contains(&name.as_str()))
+                || (t.path.ends_with(".conductor") && RICHER_CONDUCTOR_FIELDS.contains(&name.as_str()));
+            let cell =
+                allowed.strip_prefix("integer in ").or_else(|| allowed.strip_prefix("each in ")).unwrap_or(allowed);
+            let interval = leading_interval(cell);
+            let expected = match (interval, richer) {
+                (Some((_, "")), true) => {
+                    failures.push(format!("{full}: listed as richer, but its cell {allowed:?} is an interval"));
+                    continue;
+                }
+                (_, true) => continue,
+                (None, false) => {
+                    failures
+                        .push(format!("{full}: a numeric field whose cell {allowed:?} is not an interval; list it"));
+                    continue;
+                }
+                (Some((iv, _)), false) => iv,
+            };
+            // The value outside the range.
+            let (bad, field) = if array {
+                let mut items = value.as_array().unwrap().clone();
+                items[0] = toml::Value::Float(f64::NAN);
+                (toml::Value::Array(items), message_field(&i.at, &format!("{name}[0]")))
+            } else if value.is_integer() {
+                let (_, lo, hi, _) = expected;
+                let v = if lo >= 1.0 { lo as i64 - 1 } else { hi as i64 + 1 };
+                (toml::Value::Integer(v), message_field(&i.at, name))
+            } else {
+                (toml::Value::Float(f64::NAN), message_field(&i.at, name))
+            };
+            let mut doc = examples[i.example].1.clone();
+            table_at(&mut doc, &i.at).insert(name.clone(), bad.clone());
+            let text = toml::to_string(&doc).unwrap();
+            let label = format!("docs/scenario.md, toml block {} with {field} = {bad}", i.example + 1);
+            let result = match kind {
+                Kind::Scenario => ohl::scenario::parse(&text, &label).map(|_| ()),
+                Kind::ThermalCase => ohl::scenario::thermal::parse_case(&text, &label).map(|_| ()),
+            };
+            let problems = match result {
+                Err(ohl::scenario::InputError::Invalid { problems, .. }) => problems,
+                Err(e) => {
+                    failures.push(format!("{full}: {field} = {bad} is not a validation error: {e}"));
+                    continue;
+                }
+                Ok(()) => {
+                    failures.push(format!("{full}: {field} = {bad} is accepted"));
+                    continue;
+                }
+            };
+            let Some(p) = problems.iter().find(|p| p.field == field) else {
+                let named: Vec<&str> = problems.iter().map(|p| p.field.as_str()).collect();
+                failures.push(format!("{full}: {field} = {bad} is refused, but the problems name {named:?}"));
+                continue;
+            };
+            tested += 1;
+            let Some((stated, after)) = message_interval(&p.allowed) else {
+                failures.push(format!("{full}: the message states no interval: {:?}", p.allowed));
+                continue;
+            };
+            if stated != expected {
+                failures.push(format!("{full}: the page allows {allowed:?}, the validator says {:?}", p.allowed));
+            }
+            if unit != "-" && !after.starts_with(&format!(" {unit}")) {
+                failures.push(format!("{full}: the page's unit is {unit:?}, the validator says {:?}", p.allowed));
+            }
+        }
+    }
+    assert!(tested >= 100, "only {tested} ranges were checked");
+    assert!(failures.is_empty(), "docs/scenario.md's ranges differ from the validators':\n  {}", failures.join("\n  "));
 }

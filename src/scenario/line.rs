@@ -40,6 +40,9 @@ use serde::Deserialize;
 use super::InputError;
 use super::build::{Plan, Stop, build};
 use super::events::{EventSpec, GroundSpec};
+use super::range::{
+    INSULATOR_DAMPING_N_S, INSULATOR_LENGTH_M, INSULATOR_MASS_KG, INSULATOR_STIFFNESS_N, Range as Allowed,
+};
 use super::schema::{
     ConductorSpec, DurationSpec, InitialSpec, LoadsSpec, NumericsSpec, OutputSpec, Scenario, SectionSpec, SupportSpec,
 };
@@ -416,7 +419,7 @@ fn build_line(s: &LineScenario) -> Result<LinePlan, Vec<Problem>> {
     if spec.conductors.is_empty() {
         c.fail("line.conductors", "[]", "a line needs at least one conductor");
     }
-    c.within("line.string_damping_n_s", spec.string_damping_n_s, 0.0, 1e7, "must be in [0, 1e7] N s");
+    c.range("line.string_damping_n_s", spec.string_damping_n_s, &INSULATOR_DAMPING_N_S);
     for (t, tower) in spec.towers.iter().enumerate() {
         let f = |name: &str| format!("line.towers[{t}].{name}");
         if tower.name.is_empty() || spec.towers[..t].iter().any(|o| o.name == tower.name) {
@@ -424,10 +427,11 @@ fn build_line(s: &LineScenario) -> Result<LinePlan, Vec<Problem>> {
         }
         c.coordinates(&f("position_m"), tower.position_m);
         if let Some(e) = &tower.elastic {
-            c.within(&f("elastic.along_n_per_m"), e.along_n_per_m, 1e2, 1e10, "must be in [1e2, 1e10] N/m");
-            c.within(&f("elastic.across_n_per_m"), e.across_n_per_m, 1e2, 1e10, "must be in [1e2, 1e10] N/m");
-            c.within(&f("elastic.mass_kg"), e.mass_kg, 1.0, 1e6, "must be in [1, 1e6] kg");
-            c.within(&f("elastic.damping_n_s_per_m"), e.damping_n_s_per_m, 0.0, 1e8, "must be in [0, 1e8] N s/m");
+            let spring = Allowed::closed(1.0e2, 1.0e10, "N/m");
+            c.range(&f("elastic.along_n_per_m"), e.along_n_per_m, &spring);
+            c.range(&f("elastic.across_n_per_m"), e.across_n_per_m, &spring);
+            c.range(&f("elastic.mass_kg"), e.mass_kg, &Allowed::closed(1.0, 1.0e6, "kg"));
+            c.range(&f("elastic.damping_n_s_per_m"), e.damping_n_s_per_m, &Allowed::closed(0.0, 1.0e8, "N s/m"));
             let h = (e.along[0] * e.along[0] + e.along[1] * e.along[1]).sqrt();
             if !(h.is_finite() && h > 1e-6 && e.along[2] == 0.0) {
                 c.fail(
@@ -477,7 +481,7 @@ fn build_line(s: &LineScenario) -> Result<LinePlan, Vec<Problem>> {
             } else if cd.tension_strings[..j].iter().any(|o| o.support == t.support) {
                 c.fail(&g("support"), t.support, "must name each end once: one tension string per dead-end");
             }
-            if c.within(&g("length_m"), t.length_m, 0.01, 20.0, "must be in [0.01, 20] m") && end {
+            if c.range(&g("length_m"), t.length_m, &INSULATOR_LENGTH_M) && end {
                 let d = towards_span(&cd.section, t.support);
                 let len = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
                 if len.is_finite() && len <= 2.0 * t.length_m {
@@ -488,15 +492,13 @@ fn build_line(s: &LineScenario) -> Result<LinePlan, Vec<Problem>> {
                     );
                 }
             }
-            c.within(&g("mass_kg"), t.mass_kg, 0.0, 5000.0, "must be in [0, 5000] kg");
-            c.within(
+            c.range(&g("mass_kg"), t.mass_kg, &INSULATOR_MASS_KG);
+            c.range(
                 &g("stiffness_n"),
                 t.stiffness_n,
-                1.0e4,
-                1.0e10,
-                "must be in [1e4, 1e10] N (strain strings are about 1e7 to 1e8 N)",
+                &INSULATOR_STIFFNESS_N.note(" (strain strings are about 1e7 to 1e8 N)"),
             );
-            c.within(&g("damping_n_s"), t.damping_n_s, 0.0, 1e7, "must be in [0, 1e7] N s");
+            c.range(&g("damping_n_s"), t.damping_n_s, &INSULATOR_DAMPING_N_S);
         }
         if spec.string_damping_n_s > 0.0 {
             for (j, sp) in cd.section.supports.iter().enumerate() {
@@ -513,11 +515,11 @@ fn build_line(s: &LineScenario) -> Result<LinePlan, Vec<Problem>> {
             }
         }
         if let Some(b) = &cd.bundle {
-            c.within(&f("bundle.diameter_m"), b.diameter_m, 0.05, 3.0, "must be in [0.05, 3] m");
+            c.range(&f("bundle.diameter_m"), b.diameter_m, &Allowed::closed(0.05, 3.0, "m"));
             let (k_arm, c_arm) = (b.spacer_stiffness_n_per_m, b.spacer_damping_n_s_per_m);
-            c.within(&f("bundle.spacer_stiffness_n_per_m"), k_arm, 1e3, 1e9, "must be in [1e3, 1e9] N/m");
-            c.within(&f("bundle.spacer_damping_n_s_per_m"), c_arm, 0.0, 1e6, "must be in [0, 1e6] N s/m");
-            c.within(&f("bundle.spacer_mass_kg"), b.spacer_mass_kg, 0.0, 100.0, "must be in [0, 100] kg");
+            c.range(&f("bundle.spacer_stiffness_n_per_m"), k_arm, &Allowed::closed(1.0e3, 1.0e9, "N/m"));
+            c.range(&f("bundle.spacer_damping_n_s_per_m"), c_arm, &Allowed::closed(0.0, 1.0e6, "N s/m"));
+            c.range(&f("bundle.spacer_mass_kg"), b.spacer_mass_kg, &Allowed::closed(0.0, 100.0, "kg"));
             if !(2..=8).contains(&b.sub_conductors) {
                 c.fail(&f("bundle.sub_conductors"), b.sub_conductors, "must be in [2, 8]");
             }

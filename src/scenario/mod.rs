@@ -9,6 +9,7 @@ pub mod build;
 pub mod events;
 pub mod line;
 pub mod locate;
+pub mod range;
 pub mod rating;
 pub mod schema;
 pub mod section;

@@ -21,6 +21,7 @@
 
 use serde::Deserialize;
 
+use super::range::Range as Allowed;
 use super::validate::Check;
 use super::{InputError, Plan, Problem, Scenario};
 use crate::statics::{self, StaticOptions};
@@ -50,26 +51,29 @@ pub struct RatingSpec {
 }
 
 /// Check the `[rating]` table.
+/// A clearance or sag limit [m] (`rating.min_clearance_m`, `rating.max_sag_m`).
+const LIMIT_M: Allowed = Allowed::open_closed(0.0, 1.0e3, "m");
+
 pub(crate) fn check(c: &mut Check, s: &Scenario, r: &RatingSpec) {
     match (r.min_clearance_m, r.max_sag_m) {
         (Some(_), Some(_)) | (None, None) => {
             c.fail("rating", "", "must give exactly one of min_clearance_m and max_sag_m");
         }
         (Some(m), None) => {
-            c.within("rating.min_clearance_m", m, f64::MIN_POSITIVE, 1.0e3, "must be in (0, 1e3] m");
+            c.range("rating.min_clearance_m", m, &LIMIT_M);
             if s.ground.is_none() {
                 c.fail("rating.min_clearance_m", m, "needs a [ground] table to measure the clearance from");
             }
         }
         (None, Some(m)) => {
-            c.within("rating.max_sag_m", m, f64::MIN_POSITIVE, 1.0e3, "must be in (0, 1e3] m");
+            c.range("rating.max_sag_m", m, &LIMIT_M);
         }
     }
     if let Some(t) = r.max_temperature_k {
-        c.within("rating.max_temperature_k", t, 273.15, 600.0, "must be in [273.15, 600] K");
+        c.range("rating.max_temperature_k", t, &Allowed::closed(273.15, 600.0, "K"));
     }
     if let Some(i) = r.step_to_a {
-        c.within("rating.step_to_a", i, f64::MIN_POSITIVE, 1.0e5, "must be in (0, 1e5] A");
+        c.range("rating.step_to_a", i, &Allowed::open_closed(0.0, 1.0e5, "A"));
     }
     if s.thermal.is_none() {
         c.fail("rating", "", "needs a [thermal] table (conductor, weather, current)");

@@ -11,11 +11,19 @@
 //! unless a string's damper is far beyond a string's or a crossarm is stiff on a light pivot. Where one
 //! does, the run says which ([`StepLimit`], a warning of [`super::warnings`]).
 
+use super::range::{
+    AXIAL_STIFFNESS_N, INSULATOR_DAMPING_N_S, INSULATOR_LENGTH_M, INSULATOR_MASS_KG, INSULATOR_STIFFNESS_N,
+    LINEAR_DENSITY_KG_PER_M, RATED_TENSILE_STRENGTH_N, Range as Allowed,
+};
 use super::schema::{Scenario, SectionSpec, ShapeSpec, SupportSpec};
 use super::validate::{Check, MAX_SEGMENTS, MAX_SPAN_M, number};
 use crate::wire::insulator::{damped_clamp_stable_step_s, pivot_stable_step_s};
 use crate::wire::section::{self, CrossarmSpec, Layout, Section, Span, Stringing, Support, plumb_clamp};
 use crate::wire::{Conductor, Wire};
+
+/// Horizontal stringing tension of a span [N] (`section.horizontal_tension_n`, a span's own).
+const HORIZONTAL_TENSION_N: Allowed =
+    Allowed::open_closed(0.0, 1.0e7, "N").note(" (lines are strung at 10 to 25 % of the rated strength)");
 
 /// Largest number of segments in one span.
 pub const MAX_SEGMENTS_PER_SPAN: usize = 1_000_000;
@@ -90,29 +98,25 @@ pub(crate) fn check(
                     c.fail(&f("kind"), "\"suspension\"", "the first and last supports of a section must be dead-ends");
                 }
                 ok &= c.coordinates(&f("pivot_m"), *pivot_m);
-                ok &= c.within(&f("insulator_length_m"), *insulator_length_m, 0.01, 20.0, "must be in [0.01, 20] m");
-                ok &= c.within(&f("insulator_mass_kg"), *insulator_mass_kg, 0.0, 5000.0, "must be in [0, 5000] kg");
-                ok &= c.within(
+                ok &= c.range(&f("insulator_length_m"), *insulator_length_m, &INSULATOR_LENGTH_M);
+                ok &= c.range(&f("insulator_mass_kg"), *insulator_mass_kg, &INSULATOR_MASS_KG);
+                ok &= c.range(
                     &f("insulator_stiffness_n"),
                     *insulator_stiffness_n,
-                    1.0e4,
-                    1.0e10,
-                    "must be in [1e4, 1e10] N (strings are about 1e7 to 1e8 N)",
+                    &INSULATOR_STIFFNESS_N.note(" (strings are about 1e7 to 1e8 N)"),
                 );
-                ok &= c.within(
+                ok &= c.range(
                     &f("insulator_damping_n_s"),
                     *insulator_damping_n_s,
-                    0.0,
-                    1.0e7,
-                    "must be in [0, 1e7] N s (1e4 N s damps a string's ringing in a few periods)",
+                    &INSULATOR_DAMPING_N_S.note(" (1e4 N s damps a string's ringing in a few periods)"),
                 );
                 let arm = crossarm.map(|a| {
                     let g = |name: &str| format!("section.supports[{k}].crossarm.{name}");
-                    let spring = "must be in (0, 1e10] N/m";
-                    ok &= c.within(&g("longitudinal_n_per_m"), a.longitudinal_n_per_m, f64::MIN_POSITIVE, 1e10, spring);
-                    ok &= c.within(&g("transverse_n_per_m"), a.transverse_n_per_m, f64::MIN_POSITIVE, 1e10, spring);
-                    ok &= c.within(&g("mass_kg"), a.mass_kg, f64::MIN_POSITIVE, 1e6, "must be in (0, 1e6] kg");
-                    ok &= c.within(&g("damping_n_s_per_m"), a.damping_n_s_per_m, 0.0, 1e9, "must be in [0, 1e9] N s/m");
+                    let spring = Allowed::open_closed(0.0, 1.0e10, "N/m");
+                    ok &= c.range(&g("longitudinal_n_per_m"), a.longitudinal_n_per_m, &spring);
+                    ok &= c.range(&g("transverse_n_per_m"), a.transverse_n_per_m, &spring);
+                    ok &= c.range(&g("mass_kg"), a.mass_kg, &Allowed::open_closed(0.0, 1.0e6, "kg"));
+                    ok &= c.range(&g("damping_n_s_per_m"), a.damping_n_s_per_m, &Allowed::closed(0.0, 1.0e9, "N s/m"));
                     CrossarmSpec {
                         longitudinal_n_per_m: a.longitudinal_n_per_m,
                         transverse_n_per_m: a.transverse_n_per_m,
@@ -143,6 +147,39 @@ pub(crate) fn check(
         );
         return None;
     }
+    if let Some(h) = sec.horizontal_tension_n {
+        ok &= c.range("section.horizontal_tension_n", h, &HORIZONTAL_TENSION_N);
+    }
+    // The section's tension, once for all spans.
+    let rts = s.conductor.rated_tensile_strength_n;
+    let section_h = match (sec.horizontal_tension_n, sec.tension_fraction_of_rts) {
+        (Some(h), Some(fr)) => {
+            ok = false;
+            c.fail("section.tension_fraction_of_rts", number(fr), "give it or section.horizontal_tension_n, not both");
+            Some(h)
+        }
+        (Some(h), None) => Some(h),
+        (None, Some(fr)) => {
+            ok &= c.range("section.tension_fraction_of_rts", fr, &Allowed::open_closed(0.0, 0.6, ""));
+            match rts {
+                Some(r) => {
+                    // Reported with [conductor] (`super::validate`).
+                    ok &= RATED_TENSILE_STRENGTH_N.contains(r);
+                    Some(fr * r)
+                }
+                None => {
+                    ok = false;
+                    c.fail(
+                        "conductor.rated_tensile_strength_n",
+                        "(missing)",
+                        "required with section.tension_fraction_of_rts",
+                    );
+                    None
+                }
+            }
+        }
+        (None, None) => None,
+    };
     let mut spans = Vec::with_capacity(n_spans);
     let mut total = 0usize;
     for k in 0..n_spans {
@@ -182,54 +219,16 @@ pub(crate) fn check(
             }
         };
         total += n;
-        let rts = s.conductor.rated_tensile_strength_n;
-        let section_h = match (sec.horizontal_tension_n, sec.tension_fraction_of_rts) {
-            (Some(h), Some(fr)) => {
-                ok = false;
-                c.fail(
-                    "section.tension_fraction_of_rts",
-                    number(fr),
-                    "give it or section.horizontal_tension_n, not both",
-                );
-                Some(h)
-            }
-            (Some(h), None) => Some(h),
-            (None, Some(fr)) => {
-                ok &= c.within("section.tension_fraction_of_rts", fr, f64::MIN_POSITIVE, 0.6, "must be in (0, 0.6]");
-                match rts {
-                    Some(r) => {
-                        ok &= c.within(
-                            "conductor.rated_tensile_strength_n",
-                            r,
-                            f64::MIN_POSITIVE,
-                            1.0e7,
-                            "must be in (0, 1e7] N (ACSR Drake: about 140 kN)",
-                        );
-                        Some(fr * r)
-                    }
-                    None => {
-                        ok = false;
-                        c.fail(
-                            "conductor.rated_tensile_strength_n",
-                            "(missing)",
-                            "required with section.tension_fraction_of_rts",
-                        );
-                        None
-                    }
-                }
-            }
-            (None, None) => None,
-        };
         let rho = match sp.linear_density_kg_per_m {
             Some(r) => {
-                ok &= c.within(&f("linear_density_kg_per_m"), r, 1.0e-3, 1.0e3, "must be in [1e-3, 1e3] kg/m");
+                ok &= c.range(&f("linear_density_kg_per_m"), r, &LINEAR_DENSITY_KG_PER_M);
                 Some(r)
             }
             None => None,
         };
         let span_ea = match sp.axial_stiffness_n {
             Some(e) => {
-                ok &= c.within(&f("axial_stiffness_n"), e, 1.0, 1.0e10, "must be in [1, 1e10] N");
+                ok &= c.range(&f("axial_stiffness_n"), e, &AXIAL_STIFFNESS_N);
                 Some(e)
             }
             None => None,
@@ -282,13 +281,12 @@ pub(crate) fn check(
                 Some(Stringing::Sag(sag))
             }
             (None, None, Some(h)) => {
-                ok &= c.within(
-                    &f("horizontal_tension_n"),
-                    h,
-                    f64::MIN_POSITIVE,
-                    1.0e7,
-                    "must be in (0, 1e7] N (lines are strung at 10 to 25 % of the rated strength)",
-                );
+                // Name the field the value was written in: the span's own, or the section's (reported once,
+                // before the spans).
+                ok &= HORIZONTAL_TENSION_N.contains(h);
+                if sp.horizontal_tension_n.is_some() {
+                    c.range(&f("horizontal_tension_n"), h, &HORIZONTAL_TENSION_N);
+                }
                 if s.loads.gravity_m_per_s2 <= 0.0 {
                     ok = false;
                     c.fail(
@@ -362,7 +360,7 @@ pub(crate) fn check(
     let t_ref = s.conductor.reference_temperature_k;
     let stringing_factor = match sec.stringing_temperature_k {
         Some(t0) => {
-            if !c.within("section.stringing_temperature_k", t0, 223.15, 373.15, "must be in [223.15, 373.15] K") {
+            if !c.range("section.stringing_temperature_k", t0, &Allowed::closed(223.15, 373.15, "K")) {
                 return None;
             }
             let factor = 1.0 + s.conductor.thermal_expansion_per_k * (t0 - t_ref);

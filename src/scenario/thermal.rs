@@ -26,6 +26,9 @@
 use serde::Deserialize;
 
 use super::Problem;
+use super::range::{
+    CONDUCTOR_TEMPERATURE_K, CURRENT_A, HEAT_STEP_S, ICE_DENSITY_KG_PER_M3, ICE_THICKNESS_M, Range as Allowed,
+};
 use super::thermal_conductor::{ConductorSpec, check_inclination, check_thermal_conductor};
 use super::validate::{Check, number};
 use crate::thermal::deicing::{Deicing, DeicingOptions, IceShell, MELTING_POINT_K, ShedCriterion};
@@ -219,26 +222,21 @@ pub fn weather(w: &WeatherSpec) -> Weather {
 
 /// Check a weather table under the field prefix `at` (e.g. `thermal.weather`).
 pub fn check_weather(c: &mut Check, at: &str, w: &WeatherSpec, standard: StandardSpec) {
-    c.within(
-        &format!("{at}.air_temperature_k"),
-        w.air_temperature_k,
-        200.0,
-        350.0,
-        "must be in [200, 350] K (-73 to 77 C)",
-    );
-    c.within(&format!("{at}.wind_speed_m_per_s"), w.wind_speed_m_per_s, 0.0, 50.0, "must be in [0, 50] m/s");
-    c.within(&format!("{at}.wind_angle_deg"), w.wind_angle_deg, 0.0, 180.0, "must be in [0, 180] deg");
-    c.within(&format!("{at}.elevation_m"), w.elevation_m, 0.0, 6000.0, "must be in [0, 6000] m");
+    let air = Allowed::closed(200.0, 350.0, "K").note(" (-73 to 77 C)");
+    c.range(&format!("{at}.air_temperature_k"), w.air_temperature_k, &air);
+    c.range(&format!("{at}.wind_speed_m_per_s"), w.wind_speed_m_per_s, &Allowed::closed(0.0, 50.0, "m/s"));
+    c.range(&format!("{at}.wind_angle_deg"), w.wind_angle_deg, &Allowed::closed(0.0, 180.0, "deg"));
+    c.range(&format!("{at}.elevation_m"), w.elevation_m, &Allowed::closed(0.0, 6000.0, "m"));
     if let Some(s) = &w.sun {
-        c.within(&format!("{at}.sun.latitude_deg"), s.latitude_deg, -90.0, 90.0, "must be in [-90, 90] deg");
-        c.within(&format!("{at}.sun.day_of_year"), s.day_of_year, 1.0, 366.0, "must be in [1, 366]");
-        c.within(&format!("{at}.sun.solar_hour"), s.solar_hour, 0.0, 24.0, "must be in [0, 24] h");
-        c.within(&format!("{at}.sun.line_azimuth_deg"), s.line_azimuth_deg, 0.0, 360.0, "must be in [0, 360] deg");
+        c.range(&format!("{at}.sun.latitude_deg"), s.latitude_deg, &Allowed::closed(-90.0, 90.0, "deg"));
+        c.range(&format!("{at}.sun.day_of_year"), s.day_of_year, &Allowed::closed(1.0, 366.0, ""));
+        c.range(&format!("{at}.sun.solar_hour"), s.solar_hour, &Allowed::closed(0.0, 24.0, "h"));
+        c.range(&format!("{at}.sun.line_azimuth_deg"), s.line_azimuth_deg, &Allowed::closed(0.0, 360.0, "deg"));
         if let Some(n) = s.clearness_ratio {
-            c.within(&format!("{at}.sun.clearness_ratio"), n, 0.0, 1.5, "must be in [0, 1.5]");
+            c.range(&format!("{at}.sun.clearness_ratio"), n, &Allowed::closed(0.0, 1.5, ""));
         }
         if let Some(a) = s.albedo {
-            c.within(&format!("{at}.sun.albedo"), a, 0.0, 1.0, "must be in [0, 1]");
+            c.range(&format!("{at}.sun.albedo"), a, &Allowed::closed(0.0, 1.0, ""));
         }
         // A measured radiation the chosen standard would ignore: the run would silently use a computed
         // clear sky instead of the measurement (the sky descriptors only warn: [`unused_weather_inputs`]).
@@ -251,7 +249,7 @@ pub fn check_weather(c: &mut Check, at: &str, w: &WeatherSpec, standard: Standar
             );
         }
         if let Some(g) = s.measured_global_w_per_m2 {
-            c.within(&format!("{at}.sun.measured_global_w_per_m2"), g, 0.0, 1500.0, "must be in [0, 1500] W/m^2");
+            c.range(&format!("{at}.sun.measured_global_w_per_m2"), g, &Allowed::closed(0.0, 1500.0, "W/m^2"));
         }
     }
 }
@@ -308,9 +306,9 @@ pub fn check_current(c: &mut Check, field: &str, points: &[[f64; 2]]) -> Option<
     }
     let mut ok = true;
     for (k, p) in points.iter().enumerate() {
-        ok &=
-            c.within(&format!("{field}[{k}][0]"), p[0], 0.0, super::validate::MAX_TIME_S, "time must be in [0, 1e8] s");
-        ok &= c.within(&format!("{field}[{k}][1]"), p[1], 0.0, 1.0e5, "current must be in [0, 1e5] A");
+        let time = Allowed::closed(0.0, super::validate::MAX_TIME_S, "s").words("time must be in");
+        ok &= c.range(&format!("{field}[{k}][0]"), p[0], &time);
+        ok &= c.range(&format!("{field}[{k}][1]"), p[1], &CURRENT_A.words("current must be in"));
         if k > 0 && p[0] < points[k - 1][0] {
             c.fail(&format!("{field}[{k}][0]"), p[0], "times must not decrease (equal times make a step)");
             ok = false;
@@ -336,9 +334,9 @@ pub(crate) fn check(c: &mut Check, t: &ThermalSpec, temperature_event: Option<us
     );
     check_weather(c, "thermal.weather", &t.weather, t.standard);
     check_current(c, "thermal.current_a", &t.current_a);
-    c.within("thermal.step_s", t.step_s, 1.0e-3, 600.0, "must be in [1e-3, 600] s");
+    c.range("thermal.step_s", t.step_s, &HEAT_STEP_S);
     if let Some(k) = t.initial_temperature_k {
-        c.within("thermal.initial_temperature_k", k, 200.0, 500.0, "must be in [200, 500] K");
+        c.range("thermal.initial_temperature_k", k, &CONDUCTOR_TEMPERATURE_K);
     }
     if let Some(k) = temperature_event {
         c.fail(
@@ -348,14 +346,8 @@ pub(crate) fn check(c: &mut Check, t: &ThermalSpec, temperature_event: Option<us
         );
     }
     if let Some(d) = &t.deicing {
-        c.within("thermal.deicing.thickness_m", d.thickness_m, 1.0e-4, 0.1, "must be in [1e-4, 0.1] m");
-        c.within(
-            "thermal.deicing.density_kg_per_m3",
-            d.density_kg_per_m3,
-            100.0,
-            1000.0,
-            "must be in [100, 1000] kg/m^3",
-        );
+        c.range("thermal.deicing.thickness_m", d.thickness_m, &ICE_THICKNESS_M);
+        c.range("thermal.deicing.density_kg_per_m3", d.density_kg_per_m3, &ICE_DENSITY_KG_PER_M3);
         let constant = t.current_a.windows(2).all(|w| w[0][1] == w[1][1]);
         if !constant {
             c.fail(
@@ -630,11 +622,11 @@ pub fn parse_case(text: &str, file: &str) -> Result<ThermalCase, super::InputErr
     );
     check_weather(&mut c, "weather", &case.weather, case.standard);
     for (k, &i) in case.current_a.iter().enumerate() {
-        c.within(&format!("current_a[{k}]"), i, 0.0, 1.0e5, "must be in [0, 1e5] A");
+        c.range(&format!("current_a[{k}]"), i, &CURRENT_A);
     }
     let air = case.weather.air_temperature_k;
     for (k, &t) in case.max_temperature_k.iter().enumerate() {
-        if c.within(&format!("max_temperature_k[{k}]"), t, 250.0, 600.0, "must be in [250, 600] K") && t <= air {
+        if c.range(&format!("max_temperature_k[{k}]"), t, &Allowed::closed(250.0, 600.0, "K")) && t <= air {
             c.fail(
                 &format!("max_temperature_k[{k}]"),
                 number(t),
@@ -660,10 +652,8 @@ pub fn parse_case(text: &str, file: &str) -> Result<ThermalCase, super::InputErr
     }
     if let Some(t) = &case.transient {
         check_current(&mut c, "transient.current_a", &t.current_a);
-        c.within("transient.end_time_s", t.end_time_s, f64::MIN_POSITIVE, 1.0e7, "must be in (0, 1e7] s");
-        if c.within("transient.step_s", t.step_s, 1.0e-3, 600.0, "must be in [1e-3, 600] s")
-            && t.end_time_s / t.step_s > MAX_HISTORY_SAMPLES
-        {
+        c.range("transient.end_time_s", t.end_time_s, &Allowed::open_closed(0.0, 1.0e7, "s"));
+        if c.range("transient.step_s", t.step_s, &HEAT_STEP_S) && t.end_time_s / t.step_s > MAX_HISTORY_SAMPLES {
             c.fail(
                 "transient.step_s",
                 number(t.step_s),
@@ -676,16 +666,16 @@ pub fn parse_case(text: &str, file: &str) -> Result<ThermalCase, super::InputErr
             );
         }
         if let Some(k) = t.initial_temperature_k {
-            c.within("transient.initial_temperature_k", k, 200.0, 500.0, "must be in [200, 500] K");
+            c.range("transient.initial_temperature_k", k, &CONDUCTOR_TEMPERATURE_K);
         }
         if let Some(k) = t.limit_k {
-            c.within("transient.limit_k", k, 200.0, 600.0, "must be in [200, 600] K");
+            c.range("transient.limit_k", k, &Allowed::closed(200.0, 600.0, "K"));
         }
     }
     if let Some(d) = &case.deicing {
-        c.within("deicing.thickness_m", d.thickness_m, 1.0e-4, 0.1, "must be in [1e-4, 0.1] m");
-        c.within("deicing.density_kg_per_m3", d.density_kg_per_m3, 100.0, 1000.0, "must be in [100, 1000] kg/m^3");
-        if c.within("deicing.step_s", d.step_s, 1.0e-3, 600.0, "must be in [1e-3, 600] s") {
+        c.range("deicing.thickness_m", d.thickness_m, &ICE_THICKNESS_M);
+        c.range("deicing.density_kg_per_m3", d.density_kg_per_m3, &ICE_DENSITY_KG_PER_M3);
+        if c.range("deicing.step_s", d.step_s, &HEAT_STEP_S) {
             // Each de-icing run goes to its shedding, at most the longest time asked (the de-icing's default
             // cap is a day); the current that sheds in time is found by bisection over such runs.
             let horizon = d.shed_within_s.iter().copied().fold(DeicingOptions::default().max_time_s, f64::max);
@@ -703,10 +693,10 @@ pub fn parse_case(text: &str, file: &str) -> Result<ThermalCase, super::InputErr
             }
         }
         for (k, &i) in d.current_a.iter().enumerate() {
-            c.within(&format!("deicing.current_a[{k}]"), i, f64::MIN_POSITIVE, 1.0e5, "must be in (0, 1e5] A");
+            c.range(&format!("deicing.current_a[{k}]"), i, &Allowed::open_closed(0.0, 1.0e5, "A"));
         }
         for (k, &t) in d.shed_within_s.iter().enumerate() {
-            c.within(&format!("deicing.shed_within_s[{k}]"), t, f64::MIN_POSITIVE, 1.0e6, "must be in (0, 1e6] s");
+            c.range(&format!("deicing.shed_within_s[{k}]"), t, &Allowed::open_closed(0.0, 1.0e6, "s"));
         }
     }
     if c.0.is_empty() { Ok(case) } else { Err(super::InputError::Invalid { file: file.into(), problems: c.0 }) }

@@ -41,6 +41,10 @@ use std::path::{Path, PathBuf};
 use serde::Deserialize;
 use serde::de::{self, Deserializer, MapAccess, Visitor};
 
+use super::range::{
+    AXIAL_STIFFNESS_N, CONDUCTOR_TEMPERATURE_K, LINEAR_DENSITY_KG_PER_M, Range as Allowed,
+    SPECIFIC_HEAT_COEFFICIENT_PER_K, SPECIFIC_HEAT_J_PER_KG_K, THERMAL_EXPANSION_PER_K,
+};
 use super::validate::Check;
 use super::{InputError, Problem};
 use crate::thermal::catalog::{self, CatalogConductor, CatalogError};
@@ -117,7 +121,7 @@ pub fn check_thermal_conductor(c: &mut Check, at: &str, t: &ThermalConductor) ->
     let f = |name: &str| format!("{at}.{name}");
     let n0 = c.0.len();
     let d = t.diameter_m;
-    if c.within(&f("diameter_m"), d, 1.0e-3, 0.2, "must be in [1e-3, 0.2] m") {
+    if c.range(&f("diameter_m"), d, &Allowed::closed(1.0e-3, 0.2, "m")) {
         if !(t.core_diameter_m.is_finite() && t.core_diameter_m >= 0.0 && t.core_diameter_m < d) {
             c.fail(&f("core_diameter_m"), t.core_diameter_m, &format!("must be in [0, diameter_m) = [0, {d}) m"));
         }
@@ -133,8 +137,8 @@ pub fn check_thermal_conductor(c: &mut Check, at: &str, t: &ThermalConductor) ->
         );
     }
     let (r_lo, t_lo) = (t.resistance_low_ohm_per_m, t.temperature_low_k);
-    let lo_ok = c.within(&f("resistance_low_ohm_per_m"), r_lo, 1.0e-7, 0.1, "must be in [1e-7, 0.1] ohm/m")
-        & c.within(&f("temperature_low_k"), t_lo, 200.0, 500.0, "must be in [200, 500] K (kelvin, not Celsius)");
+    let lo_ok = c.range(&f("resistance_low_ohm_per_m"), r_lo, &Allowed::closed(1.0e-7, 0.1, "ohm/m"))
+        & c.range(&f("temperature_low_k"), t_lo, &CONDUCTOR_TEMPERATURE_K.note(" (kelvin, not Celsius)"));
     if lo_ok {
         let hi_r = c.within(
             &f("resistance_high_ohm_per_m"),
@@ -168,22 +172,24 @@ pub fn check_thermal_conductor(c: &mut Check, at: &str, t: &ThermalConductor) ->
             }
         }
     }
-    c.within(&f("magnetic_core_factor"), t.magnetic_core_factor, 1.0, 1.5, "must be in [1, 1.5]");
-    c.within(&f("emissivity"), t.emissivity, 0.0, 1.0, "must be in [0, 1]");
-    c.within(&f("absorptivity"), t.absorptivity, 0.0, 1.0, "must be in [0, 1]");
-    c.within(&f("outer_mass_kg_per_m"), t.outer_mass_kg_per_m, 1.0e-3, 100.0, "must be in [1e-3, 100] kg/m");
-    let heat = "must be in [100, 5000] J/(kg K) (aluminium 897, steel 481)";
-    c.within(&f("outer_specific_heat_j_per_kg_k"), t.outer_specific_heat_j_per_kg_k, 100.0, 5000.0, heat);
-    let beta = "must be in [0, 1e-3] 1/K (TB 601 section 4.3: aluminium 3.8e-4, steel 1.0e-4)";
-    c.within(&f("outer_specific_heat_coefficient_per_k"), t.outer_specific_heat_coefficient_per_k, 0.0, 1.0e-3, beta);
-    if c.within(&f("core_mass_kg_per_m"), t.core_mass_kg_per_m, 0.0, 100.0, "must be in [0, 100] kg/m")
+    let fraction = Allowed::closed(0.0, 1.0, "");
+    c.range(&f("magnetic_core_factor"), t.magnetic_core_factor, &Allowed::closed(1.0, 1.5, ""));
+    c.range(&f("emissivity"), t.emissivity, &fraction);
+    c.range(&f("absorptivity"), t.absorptivity, &fraction);
+    c.range(&f("outer_mass_kg_per_m"), t.outer_mass_kg_per_m, &Allowed::closed(1.0e-3, 100.0, "kg/m"));
+    let heat = SPECIFIC_HEAT_J_PER_KG_K;
+    let beta = SPECIFIC_HEAT_COEFFICIENT_PER_K;
+    c.range(&f("outer_specific_heat_j_per_kg_k"), t.outer_specific_heat_j_per_kg_k, &heat);
+    c.range(&f("outer_specific_heat_coefficient_per_k"), t.outer_specific_heat_coefficient_per_k, &beta);
+    if c.range(&f("core_mass_kg_per_m"), t.core_mass_kg_per_m, &Allowed::closed(0.0, 100.0, "kg/m"))
         && t.core_mass_kg_per_m > 0.0
     {
-        c.within(&f("core_specific_heat_j_per_kg_k"), t.core_specific_heat_j_per_kg_k, 100.0, 5000.0, heat);
+        c.range(&f("core_specific_heat_j_per_kg_k"), t.core_specific_heat_j_per_kg_k, &heat);
     } else {
-        c.within(&f("core_specific_heat_j_per_kg_k"), t.core_specific_heat_j_per_kg_k, 0.0, 5000.0, heat);
+        // Without a core its specific heat is not used: 0 is allowed too.
+        c.range(&f("core_specific_heat_j_per_kg_k"), t.core_specific_heat_j_per_kg_k, &Allowed { lo: 0.0, ..heat });
     }
-    c.within(&f("core_specific_heat_coefficient_per_k"), t.core_specific_heat_coefficient_per_k, 0.0, 1.0e-3, beta);
+    c.range(&f("core_specific_heat_coefficient_per_k"), t.core_specific_heat_coefficient_per_k, &beta);
     c.0.len() == n0
 }
 
@@ -191,12 +197,12 @@ pub fn check_thermal_conductor(c: &mut Check, at: &str, t: &ThermalConductor) ->
 fn check_catalog_entry(c: &mut Check, at: &str, k: &CatalogConductor) {
     check_thermal_conductor(c, at, &k.thermal());
     let f = |name: &str| format!("{at}.{name}");
-    c.within(&f("aluminium_area_m2"), k.aluminium_area_m2, 1.0e-6, 1.0e-2, "must be in [1e-6, 1e-2] m^2");
-    c.within(&f("steel_area_m2"), k.steel_area_m2, 0.0, 1.0e-2, "must be in [0, 1e-2] m^2");
-    c.within(&f("linear_density_kg_per_m"), k.linear_density_kg_per_m, 1.0e-3, 1.0e3, "must be in [1e-3, 1e3] kg/m");
-    c.within(&f("rated_tensile_strength_n"), k.rated_tensile_strength_n, 1.0, 1.0e7, "must be in [1, 1e7] N");
-    c.within(&f("axial_stiffness_n"), k.axial_stiffness_n, 1.0, 1.0e10, "must be in [1, 1e10] N");
-    c.within(&f("thermal_expansion_per_k"), k.thermal_expansion_per_k, 0.0, 1.0e-3, "must be in [0, 1e-3] 1/K");
+    c.range(&f("aluminium_area_m2"), k.aluminium_area_m2, &Allowed::closed(1.0e-6, 1.0e-2, "m^2"));
+    c.range(&f("steel_area_m2"), k.steel_area_m2, &Allowed::closed(0.0, 1.0e-2, "m^2"));
+    c.range(&f("linear_density_kg_per_m"), k.linear_density_kg_per_m, &LINEAR_DENSITY_KG_PER_M);
+    c.range(&f("rated_tensile_strength_n"), k.rated_tensile_strength_n, &Allowed::closed(1.0, 1.0e7, "N"));
+    c.range(&f("axial_stiffness_n"), k.axial_stiffness_n, &AXIAL_STIFFNESS_N);
+    c.range(&f("thermal_expansion_per_k"), k.thermal_expansion_per_k, &THERMAL_EXPANSION_PER_K);
 }
 
 /// Check the inclination `inclination_deg` [deg] of a span at `field`: TB 601 only (IEEE Std 738 has no such

@@ -6,6 +6,10 @@ use std::fmt;
 use std::ops::Range;
 
 use super::events::{EventSpec, GroundSpec, HeatBoundarySpec, break_segment, node_range, segment_range};
+use super::range::{
+    AXIAL_STIFFNESS_N, EVENT_TEMPERATURE_K, LINEAR_DENSITY_KG_PER_M, RATED_TENSILE_STRENGTH_N, Range as Allowed,
+    THERMAL_EXPANSION_PER_K,
+};
 use super::schema::{Scenario, ShapeSpec, SupportSpec, TensionLawSpec, WindLawSpec};
 use super::section::SectionGrid;
 use crate::element::tension::LawKind;
@@ -65,7 +69,15 @@ impl Check {
         }
         ok
     }
-    /// `lo <= x <= hi`.
+    /// `x` in `range` ([`super::range::Range`]); its text says what is allowed.
+    pub fn range(&mut self, field: &str, x: f64, range: &super::range::Range) -> bool {
+        let ok = range.contains(x);
+        if !ok {
+            self.fail_number(field, x, &range.to_string());
+        }
+        ok
+    }
+    /// `lo <= x <= hi`, for a range whose ends depend on other fields (else [`Check::range`]).
     pub fn within(&mut self, field: &str, x: f64, lo: f64, hi: f64, allowed: &str) -> bool {
         let ok = x.is_finite() && x >= lo && x <= hi;
         if !ok {
@@ -145,36 +157,21 @@ pub(crate) fn check(s: &Scenario) -> (Vec<Problem>, Derived) {
 
     // Conductor.
     let cd = &s.conductor;
-    let rho_ok = c.within(
-        "conductor.linear_density_kg_per_m",
-        cd.linear_density_kg_per_m,
-        1.0e-3,
-        1.0e3,
-        "must be a finite number > 0, in [1e-3, 1e3] kg/m (bare conductors 0.1 to 5 kg/m, heavily iced ones \
-         up to about 30 kg/m)",
-    );
-    c.within(
+    let rho_ok = c.range("conductor.linear_density_kg_per_m", cd.linear_density_kg_per_m, &CONDUCTOR_DENSITY);
+    c.range(
         "conductor.thermal_expansion_per_k",
         cd.thermal_expansion_per_k,
-        0.0,
-        1.0e-3,
-        "must be in [0, 1e-3] 1/K (aluminium: 23.8e-6, section 5.4)",
+        &THERMAL_EXPANSION_PER_K.note(" (aluminium: 23.8e-6, section 5.4)"),
     );
-    c.within(
-        "conductor.reference_temperature_k",
-        cd.reference_temperature_k,
-        MIN_REFERENCE_TEMPERATURE_K,
-        5000.0,
-        "must be in [173.15, 5000] K: a temperature in kelvin, not Celsius (15 C is 288.15 K); the floor \
-         -100 C is below the coldest air measured on Earth (-89.2 C)",
-    );
+    c.range("conductor.reference_temperature_k", cd.reference_temperature_k, &REFERENCE_TEMPERATURE);
+    if let Some(r) = cd.rated_tensile_strength_n {
+        c.range("conductor.rated_tensile_strength_n", r, &RATED_TENSILE_STRENGTH_N);
+    }
     let d_ok = match cd.diameter_m {
-        Some(d) => c.within(
+        Some(d) => c.range(
             "conductor.diameter_m",
             d,
-            1.0e-4,
-            1.0,
-            "must be a finite number > 0, in [1e-4, 1] m (conductors are 5 to 50 mm)",
+            &Allowed::closed(1.0e-4, 1.0, "m").finite().note(" (conductors are 5 to 50 mm)"),
         ),
         None => false,
     };
@@ -187,14 +184,12 @@ pub(crate) fn check(s: &Scenario) -> (Vec<Problem>, Derived) {
             );
             None
         }
-        (Some(ea), None) => c.within("conductor.axial_stiffness_n", ea, 1.0, 1.0e10, EA_ALLOWED).then_some(ea),
+        (Some(ea), None) => c.range("conductor.axial_stiffness_n", ea, &EA_ALLOWED).then_some(ea),
         (None, Some(e)) => {
-            let e_ok = c.within(
+            let e_ok = c.range(
                 "conductor.youngs_modulus_pa",
                 e,
-                1.0e6,
-                1.0e12,
-                "must be a finite number > 0, in [1e6, 1e12] Pa (aluminium 6.25e10, steel 2e11)",
+                &Allowed::closed(1.0e6, 1.0e12, "Pa").finite().note(" (aluminium 6.25e10, steel 2e11)"),
             );
             match cd.diameter_m {
                 None => {
@@ -203,14 +198,15 @@ pub(crate) fn check(s: &Scenario) -> (Vec<Problem>, Derived) {
                 }
                 Some(d) if e_ok && d_ok => {
                     let ea = e * std::f64::consts::PI * d * d / 4.0;
-                    c.within(
-                        "conductor.youngs_modulus_pa",
-                        ea,
-                        1.0,
-                        1.0e10,
-                        &format!("{EA_ALLOWED}: E pi d^2 / 4 = {ea:e} N"),
-                    )
-                    .then_some(ea)
+                    let ok = EA_ALLOWED.contains(ea);
+                    if !ok {
+                        c.fail_number(
+                            "conductor.youngs_modulus_pa",
+                            ea,
+                            &format!("{EA_ALLOWED}: E pi d^2 / 4 = {ea:e} N"),
+                        );
+                    }
+                    ok.then_some(ea)
                 }
                 Some(_) => None,
             }
@@ -350,7 +346,7 @@ pub(crate) fn check(s: &Scenario) -> (Vec<Problem>, Derived) {
 
     // Loads.
     let ld = &s.loads;
-    c.within("loads.gravity_m_per_s2", ld.gravity_m_per_s2, 0.0, 100.0, "must be in [0, 100] m/s^2");
+    c.range("loads.gravity_m_per_s2", ld.gravity_m_per_s2, &Allowed::closed(0.0, 100.0, "m/s^2"));
     if c.finite3("loads.uniform_load_n_per_m", ld.uniform_load_n_per_m)
         && ld.uniform_load_n_per_m.iter().any(|q| q.abs() > 1.0e4)
     {
@@ -375,33 +371,15 @@ pub(crate) fn check(s: &Scenario) -> (Vec<Problem>, Derived) {
                 }
             }
         }
-        c.within(
-            "loads.wind.speed_m_per_s",
-            w.speed_m_per_s,
-            MIN_WIND_SPEED_M_PER_S,
-            MAX_WIND_SPEED_M_PER_S,
-            "must be in [0.01, 100] m/s (design wind speeds are below about 70 m/s; check the unit: m/s, not \
-             km/h; for still air leave out [loads.wind])",
-        );
-        c.within(
-            "loads.wind.air_density_kg_per_m3",
-            w.air_density_kg_per_m3,
-            f64::MIN_POSITIVE,
-            MAX_AIR_DENSITY_KG_PER_M3,
-            "must be a finite number > 0 and at most 2 kg/m^3 (sea level 1.225; check the unit: kg/m^3, not g/m^3)",
-        );
-        c.within("loads.wind.normal_coefficient", w.normal_coefficient, 0.0, 10.0, COEFFICIENT_ALLOWED);
-        c.within("loads.wind.tangential_coefficient", w.tangential_coefficient, 0.0, 10.0, COEFFICIENT_ALLOWED);
-        c.within("loads.wind.initial_scale", w.initial_scale, 0.0, 100.0, SCALE_ALLOWED);
+        c.range("loads.wind.speed_m_per_s", w.speed_m_per_s, &WIND_SPEED);
+        c.range("loads.wind.air_density_kg_per_m3", w.air_density_kg_per_m3, &AIR_DENSITY);
+        c.range("loads.wind.normal_coefficient", w.normal_coefficient, &COEFFICIENT_ALLOWED);
+        c.range("loads.wind.tangential_coefficient", w.tangential_coefficient, &COEFFICIENT_ALLOWED);
+        c.range("loads.wind.initial_scale", w.initial_scale, &SCALE_ALLOWED);
         match (w.law, w.pressure_n_per_m) {
             (WindLawSpec::UniformNormal, Some(p)) => {
-                c.within(
-                    "loads.wind.pressure_n_per_m",
-                    p,
-                    0.0,
-                    1.0e4,
-                    "must be a finite number >= 0, at most 1e4 N/m (section 4.1: 3.805 N/m)",
-                );
+                let pressure = Allowed::closed(0.0, 1.0e4, "N/m").at_most().note(" (section 4.1: 3.805 N/m)");
+                c.range("loads.wind.pressure_n_per_m", p, &pressure);
             }
             (WindLawSpec::UniformNormal, None) => {
                 c.fail("loads.wind.pressure_n_per_m", "(missing)", "required with loads.wind.law = \"uniform_normal\"")
@@ -419,25 +397,14 @@ pub(crate) fn check(s: &Scenario) -> (Vec<Problem>, Derived) {
 
     // Numerics.
     let nm = &s.numerics;
-    let courant_ok = c.within("numerics.courant", nm.courant, f64::MIN_POSITIVE, 1.0, "must be in (0, 1]");
-    c.within("numerics.smoothing", nm.smoothing, 0.0, 0.25, "must be in [0, 0.25] (stability of (3.3))");
-    c.within("numerics.mu", nm.mu, 0.0, 1.0, "must be in [0, 1] (paper section 3: 0.1 to 0.2)");
-    let eta_ok = c.within(
-        "numerics.eta_n_s",
-        nm.eta_n_s,
-        0.0,
-        1.0e9,
-        "must be a finite number >= 0, at most 1e9 N s (section 5.6: 4242.9 N s)",
-    );
+    let courant_ok = c.range("numerics.courant", nm.courant, &Allowed::open_closed(0.0, 1.0, ""));
+    c.range("numerics.smoothing", nm.smoothing, &Allowed::closed(0.0, 0.25, "").note(" (stability of (3.3))"));
+    c.range("numerics.mu", nm.mu, &Allowed::closed(0.0, 1.0, "").note(" (paper section 3: 0.1 to 0.2)"));
+    let eta = Allowed::closed(0.0, 1.0e9, "N s").at_most().note(" (section 5.6: 4242.9 N s)");
+    let eta_ok = c.range("numerics.eta_n_s", nm.eta_n_s, &eta);
     let zeta_ok = c.non_negative("numerics.mass_damping_per_s", nm.mass_damping_per_s);
     if let Some(v) = nm.max_speed_m_per_s {
-        c.within(
-            "numerics.max_speed_m_per_s",
-            v,
-            f64::MIN_POSITIVE,
-            1.0e7,
-            "must be a finite number > 0, at most 1e7 m/s",
-        );
+        c.range("numerics.max_speed_m_per_s", v, &Allowed::open_closed(0.0, 1.0e7, "m/s").at_most());
     }
     // Stability limits need EA, rho0, the segment length: check them only when those are valid.
     derived.ea_n = ea;
@@ -486,12 +453,10 @@ pub(crate) fn check(s: &Scenario) -> (Vec<Problem>, Derived) {
     let end = match (du.end_time_s, &du.until_settled) {
         (Some(t), None) => c.time("duration.end_time_s", t).then_some(t),
         (None, Some(st)) => {
-            c.within(
+            c.range(
                 "duration.until_settled.kinetic_energy_fraction",
                 st.kinetic_energy_fraction,
-                f64::MIN_POSITIVE,
-                1.0 - f64::EPSILON,
-                "must be in (0, 1)",
+                &Allowed::open(0.0, 1.0, ""),
             );
             c.time("duration.until_settled.window_s", st.window_s);
             c.time("duration.until_settled.max_time_s", st.max_time_s).then_some(st.max_time_s)
@@ -509,12 +474,10 @@ pub(crate) fn check(s: &Scenario) -> (Vec<Problem>, Derived) {
     // Output.
     let out = &s.output;
     c.time("output.sample_interval_s", out.sample_interval_s);
-    c.within(
+    c.range(
         "output.tau_speed_m_per_s",
         out.tau_speed_m_per_s,
-        1.0e-3,
-        1.0e3,
-        "must be a finite number > 0, in [1e-3, 1e3] m/s (the speed U of tau = t U / l; the paper's is 20)",
+        &Allowed::closed(1.0e-3, 1.0e3, "m/s").finite().note(" (the speed U of tau = t U / l; the paper's is 20)"),
     );
     for (k, &t) in out.snapshot_times_s.iter().enumerate() {
         let hi = end.unwrap_or(f64::INFINITY);
@@ -537,7 +500,11 @@ pub(crate) fn check(s: &Scenario) -> (Vec<Problem>, Derived) {
         if out.probes[..k].iter().any(|q| q.name == p.name) {
             c.fail(&field("name"), format!("{:?}", p.name), "must differ from the names of the earlier probes");
         }
-        c.within(&field("at_fraction"), p.at_fraction, 0.0, 1.0, "must be a fraction of the span in [0, 1]");
+        c.range(
+            &field("at_fraction"),
+            p.at_fraction,
+            &Allowed::closed(0.0, 1.0, "").words("must be a fraction of the span in"),
+        );
     }
     if let Some(t) = out.peaks_from_s {
         c.within("output.peaks_from_s", t, 0.0, end.unwrap_or(f64::INFINITY), "must be in [0, end time] [s]");
@@ -589,10 +556,27 @@ pub(crate) fn check(s: &Scenario) -> (Vec<Problem>, Derived) {
     (c.0, derived)
 }
 
-const EA_ALLOWED: &str =
-    "must be a finite number > 0, in [1, 1e10] N (section 4: 7.9e5 N; conductors are 1e6 to 1e9 N)";
-const COEFFICIENT_ALLOWED: &str = "must be a finite number >= 0, at most 10 (cylinders: about 1 to 2)";
-const SCALE_ALLOWED: &str = "must be a finite number >= 0, at most 100 (a multiplier on the scenario's wind)";
+const CONDUCTOR_DENSITY: Allowed =
+    LINEAR_DENSITY_KG_PER_M.finite().note(" (bare conductors 0.1 to 5 kg/m, heavily iced ones up to about 30 kg/m)");
+const REFERENCE_TEMPERATURE: Allowed = Allowed::closed(MIN_REFERENCE_TEMPERATURE_K, 5000.0, "K").note(
+    ": a temperature in kelvin, not Celsius (15 C is 288.15 K); the floor -100 C is below the coldest air measured \
+     on Earth (-89.2 C)",
+);
+const EA_ALLOWED: Allowed = AXIAL_STIFFNESS_N.finite().note(" (section 4: 7.9e5 N; conductors are 1e6 to 1e9 N)");
+/// Wind speed [m/s], between [`MIN_WIND_SPEED_M_PER_S`] and [`MAX_WIND_SPEED_M_PER_S`].
+const WIND_SPEED: Allowed = Allowed::closed(MIN_WIND_SPEED_M_PER_S, MAX_WIND_SPEED_M_PER_S, "m/s").note(
+    " (design wind speeds are below about 70 m/s; check the unit: m/s, not km/h; for still air leave out [loads.wind])",
+);
+/// Air density [kg/m^3], up to [`MAX_AIR_DENSITY_KG_PER_M3`].
+const AIR_DENSITY: Allowed = Allowed::open_closed(0.0, MAX_AIR_DENSITY_KG_PER_M3, "kg/m^3")
+    .at_most()
+    .note(" (sea level 1.225; check the unit: kg/m^3, not g/m^3)");
+/// Force coefficients of the aerodynamic law (2.5) [-].
+const COEFFICIENT_ALLOWED: Allowed = Allowed::closed(0.0, 10.0, "").at_most().note(" (cylinders: about 1 to 2)");
+/// Multipliers on the wind load [-] (`initial_scale`, `scale`, `amplitude`).
+const SCALE_ALLOWED: Allowed = Allowed::closed(0.0, 100.0, "").at_most().note(" (a multiplier on the scenario's wind)");
+/// A duration or time [s], up to [`MAX_TIME_S`].
+const TIME_ALLOWED: Allowed = Allowed::open_closed(0.0, MAX_TIME_S, "s").at_most();
 
 impl Check {
     /// Three finite coordinates within [`MAX_COORDINATE_M`].
@@ -608,7 +592,7 @@ impl Check {
     }
     /// A duration or time `(0, MAX_TIME_S]` [s].
     fn time(&mut self, field: &str, t: f64) -> bool {
-        self.within(field, t, f64::MIN_POSITIVE, MAX_TIME_S, "must be a finite number > 0, at most 1e8 s")
+        self.range(field, t, &TIME_ALLOWED)
     }
 }
 
@@ -758,8 +742,13 @@ pub(crate) fn ice_shortfalls(n: usize, ds: f64, rho: f64, events: &[IceEvent]) -
 /// ground below every support and the initial shape (the section's initial nodes `initial`, or the
 /// single span's supports and its initial parabola).
 fn check_ground(c: &mut Check, s: &Scenario, gr: &GroundSpec, initial: Option<&[Vec<f64>; 3]>) {
-    c.within("ground.restitution", gr.restitution, 0.0, 1.0, "must be in [0, 1] (0.6 returns 36 % of the energy)");
-    c.within("ground.friction", gr.friction, 0.0, 2.0, "must be in [0, 2] (conductor on soil or grass: about 0.5)");
+    let restitution = Allowed::closed(0.0, 1.0, "").note(" (0.6 returns 36 % of the energy)");
+    c.range("ground.restitution", gr.restitution, &restitution);
+    c.range(
+        "ground.friction",
+        gr.friction,
+        &Allowed::closed(0.0, 2.0, "").note(" (conductor on soil or grass: about 0.5)"),
+    );
     let p = &gr.profile_m;
     let (field, value) = match (gr.height_m, p.is_empty()) {
         (None, true) => {
@@ -909,13 +898,7 @@ fn check_ground_and_events(
         let span = span_of(c, &f("span"), e.span(), spans, s.section.is_some());
         match *e {
             EventSpec::Break { at_fraction, .. } => {
-                let ok = c.within(
-                    &f("at_fraction"),
-                    at_fraction,
-                    f64::MIN_POSITIVE,
-                    1.0 - f64::EPSILON,
-                    "must be in (0, 1)",
-                );
+                let ok = c.range(&f("at_fraction"), at_fraction, &Allowed::open(0.0, 1.0, ""));
                 if let (true, Some((_, gd))) = (ok, span) {
                     let j = gd.first + break_segment(at_fraction, gd.n);
                     if let Some(&(_, first)) = broken.iter().find(|b| b.0 == j) {
@@ -936,15 +919,11 @@ fn check_ground_and_events(
                 }
             }
             EventSpec::Ice { linear_density_kg_per_m: d, range, front_speed_m_per_s, .. } => {
-                let d_ok = c.within(
-                    &f("linear_density_kg_per_m"),
-                    d,
-                    -1.0e3,
-                    1.0e3,
-                    "must be a finite change of linear density in [-1e3, 1e3] kg/m",
-                );
+                let change =
+                    Allowed::closed(-1.0e3, 1.0e3, "kg/m").words("must be a finite change of linear density in");
+                let d_ok = c.range(&f("linear_density_kg_per_m"), d, &change);
                 if let Some(v) = front_speed_m_per_s {
-                    c.within(&f("front_speed_m_per_s"), v, 0.1, 1.0e4, "must be in [0.1, 1e4] m/s");
+                    c.range(&f("front_speed_m_per_s"), v, &Allowed::closed(0.1, 1.0e4, "m/s"));
                 }
                 if range_ok(c, &f("range"), range)
                     && let Some((sp, gd)) = span
@@ -979,7 +958,7 @@ fn check_ground_and_events(
                 }
             }
             EventSpec::Wind { scale, .. } => {
-                c.within(&f("scale"), scale, 0.0, 100.0, SCALE_ALLOWED);
+                c.range(&f("scale"), scale, &SCALE_ALLOWED);
             }
             EventSpec::Gust { period_s, amplitude, .. } => {
                 if c.time(&f("period_s"), period_s)
@@ -996,10 +975,10 @@ fn check_ground_and_events(
                         ),
                     );
                 }
-                c.within(&f("amplitude"), amplitude, 0.0, 100.0, SCALE_ALLOWED);
+                c.range(&f("amplitude"), amplitude, &SCALE_ALLOWED);
             }
             EventSpec::Temperature { temperature_k, range, ramp_s, .. } => {
-                if c.within(&f("temperature_k"), temperature_k, f64::MIN_POSITIVE, 5000.0, "must be in (0, 5000] K") {
+                if c.range(&f("temperature_k"), temperature_k, &EVENT_TEMPERATURE_K) {
                     thermal(c, &f("temperature_k"), temperature_k);
                 }
                 if !(alpha.is_finite() && alpha > 0.0) {
@@ -1015,7 +994,7 @@ fn check_ground_and_events(
                 if range_ok(c, &f("range"), range) {
                     segments_of(c, &f("range"), range, grid);
                 }
-                c.within(&f("ramp_s"), ramp_s, 0.0, MAX_TIME_S, "must be a finite number >= 0, at most 1e8 s");
+                c.range(&f("ramp_s"), ramp_s, &Allowed::closed(0.0, MAX_TIME_S, "s").at_most());
             }
             EventSpec::HeatConduction { hold_range, hold_temperature_k, heat_time_per_s, boundary, .. } => {
                 if range_ok(c, &f("hold_range"), hold_range)
@@ -1024,16 +1003,10 @@ fn check_ground_and_events(
                 {
                     linear_closure_stable(c, &f("boundary"), node_range(hold_range, n), n);
                 }
-                if c.within(
-                    &f("hold_temperature_k"),
-                    hold_temperature_k,
-                    f64::MIN_POSITIVE,
-                    5000.0,
-                    "must be in (0, 5000] K",
-                ) {
+                if c.range(&f("hold_temperature_k"), hold_temperature_k, &EVENT_TEMPERATURE_K) {
                     thermal(c, &f("hold_temperature_k"), hold_temperature_k);
                 }
-                c.within(&f("heat_time_per_s"), heat_time_per_s, f64::MIN_POSITIVE, 1.0e3, "must be in (0, 1000] 1/s");
+                c.range(&f("heat_time_per_s"), heat_time_per_s, &Allowed::open_closed(0.0, 1.0e3, "1/s"));
                 if !(alpha.is_finite() && alpha > 0.0) {
                     c.fail(
                         &f("action"),
