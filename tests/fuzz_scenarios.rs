@@ -47,9 +47,11 @@
 //!   node-steps: its summary and final positions are finite, or it ends with the typed unstable error.
 //!   `OHL_FUZZ_LINE_CASES`, default [`DEFAULT_LINE_CASES`].
 //!
-//! Budget: the defaults take about 60 s together in release on a shared 2-core machine (measured with the
-//! tests in parallel: single spans 200 000 inputs, sections 10 000, thermal cases 10 000, ratings 3 000,
-//! lines 2 000; the single-span default was 400 000 before the other generators came). The seed is
+//! Budget: the defaults take about 64 s together in release on a shared 2-core machine (measured with the
+//! tests in parallel, load average about 4: single spans 200 000 inputs in 51 s, sections 10 000 in 22 s,
+//! thermal cases 10 000 in 5 s, ratings 3 000 in 22 s, lines 2 000 (structured and mutated, run) in 13 s;
+//! the single-span default was 400 000 before the other generators came); `app/tests/fuzz_sweep.rs`
+//! adds about 2 to 8 s. The seed is
 //! `OHL_FUZZ_SEED` (default fixed, so CI runs the same inputs); `OHL_FUZZ_VERBOSE=1` prints why each input
 //! was refused (`=2`: with the input), to see what a generator reaches. A longer run:
 //!
