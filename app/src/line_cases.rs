@@ -187,19 +187,21 @@ pub fn format_line_table(c: &LineCaseOutcome) -> String {
     );
     if !s.clearances.is_empty() {
         out.push_str("| pair | initial [m] | least [m] | at [s] | where (fractions of length) | final [m] |\n|---|---|---|---|---|---|\n");
+        // A distance, or a dash where none was left to measure (a conductor broken in every segment).
+        let metres = |x: Option<f64>| x.map_or_else(|| "-".to_string(), |x| format!("{x:.3}"));
         for p in &s.clearances {
             out.push_str(&format!(
-                "| {} - {} | {:.3} | {:.3} | {:.3} | {} {:.3}, {} {:.3} | {:.3} |\n",
+                "| {} - {} | {} | {:.3} | {:.3} | {} {:.3}, {} {:.3} | {} |\n",
                 p.between[0],
                 p.between[1],
-                p.initial_m,
+                metres(p.initial_m),
                 p.least_m,
                 p.time_s,
                 p.conductors[0],
                 p.at_fraction[0],
                 p.conductors[1],
                 p.at_fraction[1],
-                p.final_m
+                metres(p.final_m)
             ));
         }
     }

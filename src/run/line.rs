@@ -70,10 +70,11 @@ pub struct ClearanceSummary {
     pub at_fraction: [f64; 2],
     /// the two closest points then [m]
     pub points_m: [[f64; 3]; 2],
-    /// the distance at the start [m]
-    pub initial_m: f64,
-    /// the distance at the end [m]
-    pub final_m: f64,
+    /// the distance at the start [m]; none (`null` in `summary.json`) if no pair of segments was left to
+    /// measure (a conductor broken in every segment)
+    pub initial_m: Option<f64>,
+    /// the distance at the end [m]; none as for `initial_m`
+    pub final_m: Option<f64>,
 }
 
 /// The loads on a tower.
@@ -398,7 +399,7 @@ pub fn run_line_observed<'o>(
     let kinds = [LinkKind::SuspensionString, LinkKind::TensionString, LinkKind::Spacer, LinkKind::InterphaseSpacer];
     let mut link_peak: Vec<Option<(usize, f64, f64)>> = vec![None; kinds.len()];
     let mut tower_peak: Vec<([f64; 3], f64, f64)> = vec![([0.0; 3], 0.0, 0.0); towers.len()];
-    let mut initial_clearance: Vec<f64> = Vec::new();
+    let mut initial_clearance: Vec<Option<f64>> = Vec::new();
     let mut log: Vec<LineEventRecord> = Vec::new();
     let (dt, horizon) = (line.params().dt_s, plan.stop.horizon_s());
     let tol = LANDING * dt;
@@ -437,8 +438,7 @@ pub fn run_line_observed<'o>(
         let first = line.steps() == 0;
         clearance.observe_bounded(&line.wires(), t, sample_due || first);
         if first {
-            initial_clearance =
-                clearance.current().iter().map(|c| c.map_or(f64::NAN, |c| c.closest.distance_m)).collect();
+            initial_clearance = clearance.current().iter().map(|c| c.map(|c| c.closest.distance_m)).collect();
         }
         for l in 0..line.links().len() {
             let k = kinds.iter().position(|&k| k == line.links()[l].kind).unwrap_or(0);
@@ -575,7 +575,7 @@ pub fn run_line_observed<'o>(
                     at_fraction: [l.closest.arc_fraction_a(wires[a]), l.closest.arc_fraction_b(wires[b])],
                     points_m: [l.closest.point_a_m, l.closest.point_b_m],
                     initial_m,
-                    final_m: now.map_or(f64::NAN, |c| c.closest.distance_m),
+                    final_m: now.map(|c| c.closest.distance_m),
                 })
             })
             .collect(),

@@ -206,9 +206,11 @@ fn print_line_summary(s: &ohl::run::line::LineSummary, out: &std::path::Path) {
             c.final_max_tension_n
         );
     }
+    // A distance, or why there is none (a conductor broken in every segment).
+    let metres = |x: Option<f64>| x.map_or_else(|| "none (no segment left)".to_string(), |x| format!("{x:.3} m"));
     for c in &s.clearances {
         out!(
-            "  clearance {} - {}: least {:.3} m at {:.3} s ({} at {:.3}, {} at {:.3} of their lengths); initial {:.3} m, final {:.3} m",
+            "  clearance {} - {}: least {:.3} m at {:.3} s ({} at {:.3}, {} at {:.3} of their lengths); initial {}, final {}",
             c.between[0],
             c.between[1],
             c.least_m,
@@ -217,8 +219,8 @@ fn print_line_summary(s: &ohl::run::line::LineSummary, out: &std::path::Path) {
             c.at_fraction[0],
             c.conductors[1],
             c.at_fraction[1],
-            c.initial_m,
-            c.final_m
+            metres(c.initial_m),
+            metres(c.final_m)
         );
     }
     for t in &s.towers {

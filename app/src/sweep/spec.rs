@@ -49,9 +49,14 @@ pub enum SpecError {
     /// `--vary` without `=`.
     #[error("--vary {0:?}: expected FIELD=VALUES, e.g. loads.wind.speed_m_per_s=10,15,20 or =10:30:5")]
     NoEquals(String),
-    /// A malformed field path.
-    #[error(transparent)]
-    Path(#[from] PathSyntaxError),
+    /// A malformed field path in a `--vary` (the argument is named: its path may be empty).
+    #[error("--vary {arg:?}: {source}")]
+    Path {
+        /// the argument, as given
+        arg: String,
+        /// what is wrong with its path
+        source: PathSyntaxError,
+    },
     /// A malformed list or range.
     #[error(transparent)]
     Values(#[from] ValuesError),
@@ -152,7 +157,7 @@ pub fn vary_axis(arg: &str) -> Result<Axis, SpecError> {
     });
     let (field, values) =
         equals.map(|i| (&arg[..i], &arg[i + 1..])).ok_or_else(|| SpecError::NoEquals(arg.to_string()))?;
-    let path = FieldPath::parse(field.trim())?;
+    let path = FieldPath::parse(field.trim()).map_err(|source| SpecError::Path { arg: arg.to_string(), source })?;
     let values = parse_values(field.trim(), values.trim())?;
     Ok(Axis {
         source: Source::Vary(arg.to_string()),
@@ -254,6 +259,9 @@ mod tests {
         assert!(matches!(vary(&["a=1", "a=2"]), Err(SpecError::Overlap(..))));
         assert!(matches!(vary(&["g.r=1", "g.r[1]=2"]), Err(SpecError::Overlap(..))));
         assert!(matches!(vary(&["a=0:999:1", "b=0:999:1", "c=0:999:1"]), Err(SpecError::TooMany(_))));
-        assert!(matches!(vary(&["a..b=1"]), Err(SpecError::Path(_))));
+        assert!(matches!(vary(&["a..b=1"]), Err(SpecError::Path { .. })));
+        // A finding of app/tests/fuzz_sweep.rs: an empty path is refused naming the argument it is in.
+        let e = vary(&["a=1", "=0.01"]).unwrap_err().to_string();
+        assert!(e.starts_with("--vary \"=0.01\": field path \"\": empty"), "{e}");
     }
 }
