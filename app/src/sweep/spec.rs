@@ -99,6 +99,12 @@ impl Spec {
         }
         for arg in vary {
             axes.push(vary_axis(arg)?);
+            // Refuse as soon as the axes read so far are too many (each holds up to
+            // `values::MAX_RANGE_VALUES` values), rather than reading every `--vary` first.
+            let n: f64 = axes.iter().map(|a| a.rows.len() as f64).product();
+            if n > MAX_CASES as f64 {
+                return Err(SpecError::TooMany(format!("at least {n:.0}")));
+            }
         }
         Spec::of_axes(axes)
     }
@@ -259,6 +265,12 @@ mod tests {
         assert!(matches!(vary(&["a=1", "a=2"]), Err(SpecError::Overlap(..))));
         assert!(matches!(vary(&["g.r=1", "g.r[1]=2"]), Err(SpecError::Overlap(..))));
         assert!(matches!(vary(&["a=0:999:1", "b=0:999:1", "c=0:999:1"]), Err(SpecError::TooMany(_))));
+        // Refused at the third axis, before the fourth is read: its count is a lower bound.
+        let e = vary(&["a=0:999:1", "b=0:999:1", "c=0:999:1", "d=0:999999:1"]).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            format!("the sweep has at least 1000000000 cases, more than {MAX_CASES}: split it into several sweeps")
+        );
         assert!(matches!(vary(&["a..b=1"]), Err(SpecError::Path { .. })));
         // A finding of app/tests/fuzz_sweep.rs: an empty path is refused naming the argument it is in.
         let e = vary(&["a=1", "=0.01"]).unwrap_err().to_string();
