@@ -7,7 +7,7 @@
 //! N = 100. Settling to a kinetic energy of 1e-12 of its peak leaves a residual motion of order
 //! sqrt(2 KE / M) / omega ~ 1e-6 m, i.e. 1e-7 relative: negligible against both.
 
-mod common;
+use crate::common;
 use common::*;
 use ohl::exact::catenary::ElasticCatenary;
 

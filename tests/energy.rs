@@ -5,7 +5,7 @@
 //! The kinetic energy uses the synchronised velocity `v^n = v^{n-1/2} + dt/2 a^n`; the bound 0.1 % is
 //! the issue's. The observed drift is printed so that the margin is visible.
 
-mod common;
+use crate::common;
 use common::*;
 
 #[test]

@@ -11,7 +11,7 @@
 //! - The mid-span sag matches the exact elastic catenary within the grid's O(ds^2) error, at observed
 //!   order 2 (the slope of the last three refinements, 2 +- 0.1).
 
-mod common;
+use crate::common;
 use common::*;
 
 use ohl::exact::catenary::ElasticCatenary;

@@ -2,7 +2,7 @@
 //! restitution 0.6 returns 36 % of the vertical impact energy; the downwind-gated gust of section 4.5
 //! pumps energy into the swing (its amplitude far exceeds the ungated gust's).
 
-mod common;
+use crate::common;
 use common::*;
 
 const WIRE: &str = r#"

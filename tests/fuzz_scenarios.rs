@@ -57,7 +57,7 @@
 //!
 //! ```sh
 //! OHL_FUZZ_CASES=1000000 OHL_FUZZ_SECTION_CASES=100000 OHL_FUZZ_SEED=7 \
-//!     cargo test --release --test fuzz_scenarios -- --nocapture
+//!     cargo test --release --test library fuzz_scenarios:: -- --nocapture
 //! ```
 //!
 //! A finding fails the test with the input proptest shrank it to, unless it is on the allow-list

@@ -2,7 +2,7 @@
 //! step, a run until settled does not end before its events, and the peaks of a settle-then-break run
 //! are the break's.
 
-mod common;
+use crate::common;
 use common::*;
 
 use ohl::run::{RunOptions, run};

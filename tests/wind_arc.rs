@@ -5,7 +5,7 @@
 //! `T = p R cos(delta / 2)` (delta the angle a segment subtends), an O(ds^2) departure; < 0.05 % at
 //! N = 50, smaller at N = 100.
 
-mod common;
+use crate::common;
 use common::*;
 use ohl::exact::arc::ElasticArc;
 

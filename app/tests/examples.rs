@@ -3,7 +3,7 @@
 //! scenarios through `ohl run` (exit 0, `summary.json`). The thermal examples' numbers are checked
 //! elsewhere (`tests/rating.rs`, `app/tests/cases.rs`, the `thermal` study); the spans of
 //! `examples/mechanical/` are checked here against hand calculations (sag, blow-out angle, change of
-//! state), each with a tolerance derived in its comment. `cargo test --release -p ohl-app --test examples
+//! state), each with a tolerance derived in its comment. `cargo test --release -p ohl-app --test cli examples::
 //! -- --nocapture` prints every comparison (docs/examples.md quotes them).
 
 use std::collections::HashMap;

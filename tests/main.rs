@@ -1,0 +1,30 @@
+//! The library's integration tests, one test binary: each file below is one module (one concern: a
+//! verification problem with its exact solution, a scenario family, a reference page). One binary instead
+//! of one per file: each test binary links the whole library and its dependencies, which on 2 cores made
+//! the test build most of the test command's time (issue 23). Run one file's tests with
+//! `cargo test --release --test library catenary_sag::`.
+
+mod catenary_sag;
+mod common;
+mod conductor_catalog;
+mod energy;
+mod equilibrium;
+mod events;
+mod fuzz_scenarios;
+mod ground_friction;
+mod line;
+mod line_reference;
+mod line_scenario;
+mod rating;
+mod readme_example;
+mod run_loop;
+mod scenario_reference;
+mod section;
+mod section_events;
+mod section_step;
+mod section_stringing;
+mod statics;
+mod terrain;
+mod thermal_conductor;
+mod thermal_linerate;
+mod wind_arc;
