@@ -243,6 +243,21 @@ fn invalid_fields_are_named_with_their_path() {
             conductor("A", "").replace("insulator_stiffness_n = 5.0e7 }", "insulator_stiffness_n = 5.0e7, insulator_damping_n_s = -2.0 }"),
             "line.conductors[0].section.supports[1].insulator_damping_n_s` = -2",
         ),
+        // Issue 23: a conductor's temperature in degrees Celsius, refused in Celsius, and not in both units.
+        (
+            String::new(),
+            conductor("B", "").replace("diameter_m = 0.0281 }", "diameter_m = 0.0281, reference_temperature_c = -300.0 }"),
+            "line.conductors[0].conductor.reference_temperature_c` = -300 is not allowed: must be in [-100, 4726.85] C",
+        ),
+        (
+            String::new(),
+            conductor("B", "").replace(
+                "diameter_m = 0.0281 }",
+                "diameter_m = 0.0281, reference_temperature_c = 15.0, reference_temperature_k = 288.15 }",
+            ),
+            "line.conductors[0].conductor.reference_temperature_c` = 15.0 is not allowed: \
+             `line.conductors[0].conductor.reference_temperature_k` is given too",
+        ),
     ];
     for (line_table, conductors, field) in cases {
         let msg = problems(&line_table, &conductors);

@@ -102,3 +102,75 @@ fn a_rating_without_ampacity_says_why() {
     assert!(terms.solar_w_per_m > terms.convection_w_per_m + terms.radiation_w_per_m, "{terms:?}");
     assert!(e.contains(&format!("solar heating {:.3} W/m", terms.solar_w_per_m)), "{e}");
 }
+
+/// The example's rating with `max_temperature_k` replaced (`None`: removed).
+fn rated_with_max(max_k: Option<&str>, extra: &[(&str, &str)]) -> rating::Rating {
+    let mut text = std::fs::read_to_string(FILE)
+        .unwrap()
+        .replace("max_temperature_k = 373.15", &max_k.map_or_else(String::new, |t| format!("max_temperature_k = {t}")));
+    for (from, to) in extra {
+        assert!(text.contains(from), "{from}");
+        text = text.replace(from, to);
+    }
+    let s = scenario::parse(&text, FILE).unwrap();
+    rating::rate(&s, FILE).unwrap()
+}
+
+#[test]
+fn the_margin_to_the_clearance_is_where_the_clearance_alone_governs() {
+    // T_max = 67 C governs (the clearance limit is reached near 82 C). The reported temperature of the
+    // clearance limit must be the limiting temperature of the same rating without T_max, where the
+    // clearance governs: both are bisections to 1e-3 K of the same root (each returns the lower end of a
+    // bracket of width <= 1e-3 K around it), so they differ by less than 1e-3 K; the currents by less than
+    // dI/dT * 1e-3 K, with dI/dT < 20 A/K here (592 A at 67 C, 824 A at 82 C: 15 A/K), so 0.02 A.
+    let governed = rated_with_max(Some("340.15"), &[]);
+    assert_eq!(governed.governing_temperature_k, 340.15, "T_max governs");
+    assert_eq!(governed.limit_temperature_k, None);
+    let other = governed.other.clone().expect("a margin with T_max");
+    assert_eq!(other.quantity, "clearance");
+    let t_c = other.temperature_k.expect("reached below 600 K");
+    let alone = rated_with_max(None, &[]);
+    let t_alone = alone.limit_temperature_k.expect("the clearance governs alone");
+    println!("clearance limit at {:.4} C (T_max governing), {:.4} C alone", t_c - 273.15, t_alone - 273.15);
+    assert!((t_c - t_alone).abs() < 1e-3, "{t_c} against {t_alone}");
+    let (i_c, i_alone) = (other.current_a.unwrap(), alone.rating_a);
+    assert!((i_c - i_alone).abs() < 0.02, "{i_c} A against {i_alone} A");
+    assert!(i_c > governed.rating_a, "the margin is positive: {i_c} > {}", governed.rating_a);
+    assert_eq!(alone.other, None, "no T_max, no other limit");
+}
+
+#[test]
+fn a_clearance_limit_at_the_reported_clearance_governs_at_its_temperature() {
+    // With T_max = 67 C governing, the least clearance there is reported (`at_rating_m`). A rating whose
+    // clearance limit is that clearance, without T_max, must be governed by the clearance at 67 C: the
+    // bisection's lower end lies within 1e-3 K below the root (plus the static solve's tolerance, whose
+    // effect on the clearance, 1e-9 m against a clearance slope of about 0.1 m/K, is 1e-8 K).
+    let governed = rated_with_max(Some("340.15"), &[]);
+    let clearance = governed.at_rating_m;
+    let limit = format!("min_clearance_m = {clearance:?}");
+    let alone = rated_with_max(None, &[("min_clearance_m = 11.0", &limit)]);
+    let t = alone.limit_temperature_k.unwrap();
+    println!("clearance {clearance} m reached at {:.5} C", t - 273.15);
+    assert!(t <= 340.15 + 1e-6 && t > 340.15 - 1.1e-3, "{t}");
+    // Where the clearance governs, the other limit is T_max and its ampacity.
+    let r = rated_with_max(Some("373.15"), &[]);
+    let other = r.other.unwrap();
+    assert_eq!((other.quantity, other.temperature_k), ("temperature", Some(373.15)));
+    assert_eq!(other.current_a, r.temperature_ampacity_a);
+}
+
+#[test]
+fn temperatures_in_celsius_give_the_kelvin_rating_bit_for_bit() {
+    // The example in degrees Celsius (15 C, 40 C air, 100 C maximum): the same numbers as the file in
+    // kelvin, because the conversion gives the decimal kelvin values exactly (288.15, 313.15, 373.15).
+    let kelvin = rated_with_max(Some("373.15"), &[]);
+    let celsius = rated_with_max(
+        None,
+        &[
+            ("reference_temperature_k = 288.15", "reference_temperature_c = 15.0"),
+            ("air_temperature_k = 313.15", "air_temperature_c = 40"),
+            ("[rating]\n", "[rating]\nmax_temperature_c = 100.0\n"),
+        ],
+    );
+    assert_eq!(celsius, kelvin);
+}

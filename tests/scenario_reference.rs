@@ -76,13 +76,18 @@ impl Kind {
     }
 
     /// Deserialize a document into the schema's type; the error message if it does not deserialize.
-    fn deserialize(self, doc: toml::Table) -> Result<(), String> {
+    /// The temperatures in degrees Celsius are read as the library reads them
+    /// (`ohl::scenario::temperature::to_kelvin`), and a message lists each `NAME_c` twin beside its `NAME_k`
+    /// as the library's messages do (`name_twins`).
+    fn deserialize(self, mut doc: toml::Table) -> Result<(), String> {
+        use ohl::scenario::temperature::{name_twins, to_kelvin};
+        to_kelvin(&mut doc).map_err(|p| format!("{p:?}"))?;
         let v = toml::Value::Table(doc);
         match self {
             Kind::Scenario => v.try_into::<Scenario>().map(|_| ()),
             Kind::ThermalCase => v.try_into::<ThermalCase>().map(|_| ()),
         }
-        .map_err(|e| e.to_string())
+        .map_err(|e| name_twins(&e.to_string()))
     }
 }
 
@@ -456,6 +461,7 @@ const RICHER_CONDUCTOR_FIELDS: &[&str] = &[
     "outer_strand_diameter_m",
     "resistance_high_ohm_per_m",
     "temperature_high_k",
+    "temperature_high_c",
     "core_specific_heat_j_per_kg_k",
 ];
 

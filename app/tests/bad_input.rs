@@ -206,6 +206,15 @@ const CASES: &[(&str, &[&str])] = &[
         &["field `section.horizontal_tension_n` = 150000", "below conductor.rated_tensile_strength_n = 140000 N"],
     ),
     ("reference_temperature_in_celsius", &["field `conductor.reference_temperature_k` = 15", "not Celsius"]),
+    // Issue 23: temperatures in degrees Celsius (`_c` twins), refused in the unit written.
+    (
+        "reference_temperature_kelvin_and_celsius",
+        &["field `conductor.reference_temperature_c` = 15.0", "`conductor.reference_temperature_k` is given too"],
+    ),
+    (
+        "reference_temperature_celsius_below_absolute_zero",
+        &["field `conductor.reference_temperature_c` = -300 is not allowed: must be in [-100, 4726.85] C"],
+    ),
     (
         "heat_conduction_without_expansion",
         &["field `events[0].action` = \"heat_conduction\"", "thermal_expansion_per_k > 0"],
@@ -229,6 +238,15 @@ const THERMAL_CASES: &[(&str, &[&str])] = &[
         "thermal_case_schedule_point_with_three_numbers",
         &["line 26, column 13", "field `transient.current_a`: point [1] has 3 numbers"],
     ),
+    (
+        "thermal_case_air_celsius_out_of_range",
+        &["field `weather.air_temperature_c` = 95 is not allowed: must be in [-73.15, 76.85] C"],
+    ),
+    (
+        "thermal_case_limit_celsius_below_absolute_zero",
+        &["field `transient.limit_c` = -300 is not allowed: must be in [-73.15, 326.85] C"],
+    ),
+    ("thermal_case_air_temperature_missing", &["missing field `air_temperature_k` (or `air_temperature_c`)"]),
     ("thermal_case_transient_above_budget", &["field `transient.step_s` = 0.001", "at least 1 s"]),
     ("thermal_case_deicing_step_tiny", &["field `deicing.step_s` = 0.001", "at least 0.00864 s"]),
     ("scenario_given_to_thermal", &["a wire scenario ([conductor]), not a thermal case", "`ohl run`"]),

@@ -19,9 +19,13 @@ fn every_example_runs() {
     assert!(thermal.len() >= 3, "examples: {thermal:?}");
     let mechanical = toml_files(&repo.join("examples/mechanical"));
     assert!(mechanical.len() >= 4, "examples: {mechanical:?}");
+    let mut temperatures = 0;
     for f in &thermal {
-        run_example(f);
+        let out = run_example(f);
+        temperatures += check_json_units(f, &out);
     }
+    // drake_annex_b: 2 steady, 2 ampacities, 3 of the transient; drake_span_rating: 4 (de-icing has none).
+    assert!(temperatures >= 11, "only {temperatures} temperatures in the thermal examples' json");
     for f in &mechanical {
         let out = run_example(f);
         check_mechanical(f, &out);
@@ -60,6 +64,43 @@ fn run_example(f: &Path) -> PathBuf {
     assert!(o.status.success(), "{}: {}", f.display(), String::from_utf8_lossy(&o.stderr));
     assert!(out.join(written).exists(), "{} wrote no {written}", f.display());
     out
+}
+
+/// `thermal.json` and `rating.json` (issue 23): every temperature `NAME_k` [K] has its twin `NAME_c` [C]
+/// beside it, equal to `NAME_k - 273.15` (the definition of the degree Celsius; the difference is one
+/// rounding of f64, 6e-14 K at 600 K: tolerance 1e-12); `thermal.json` names the standard as the input
+/// does (`standard = "cigre601"`, default `"ieee738"`). Returns the number of temperatures checked.
+fn check_json_units(f: &Path, out: &Path) -> usize {
+    fn twins(v: &serde_json::Value, at: &str, count: &mut usize) {
+        match v {
+            serde_json::Value::Object(m) => {
+                for (key, value) in m {
+                    let kelvin = key.strip_suffix("_k").filter(|stem| stem.contains("temperature") || *stem == "limit");
+                    if let (Some(stem), Some(k)) = (kelvin, value.as_f64()) {
+                        let c = m.get(&format!("{stem}_c")).and_then(serde_json::Value::as_f64);
+                        let c = c.unwrap_or_else(|| panic!("{at}.{key} = {k} has no {stem}_c beside it"));
+                        assert!((c - (k - 273.15)).abs() < 1e-12, "{at}.{key} = {k} K, {stem}_c = {c} C");
+                        *count += 1;
+                    }
+                    twins(value, &format!("{at}.{key}"), count);
+                }
+            }
+            serde_json::Value::Array(a) => {
+                a.iter().enumerate().for_each(|(k, v)| twins(v, &format!("{at}[{k}]"), count))
+            }
+            _ => {}
+        }
+    }
+    let text: toml::Table = std::fs::read_to_string(f).unwrap().parse().unwrap();
+    let file = if text.contains_key("rating") { "rating.json" } else { "thermal.json" };
+    let json: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(out.join(file)).unwrap()).unwrap();
+    let mut count = 0;
+    twins(&json, file, &mut count);
+    if file == "thermal.json" {
+        let standard = text.get("standard").and_then(toml::Value::as_str).unwrap_or("ieee738");
+        assert_eq!(json["standard"], standard, "{}", f.display());
+    }
+    count
 }
 
 /// What a mechanical example's hand calculation needs: its scenario, summary and first time-series row.

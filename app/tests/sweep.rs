@@ -254,6 +254,43 @@ fn a_row_is_bitwise_the_single_run_of_its_scenario() {
 }
 
 #[test]
+fn a_temperature_varied_in_celsius_is_the_run_with_the_kelvin_value() {
+    // Issue 23: `--vary conductor.reference_temperature_c=...` on a base that gives the temperature in
+    // kelvin replaces it; each row is bitwise the single run of the scenario with the kelvin value written
+    // by hand (-20 C = 253.15 K, 40 C = 313.15 K: the conversion gives the decimal kelvin values exactly).
+    // A heating event to 300 K makes the reference temperature matter (thermal strain (5.5)).
+    let d = dir("celsius");
+    let warm = BASE.replace(
+        "diameter_m = 0.01553",
+        "diameter_m = 0.01553\nthermal_expansion_per_k = 23.8e-6\nreference_temperature_k = 288.15",
+    ) + "\n[[events]]\ntime_s = 1.0\naction = \"temperature\"\ntemperature_k = 300.0\nrange = [0.0, 1.0]\n";
+    let b = d.join("base.toml");
+    std::fs::write(&b, &warm).unwrap();
+    let out = d.join("sweep");
+    let o = ohl(&["sweep", s(&b), "--vary", "conductor.reference_temperature_c=-20,40", "--out", s(&out)]);
+    assert!(o.status.success(), "{}", text(&o));
+    let rows = table(&out.join("sweep.csv"));
+    assert_eq!(rows.len(), 2);
+    for (row, kelvin) in rows.iter().zip(["253.15", "313.15"]) {
+        assert_eq!(row["status"], "completed", "{row:?}");
+        let by_hand = warm.replace("reference_temperature_k = 288.15", &format!("reference_temperature_k = {kelvin}"));
+        let run = single_run(&d, &format!("k{kelvin}"), &by_hand);
+        for (column, key) in
+            [("final_max_tension_n", "final_max_tension_n"), ("peak_max_tension_n", "peak_max_tension_n")]
+        {
+            assert_eq!(
+                bits(&row[column]),
+                bits(&run[key]),
+                "{kelvin} K, {column}: sweep {} and run {}",
+                row[column],
+                run[key]
+            );
+        }
+    }
+    assert_ne!(rows[0]["final_max_tension_n"], rows[1]["final_max_tension_n"], "the temperature matters");
+}
+
+#[test]
 fn bad_values_and_unstable_runs_are_rows_with_their_reason() {
     let d = dir("bad");
     let b = base(&d);

@@ -79,6 +79,31 @@ def test_field_value_and_range() -> None:
     )
 
 
+def test_a_temperature_in_celsius_is_checked_in_celsius() -> None:
+    # Issue 23: a dict (as a file) may give a temperature as `NAME_c` [C] instead of `NAME_k` [K], not both;
+    # a Celsius value out of range is reported in Celsius (the range of the kelvin field less 273.15).
+    d = {
+        "conductor": {"axial_stiffness_n": 792000.0, "linear_density_kg_per_m": 1.0, "reference_temperature_c": 15.0},
+        "geometry": {"left_support_m": [0.0, 0.0, 0.0], "right_support_m": [0.0, 160.0, 0.0], "segments": 20},
+        "duration": {"end_time_s": 0.5},
+    }
+    ohl.from_dict(d)
+    d["conductor"]["reference_temperature_k"] = 288.15
+    with pytest.raises(ohl.ScenarioError) as e:
+        ohl.from_dict(d)
+    assert e.value.field == "conductor.reference_temperature_c"
+    assert "`conductor.reference_temperature_k` is given too" in e.value.allowed
+    del d["conductor"]["reference_temperature_k"]
+    d["conductor"]["reference_temperature_c"] = -300.0
+    with pytest.raises(ohl.ScenarioError) as e:
+        ohl.from_dict(d)
+    assert (e.value.field, e.value.value, e.value.allowed) == (
+        "conductor.reference_temperature_c",
+        "-300",
+        "must be in [-100, 4726.85] C",
+    )
+
+
 def test_several_problems_are_all_reported() -> None:
     with pytest.raises(ohl.ScenarioError) as e:
         ohl.load("app/tests/bad_inputs/ground_above_support.toml")

@@ -33,6 +33,16 @@ EXAMPLE_A = {
 }
 
 
+def test_a_weather_in_celsius_is_the_weather_in_kelvin() -> None:
+    # Issue 23: `air_temperature_c = 40` is read as 313.15 K exactly (the conversion rounds to 1e-9 K, so
+    # a decimal Celsius value gives the decimal kelvin value): the same ampacity bit for bit.
+    celsius = {k: v for k, v in ANNEX_B.items() if k != "air_temperature_k"}
+    celsius["air_temperature_c"] = 40.0
+    assert ohl.ampacity(373.15, conductor=DRAKE, weather=celsius) == ohl.ampacity(
+        373.15, conductor=DRAKE, weather=ANNEX_B
+    )
+
+
 def test_ieee738_annex_b_ampacity() -> None:
     a = ohl.ampacity(373.15, conductor=DRAKE, weather=ANNEX_B)
     # docs/thermal.md and docs/verification.md: 1025.7852 A computed; the standard prints 1025 A.

@@ -87,6 +87,9 @@ pub struct LineScenario {
     /// single-conductor scenario; a conductor's own events are in its `events`
     #[serde(default)]
     pub events: Vec<EventSpec>,
+    /// the temperature fields the file gave in degrees Celsius (set by [`parse`], not a key of the file)
+    #[serde(skip)]
+    pub celsius: super::temperature::Celsius,
 }
 
 /// `[initial]` of a line.
@@ -355,7 +358,11 @@ pub fn parse(text: &str, file: &str) -> Result<LineScenario, InputError> {
             }
         }
     }
-    super::locate::from_table(doc, text, file)
+    let celsius = super::temperature::to_kelvin(&mut doc)
+        .map_err(|problems| InputError::Invalid { file: file.to_string(), problems })?;
+    let mut s: LineScenario = super::locate::from_table(doc, text, file)?;
+    s.celsius = celsius;
+    Ok(s)
 }
 
 /// Whether a TOML text is a line scenario (it has a `[line]` table).
@@ -370,7 +377,8 @@ pub fn is_line_table(t: &toml::Table) -> bool {
 
 /// Check every field and build the line; every problem is reported with its field.
 pub fn plan(s: &LineScenario, file: &str) -> Result<LinePlan, InputError> {
-    build_line(s).map_err(|problems| InputError::Invalid { file: file.to_string(), problems })
+    build_line(s)
+        .map_err(|problems| InputError::Invalid { file: file.to_string(), problems: s.celsius.as_written(problems) })
 }
 
 /// A conductor's single-conductor scenario: its tables and the file's global ones.
@@ -391,6 +399,7 @@ fn single(s: &LineScenario, c: &LineConductorSpec) -> Scenario {
         thermal: None,
         rating: None,
         paper: None,
+        celsius: Default::default(),
     }
 }
 

@@ -43,6 +43,7 @@ pub(crate) fn from_table<T: DeserializeOwned>(table: toml::Table, text: &str, fi
             message = format!("missing fields {}", names.join(", "));
         }
     }
+    let message = super::temperature::name_twins(&message);
     Err(InputError::Parse { file: file.to_string(), message: super::plain_types(&describe(text, &path, &message)) })
 }
 
@@ -51,7 +52,9 @@ pub(crate) fn from_table<T: DeserializeOwned>(table: toml::Table, text: &str, fi
 /// `(the top level)` for the document itself), with the value as TOML writes it (cut to 60 characters,
 /// `a table` for a table) and the parser's message in plain terms; a missing field is `(missing)`, and every
 /// field missing from the same table is a problem of its own.
-pub fn from_table_alone<T: DeserializeOwned>(table: toml::Table, file: &str) -> Result<T, InputError> {
+pub fn from_table_alone<T: DeserializeOwned>(mut table: toml::Table, file: &str) -> Result<T, InputError> {
+    super::temperature::to_kelvin(&mut table)
+        .map_err(|problems| InputError::Invalid { file: file.to_string(), problems })?;
     let (mut path, error) = match read::<T>(table.clone()) {
         Ok(v) => return Ok(v),
         Err(e) => e,
@@ -60,7 +63,7 @@ pub fn from_table_alone<T: DeserializeOwned>(table: toml::Table, file: &str) -> 
     let problem = |field: &[Step], value: String, allowed: &str| super::Problem {
         field: if field.is_empty() { "(the top level)".into() } else { field_path(field) },
         value,
-        allowed: super::plain_types(allowed),
+        allowed: super::plain_types(&super::temperature::name_twins(allowed)),
     };
     if let Some(first) = missing_field(message) {
         let problems = all_missing::<T>(table, &path, first)

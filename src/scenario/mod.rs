@@ -13,6 +13,7 @@ pub mod range;
 pub mod rating;
 pub mod schema;
 pub mod section;
+pub mod temperature;
 pub mod thermal;
 pub mod thermal_conductor;
 pub mod validate;
@@ -96,8 +97,11 @@ pub fn parse(text: &str, file: &str) -> Result<Scenario, InputError> {
         });
     }
     catalog_defaults(&mut doc, file)?;
-    let scenario: Scenario = locate::from_table(doc, text, file)?;
-    let problems = validate::validate(&scenario);
+    let celsius = temperature::to_kelvin(&mut doc)
+        .map_err(|problems| InputError::Invalid { file: file.to_string(), problems })?;
+    let mut scenario: Scenario = locate::from_table(doc, text, file)?;
+    scenario.celsius = celsius;
+    let problems = scenario.celsius.as_written(validate::validate(&scenario));
     if problems.is_empty() { Ok(scenario) } else { Err(InputError::Invalid { file: file.to_string(), problems }) }
 }
 
@@ -213,7 +217,8 @@ pub fn read_text(path: &Path) -> Result<String, InputError> {
 
 /// Build a parsed scenario into its plan ([`build::build`]), naming `file` in the error.
 pub fn plan(s: &Scenario, file: &str) -> Result<Plan, InputError> {
-    build(s).map_err(|problems| InputError::Invalid { file: file.to_string(), problems })
+    build(s)
+        .map_err(|problems| InputError::Invalid { file: file.to_string(), problems: s.celsius.as_written(problems) })
 }
 
 /// Read, parse and validate a scenario file.

@@ -22,7 +22,8 @@
 
 use std::fmt;
 
-use super::validate::number;
+use super::temperature::ZERO_CELSIUS_K;
+use super::validate::{MIN_REFERENCE_TEMPERATURE_K, number};
 
 /// How the text of a [`Range`] begins.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -85,6 +86,16 @@ impl Range {
     /// The same range written `<words> [lo, hi] unit` (e.g. `current must be in`).
     pub const fn words(self, words: &'static str) -> Self {
         Range { form: Form::Interval(words), ..self }
+    }
+    /// The same range of a temperature in kelvin written in degrees Celsius: the ends less
+    /// [`ZERO_CELSIUS_K`] (rounded to 1e-9 C, so that 173.15 K is -100 C and not -100.00000000000003), the
+    /// unit `C`, no note (the notes of the kelvin ranges are about kelvin); any other range as it is.
+    pub fn celsius(self) -> Self {
+        if !self.unit.eq("K") {
+            return self;
+        }
+        let c = |k: f64| ((k - ZERO_CELSIUS_K) * 1e9).round() / 1e9;
+        Range { lo: c(self.lo), hi: c(self.hi), unit: "C", note: "", ..self }
     }
     /// Whether `x` is allowed: finite and within the ends (see the module doc for an open end at 0).
     pub fn contains(&self, x: f64) -> bool {
@@ -180,6 +191,45 @@ pub const CURRENT_A: Range = Range::closed(0.0, 1.0e5, "A");
 /// A temperature of a temperature or heat-conduction event [K].
 pub const EVENT_TEMPERATURE_K: Range = Range::open_closed(0.0, 5000.0, "K");
 
+/// The temperature at which a conductor is stress-free at its unstretched length `u_ref` [K]
+/// (`conductor.reference_temperature_k`), from [`MIN_REFERENCE_TEMPERATURE_K`] (-100 C).
+pub const REFERENCE_TEMPERATURE_K: Range = Range::closed(MIN_REFERENCE_TEMPERATURE_K, 5000.0, "K").note(
+    ": a temperature in kelvin, not Celsius (15 C is 288.15 K); the floor -100 C is below the coldest air measured \
+     on Earth (-89.2 C)",
+);
+
+/// The stringing temperature of a section [K] (`section.stringing_temperature_k`): -50 to 100 C.
+pub const STRINGING_TEMPERATURE_K: Range = Range::closed(223.15, 373.15, "K");
+
+/// The low reference temperature of a conductor's resistance [K] (a `[thermal.conductor]` table).
+pub const RESISTANCE_TEMPERATURE_K: Range = CONDUCTOR_TEMPERATURE_K.note(" (kelvin, not Celsius)");
+
+/// The ambient air temperature of a weather [K] (`weather.air_temperature_k`).
+pub const AIR_TEMPERATURE_K: Range = Range::closed(200.0, 350.0, "K").note(" (-73 to 77 C)");
+
+/// The conductor's maximum temperature of a rating [K] (`rating.max_temperature_k`): 0 to 327 C.
+pub const RATING_TEMPERATURE_K: Range = Range::closed(273.15, 600.0, "K");
+
+/// A maximum conductor temperature of a thermal case's ampacities [K] (`max_temperature_k`).
+pub const AMPACITY_TEMPERATURE_K: Range = Range::closed(250.0, 600.0, "K");
+
+/// The temperature limit of a thermal case's transient [K] (`transient.limit_k`).
+pub const TRANSIENT_LIMIT_K: Range = Range::closed(200.0, 600.0, "K");
+
+/// Every range of a temperature field, in kelvin: a problem stated with one of these about a field written
+/// in degrees Celsius is shown in Celsius ([`super::temperature::Celsius::as_written`]).
+pub const TEMPERATURE_RANGES: &[Range] = &[
+    REFERENCE_TEMPERATURE_K,
+    STRINGING_TEMPERATURE_K,
+    EVENT_TEMPERATURE_K,
+    CONDUCTOR_TEMPERATURE_K,
+    RESISTANCE_TEMPERATURE_K,
+    AIR_TEMPERATURE_K,
+    RATING_TEMPERATURE_K,
+    AMPACITY_TEMPERATURE_K,
+    TRANSIENT_LIMIT_K,
+];
+
 /// Specific heat of a conductor's layer at 20 C [J/(kg K)] (aluminium 897, steel 481).
 pub const SPECIFIC_HEAT_J_PER_KG_K: Range =
     Range::closed(100.0, 5000.0, "J/(kg K)").note(" (aluminium 897, steel 481)");
@@ -209,6 +259,14 @@ mod tests {
         assert_eq!(Range::closed(-1.0e3, 5000.0, "").to_string(), "must be in [-1e3, 5000]");
         assert_eq!(Range::closed(1.0e-7, 173.15, "").to_string(), "must be in [1e-7, 173.15]");
         assert_eq!(Range::closed(0.01, 0.25, "").to_string(), "must be in [0.01, 0.25]");
+    }
+
+    #[test]
+    fn a_kelvin_range_in_celsius() {
+        assert_eq!(REFERENCE_TEMPERATURE_K.celsius().to_string(), "must be in [-100, 4726.85] C");
+        assert_eq!(EVENT_TEMPERATURE_K.celsius().to_string(), "must be in (-273.15, 4726.85] C");
+        assert_eq!(AIR_TEMPERATURE_K.celsius().to_string(), "must be in [-73.15, 76.85] C");
+        assert_eq!(CURRENT_A.celsius(), CURRENT_A);
     }
 
     #[test]

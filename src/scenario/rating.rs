@@ -11,7 +11,12 @@
 //!    1e-3 K (each solve starts from the last one's state).
 //! 2. The steady rating for the clearance is the ampacity at `T_lim` ([`crate::thermal::steady::ampacity`],
 //!    closed form); with a maximum conductor temperature `T_max` the rating is the smaller of the two.
-//! 3. After a step from the first point's current to `step_to_a`: the conductor starts at the steady state
+//! 3. The margin ([`OtherLimit`]): where `T_max` governs, the temperature at which the clearance (or sag)
+//!    limit would be reached, by the same bisection between `T_max` and 600 K (the top of
+//!    [`super::range::RATING_TEMPERATURE_K`]), and the steady ampacity there (the same closed form); where
+//!    the clearance governs, `T_max` and its ampacity. So the margin between the two limits is visible in
+//!    temperature and in current.
+//! 4. After a step from the first point's current to `step_to_a`: the conductor starts at the steady state
 //!    of the first current and the transient ([`crate::thermal::transient`]) is run until it reaches the
 //!    governing temperature (the time to reach the limit), or for 24 h. The sag follows the temperature
 //!    quasi-statically: the mechanical response (seconds) is fast beside the thermal one (minutes).
@@ -70,7 +75,7 @@ pub(crate) fn check(c: &mut Check, s: &Scenario, r: &RatingSpec) {
         }
     }
     if let Some(t) = r.max_temperature_k {
-        c.range("rating.max_temperature_k", t, &Allowed::closed(273.15, 600.0, "K"));
+        c.range("rating.max_temperature_k", t, &super::range::RATING_TEMPERATURE_K);
     }
     if let Some(i) = r.step_to_a {
         c.range("rating.step_to_a", i, &Allowed::open_closed(0.0, 1.0e5, "A"));
@@ -104,8 +109,28 @@ pub struct Rating {
     /// a step: (from [A], to [A], the steady temperature before [K], the time to reach the governing
     /// temperature [s] or `None` if not within 24 h)
     pub step: Option<(f64, f64, f64, Option<f64>)>,
-    /// static solves spent [-]
+    /// static solves spent [-] on the rating (1. and 2.)
     pub solves: usize,
+    /// the limit that does not govern (`None` without `T_max`)
+    pub other: Option<OtherLimit>,
+}
+
+/// The limit that does not govern a rating: where it lies in conductor temperature and current, so that the
+/// margin to it is visible (module doc, 3.).
+#[derive(Clone, Debug, PartialEq)]
+pub struct OtherLimit {
+    /// what it limits: `"clearance"`, `"sag"` (where `T_max` governs) or `"temperature"` (where the
+    /// clearance or sag governs)
+    pub quantity: &'static str,
+    /// the conductor temperature at which it is reached [K] (`None`: the clearance or sag stays within its
+    /// limit up to 600 K)
+    pub temperature_k: Option<f64>,
+    /// the steady ampacity at that temperature [A] (`None` where there is none)
+    pub current_a: Option<f64>,
+    /// static solves spent on it [-]
+    pub solves: usize,
+    /// why the temperature could not be found (a static solve beyond `T_max` failed)
+    pub failed: Option<String>,
 }
 
 /// Why a rating failed.
@@ -153,13 +178,13 @@ pub fn rate(s: &Scenario, file: &str) -> Result<Rating, RatingError> {
         _ => unreachable!("checked"),
     };
     let n = solver.wire().segments();
-    let mut solves = 0;
+    let solves = std::cell::Cell::new(0);
     // margin(T) >= 0 while within the limit.
     let mut margin = |temp: f64| -> Result<(f64, f64), RatingError> {
         solver.wire_mut().set_temperature(0..n, temp);
         statics::solve(&mut solver, &StaticOptions::default())
             .map_err(|e| RatingError::Failed(format!("static solve at {temp:.3} K: {e}")))?;
-        solves += 1;
+        solves.set(solves.get() + 1);
         let w = solver.wire();
         let value = match &ground {
             Some(g) if quantity == "clearance" => {
@@ -226,6 +251,48 @@ pub fn rate(s: &Scenario, file: &str) -> Result<Rating, RatingError> {
     };
     let (m_gov, at_rating) = margin(governing)?;
     debug_assert!(m_gov >= -1e-6);
+    let rating_solves = solves.get();
+    let other = match r.max_temperature_k {
+        None => None,
+        Some(t_max) if governing != t_max => Some(OtherLimit {
+            quantity: "temperature",
+            temperature_k: Some(t_max),
+            current_a: temperature_ampacity_a,
+            solves: 0,
+            failed: None,
+        }),
+        Some(t_max) => {
+            // T_max governs: where the clearance or sag limit is reached, below T_max (found above, without
+            // an ampacity) or beyond it (the same bisection, from T_max on).
+            let from = t_max.max(air);
+            let top = super::range::RATING_TEMPERATURE_K.hi.max(from);
+            let mut search = || -> Result<Option<f64>, RatingError> {
+                if limit_temperature_k.is_some() {
+                    return Ok(limit_temperature_k);
+                }
+                if margin(top)?.0 >= 0.0 {
+                    return Ok(None);
+                }
+                let (mut lo, mut hi) = (from, top);
+                while hi - lo > 1e-3 {
+                    let mid = 0.5 * (lo + hi);
+                    if margin(mid)?.0 >= 0.0 {
+                        lo = mid;
+                    } else {
+                        hi = mid;
+                    }
+                }
+                Ok(Some(lo))
+            };
+            // A failed static solve beyond T_max leaves the rating as it is; the margin says why it is missing.
+            let (found, failed) = match search() {
+                Ok(t) => (t, None),
+                Err(e) => (None, Some(e.to_string())),
+            };
+            let current_a = found.and_then(|t| steady::ampacity(&model, t).ok()).map(|a| a.current_a);
+            Some(OtherLimit { quantity, temperature_k: found, current_a, solves: solves.get() - rating_solves, failed })
+        }
+    };
     let step = match r.step_to_a {
         Some(to) => {
             let schedule = CurrentSchedule::new(t.current_a.iter().map(|p| (p[0], p[1])).collect())
@@ -250,6 +317,7 @@ pub fn rate(s: &Scenario, file: &str) -> Result<Rating, RatingError> {
         rating_a,
         governing_temperature_k: governing,
         step,
-        solves,
+        solves: rating_solves,
+        other,
     })
 }

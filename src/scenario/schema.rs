@@ -56,6 +56,10 @@ pub struct Scenario {
     /// `ohl-app` crate); ignored by the library, which does not know its schema
     #[serde(default)]
     pub paper: Option<toml::Value>,
+    /// the temperature fields the file gave in degrees Celsius (set by [`super::parse`], not a key of the
+    /// file): the problems about them are written in Celsius ([`super::temperature`])
+    #[serde(skip)]
+    pub celsius: super::temperature::Celsius,
 }
 
 /// Constitutive law selector.

@@ -360,7 +360,7 @@ pub(crate) fn check(
     let t_ref = s.conductor.reference_temperature_k;
     let stringing_factor = match sec.stringing_temperature_k {
         Some(t0) => {
-            if !c.range("section.stringing_temperature_k", t0, &Allowed::closed(223.15, 373.15, "K")) {
+            if !c.range("section.stringing_temperature_k", t0, &super::range::STRINGING_TEMPERATURE_K) {
                 return None;
             }
             let factor = 1.0 + s.conductor.thermal_expansion_per_k * (t0 - t_ref);

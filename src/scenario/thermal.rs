@@ -36,8 +36,8 @@ use crate::thermal::transient::{CurrentSchedule, Transient};
 use crate::thermal::weather::{Atmosphere, Sun, Weather};
 use crate::thermal::{Model, Standard, ThermalConductor, catalog, steady};
 
-/// The heat-balance standard.
-#[derive(Clone, Copy, Debug, Default, Deserialize, PartialEq, Eq)]
+/// The heat-balance standard (written, as in `thermal.json`, by the names it is read by).
+#[derive(Clone, Copy, Debug, Default, Deserialize, serde::Serialize, PartialEq, Eq)]
 #[serde(rename_all = "snake_case")]
 pub enum StandardSpec {
     /// IEEE Std 738-2012 (default)
@@ -222,8 +222,7 @@ pub fn weather(w: &WeatherSpec) -> Weather {
 
 /// Check a weather table under the field prefix `at` (e.g. `thermal.weather`).
 pub fn check_weather(c: &mut Check, at: &str, w: &WeatherSpec, standard: StandardSpec) {
-    let air = Allowed::closed(200.0, 350.0, "K").note(" (-73 to 77 C)");
-    c.range(&format!("{at}.air_temperature_k"), w.air_temperature_k, &air);
+    c.range(&format!("{at}.air_temperature_k"), w.air_temperature_k, &super::range::AIR_TEMPERATURE_K);
     c.range(&format!("{at}.wind_speed_m_per_s"), w.wind_speed_m_per_s, &Allowed::closed(0.0, 50.0, "m/s"));
     c.range(&format!("{at}.wind_angle_deg"), w.wind_angle_deg, &Allowed::closed(0.0, 180.0, "deg"));
     c.range(&format!("{at}.elevation_m"), w.elevation_m, &Allowed::closed(0.0, 6000.0, "m"));
@@ -571,6 +570,10 @@ pub struct ThermalCase {
     /// de-icing
     #[serde(default)]
     pub deicing: Option<DeicingCaseSpec>,
+    /// the temperature fields the file gave in degrees Celsius (set by [`parse_case`], not a key of the
+    /// file)
+    #[serde(skip)]
+    pub celsius: super::temperature::Celsius,
 }
 
 /// Whether TOML text is a thermal case (a file for `ohl thermal`): a top-level `weather` table, or a
@@ -609,7 +612,10 @@ pub fn parse_case(text: &str, file: &str) -> Result<ThermalCase, super::InputErr
         return Err(super::InputError::Parse { file: file.to_string(), message: message.to_string() });
     }
     super::thermal_conductor::resolve_user_catalog(&mut doc, "", file)?;
-    let case: ThermalCase = super::locate::from_table(doc, text, file)?;
+    let celsius = super::temperature::to_kelvin(&mut doc)
+        .map_err(|problems| super::InputError::Invalid { file: file.to_string(), problems })?;
+    let mut case: ThermalCase = super::locate::from_table(doc, text, file)?;
+    case.celsius = celsius;
     let mut c = Check(Vec::new());
     let k = conductor(&mut c, "conductor", &case.conductor);
     check_inclination(
@@ -626,7 +632,7 @@ pub fn parse_case(text: &str, file: &str) -> Result<ThermalCase, super::InputErr
     }
     let air = case.weather.air_temperature_k;
     for (k, &t) in case.max_temperature_k.iter().enumerate() {
-        if c.range(&format!("max_temperature_k[{k}]"), t, &Allowed::closed(250.0, 600.0, "K")) && t <= air {
+        if c.range(&format!("max_temperature_k[{k}]"), t, &super::range::AMPACITY_TEMPERATURE_K) && t <= air {
             c.fail(
                 &format!("max_temperature_k[{k}]"),
                 number(t),
@@ -669,7 +675,7 @@ pub fn parse_case(text: &str, file: &str) -> Result<ThermalCase, super::InputErr
             c.range("transient.initial_temperature_k", k, &CONDUCTOR_TEMPERATURE_K);
         }
         if let Some(k) = t.limit_k {
-            c.range("transient.limit_k", k, &Allowed::closed(200.0, 600.0, "K"));
+            c.range("transient.limit_k", k, &super::range::TRANSIENT_LIMIT_K);
         }
     }
     if let Some(d) = &case.deicing {
@@ -699,7 +705,11 @@ pub fn parse_case(text: &str, file: &str) -> Result<ThermalCase, super::InputErr
             c.range(&format!("deicing.shed_within_s[{k}]"), t, &Allowed::open_closed(0.0, 1.0e6, "s"));
         }
     }
-    if c.0.is_empty() { Ok(case) } else { Err(super::InputError::Invalid { file: file.into(), problems: c.0 }) }
+    if c.0.is_empty() {
+        Ok(case)
+    } else {
+        Err(super::InputError::Invalid { file: file.into(), problems: case.celsius.as_written(c.0) })
+    }
 }
 
 impl ThermalCase {

@@ -42,8 +42,8 @@ use serde::Deserialize;
 use serde::de::{self, Deserializer, MapAccess, Visitor};
 
 use super::range::{
-    AXIAL_STIFFNESS_N, CONDUCTOR_TEMPERATURE_K, LINEAR_DENSITY_KG_PER_M, Range as Allowed,
-    SPECIFIC_HEAT_COEFFICIENT_PER_K, SPECIFIC_HEAT_J_PER_KG_K, THERMAL_EXPANSION_PER_K,
+    AXIAL_STIFFNESS_N, LINEAR_DENSITY_KG_PER_M, Range as Allowed, SPECIFIC_HEAT_COEFFICIENT_PER_K,
+    SPECIFIC_HEAT_J_PER_KG_K, THERMAL_EXPANSION_PER_K,
 };
 use super::validate::Check;
 use super::{InputError, Problem};
@@ -138,7 +138,7 @@ pub fn check_thermal_conductor(c: &mut Check, at: &str, t: &ThermalConductor) ->
     }
     let (r_lo, t_lo) = (t.resistance_low_ohm_per_m, t.temperature_low_k);
     let lo_ok = c.range(&f("resistance_low_ohm_per_m"), r_lo, &Allowed::closed(1.0e-7, 0.1, "ohm/m"))
-        & c.range(&f("temperature_low_k"), t_lo, &CONDUCTOR_TEMPERATURE_K.note(" (kelvin, not Celsius)"));
+        & c.range(&f("temperature_low_k"), t_lo, &super::range::RESISTANCE_TEMPERATURE_K);
     if lo_ok {
         let hi_r = c.within(
             &f("resistance_high_ohm_per_m"),

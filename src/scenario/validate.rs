@@ -7,8 +7,8 @@ use std::ops::Range;
 
 use super::events::{EventSpec, GroundSpec, HeatBoundarySpec, break_segment, node_range, segment_range};
 use super::range::{
-    AXIAL_STIFFNESS_N, EVENT_TEMPERATURE_K, LINEAR_DENSITY_KG_PER_M, RATED_TENSILE_STRENGTH_N, Range as Allowed,
-    THERMAL_EXPANSION_PER_K,
+    AXIAL_STIFFNESS_N, EVENT_TEMPERATURE_K, LINEAR_DENSITY_KG_PER_M, RATED_TENSILE_STRENGTH_N, REFERENCE_TEMPERATURE_K,
+    Range as Allowed, THERMAL_EXPANSION_PER_K,
 };
 use super::schema::{Scenario, ShapeSpec, SupportSpec, TensionLawSpec, WindLawSpec};
 use super::section::SectionGrid;
@@ -163,7 +163,7 @@ pub(crate) fn check(s: &Scenario) -> (Vec<Problem>, Derived) {
         cd.thermal_expansion_per_k,
         &THERMAL_EXPANSION_PER_K.note(" (aluminium: 23.8e-6, section 5.4)"),
     );
-    c.range("conductor.reference_temperature_k", cd.reference_temperature_k, &REFERENCE_TEMPERATURE);
+    c.range("conductor.reference_temperature_k", cd.reference_temperature_k, &REFERENCE_TEMPERATURE_K);
     if let Some(r) = cd.rated_tensile_strength_n {
         c.range("conductor.rated_tensile_strength_n", r, &RATED_TENSILE_STRENGTH_N);
     }
@@ -558,10 +558,6 @@ pub(crate) fn check(s: &Scenario) -> (Vec<Problem>, Derived) {
 
 const CONDUCTOR_DENSITY: Allowed =
     LINEAR_DENSITY_KG_PER_M.finite().note(" (bare conductors 0.1 to 5 kg/m, heavily iced ones up to about 30 kg/m)");
-const REFERENCE_TEMPERATURE: Allowed = Allowed::closed(MIN_REFERENCE_TEMPERATURE_K, 5000.0, "K").note(
-    ": a temperature in kelvin, not Celsius (15 C is 288.15 K); the floor -100 C is below the coldest air measured \
-     on Earth (-89.2 C)",
-);
 const EA_ALLOWED: Allowed = AXIAL_STIFFNESS_N.finite().note(" (section 4: 7.9e5 N; conductors are 1e6 to 1e9 N)");
 /// Wind speed [m/s], between [`MIN_WIND_SPEED_M_PER_S`] and [`MAX_WIND_SPEED_M_PER_S`].
 const WIND_SPEED: Allowed = Allowed::closed(MIN_WIND_SPEED_M_PER_S, MAX_WIND_SPEED_M_PER_S, "m/s").note(

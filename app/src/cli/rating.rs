@@ -20,7 +20,8 @@ pub struct RatingArgs {
     out: PathBuf,
 }
 
-const C: f64 = 273.15;
+/// 0 C in kelvin: a temperature `T` [K] is `T - C` degrees Celsius.
+const C: f64 = ohl::scenario::temperature::ZERO_CELSIUS_K;
 
 /// Run the command; exit 0 on success, 1 if a solve failed, 2 on invalid input.
 pub fn main(args: RatingArgs) -> ExitCode {
@@ -64,6 +65,21 @@ pub fn main(args: RatingArgs) -> ExitCode {
         r.at_rating_m,
         r.solves
     );
+    if let Some(o) = &r.other {
+        let what = if o.quantity == "temperature" { "maximum temperature" } else { o.quantity };
+        match (o.temperature_k, &o.failed) {
+            (Some(t), _) => out!(
+                "  margin: the {what} limit is reached at {:.3} C{}",
+                t - C,
+                o.current_a.map_or_else(|| " (no steady ampacity there)".to_string(), |a| format!(", at {a:.1} A"))
+            ),
+            (None, Some(why)) => out!("  margin: the {what} limit was not found: {why}"),
+            (None, None) => out!(
+                "  margin: the {what} stays within its limit up to {:.2} C",
+                ohl::scenario::range::RATING_TEMPERATURE_K.hi - C
+            ),
+        }
+    }
     if let Some((from, to, start, when)) = r.step {
         match when {
             Some(t) => out!(
@@ -82,7 +98,16 @@ pub fn main(args: RatingArgs) -> ExitCode {
         "rating_a": r.rating_a, "governing_temperature_k": r.governing_temperature_k, "at_rating_m": r.at_rating_m,
         "step": r.step.map(|(from, to, start, when)| json!({"from_a": from, "to_a": to, "initial_temperature_k": start, "time_to_limit_s": when})),
         "static_solves": r.solves,
+        "limit_temperature_c": r.limit_temperature_k.map(|t| t - C),
+        "governing_temperature_c": r.governing_temperature_k - C,
+        "other_limit": r.other.as_ref().map(|o| json!({"quantity": o.quantity, "temperature_k": o.temperature_k,
+            "temperature_c": o.temperature_k.map(|t| t - C), "current_a": o.current_a, "static_solves": o.solves,
+            "failed": o.failed})),
     });
+    let mut doc = doc;
+    if let (Some(step), Some((_, _, start, _))) = (doc.get_mut("step").and_then(|s| s.as_object_mut()), r.step) {
+        step.insert("initial_temperature_c".into(), json!(start - C));
+    }
     if let Err(e) = std::fs::create_dir_all(&args.out).and_then(|_| {
         std::fs::write(args.out.join("rating.json"), serde_json::to_string_pretty(&doc).unwrap_or_default())
     }) {

@@ -17,14 +17,15 @@ use serde_json::json;
 /// Arguments of `ohl thermal`.
 #[derive(clap::Args)]
 pub struct ThermalArgs {
-    /// the thermal case (TOML, SI units, kelvin)
+    /// the thermal case (TOML, SI units; temperatures in kelvin `_k` or degrees Celsius `_c`)
     case: PathBuf,
     /// output directory (created if missing)
     #[arg(long, default_value = "out")]
     out: PathBuf,
 }
 
-const C: f64 = 273.15;
+/// 0 C in kelvin: a temperature `T` [K] is `T - C` degrees Celsius.
+const C: f64 = ohl::scenario::temperature::ZERO_CELSIUS_K;
 
 /// Run the command; exit 0 on success, 1 if a computation failed, 2 on invalid input.
 pub fn main(args: ThermalArgs) -> ExitCode {
@@ -78,17 +79,16 @@ fn evaluate(case: &ThermalCase, out: &std::path::Path) -> Result<(), String> {
             s.terms.convection_w_per_m,
             s.terms.radiation_w_per_m
         );
-        steady_rows.push(
-            json!({"current_a": i, "temperature_k": s.temperature_k, "terms": terms_json(&model, s.temperature_k, i)}),
-        );
+        steady_rows
+            .push(json!({"current_a": i, "temperature_k": s.temperature_k, "temperature_c": s.temperature_k - C,
+            "terms": terms_json(&model, s.temperature_k, i)}));
     }
     let mut ampacity_rows = Vec::new();
     for &t in &case.max_temperature_k {
         let a = steady::ampacity(&model, t).map_err(|e| e.to_string())?;
         out!("  steady ampacity at {:7.2} C: {:9.2} A", t - C, a.current_a);
-        ampacity_rows.push(
-            json!({"max_temperature_k": t, "current_a": a.current_a, "terms": terms_json(&model, t, a.current_a)}),
-        );
+        ampacity_rows.push(json!({"max_temperature_k": t, "max_temperature_c": t - C, "current_a": a.current_a,
+                "terms": terms_json(&model, t, a.current_a)}));
     }
     let mut transient = serde_json::Value::Null;
     if let Some(t) = &case.transient {
@@ -124,7 +124,8 @@ fn evaluate(case: &ThermalCase, out: &std::path::Path) -> Result<(), String> {
                 None => out!("  does not reach {:.2} C within {} s", l - C, t.end_time_s),
             }
         }
-        transient = json!({"initial_temperature_k": t0, "final_temperature_k": last, "limit_k": t.limit_k, "time_to_limit_s": reach.flatten()});
+        transient = json!({"initial_temperature_k": t0, "final_temperature_k": last, "limit_k": t.limit_k, "time_to_limit_s": reach.flatten(),
+            "initial_temperature_c": t0 - C, "final_temperature_c": last - C, "limit_c": t.limit_k.map(|l| l - C)});
     }
     let mut deicing = serde_json::Value::Null;
     if let (Some(de), Some(d)) = (case.deicing().map_err(|e| e.to_string())?, &case.deicing) {
@@ -173,7 +174,7 @@ fn evaluate(case: &ThermalCase, out: &std::path::Path) -> Result<(), String> {
         deicing = json!({"ice_kg_per_m": de.ice_mass_kg_per_m(), "minimum_current_a": min, "runs": runs, "shed_within": within});
     }
     let doc = json!({
-        "name": name, "conductor": case.conductor.label(), "standard": format!("{:?}", case.standard),
+        "name": name, "conductor": case.conductor.label(), "standard": case.standard,
         "steady": steady_rows, "ampacity": ampacity_rows, "transient": transient, "deicing": deicing,
     });
     let path = out.join("thermal.json");

@@ -213,8 +213,9 @@ fn chart(p: &PanelSpec, spec: &PaperSpec, plan: &Plan, o: &Outcome, c: &Columns,
         }
         PanelKind::Temperature => {
             chart.title = p.title.clone().unwrap_or_else(|| "mean wire temperature".into());
-            chart.y_label = "mean temperature [K]".into();
-            let pts = idx.iter().map(|&i| (c.t[i] * tf, c.probes[i].mean_temperature_k)).collect();
+            chart.y_label = "mean temperature [C]".into();
+            let zero_c = ohl::scenario::temperature::ZERO_CELSIUS_K;
+            let pts = idx.iter().map(|&i| (c.t[i] * tf, c.probes[i].mean_temperature_k - zero_c)).collect();
             chart.series.push(Series::new("computed", pts, Style::Line, 0));
         }
     }

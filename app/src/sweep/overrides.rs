@@ -7,12 +7,16 @@
 //! table is replaced by a TOML literal (`[0.0, 150.0, 0.0]`, in a cases file cell in double quotes); one
 //! component is simpler to vary by its index (`geometry.right_support_m[1]`).
 //!
+//! A temperature field replaces its twin in the other unit (`conductor.reference_temperature_c = 15` removes
+//! the base file's `conductor.reference_temperature_k`, [`ohl::scenario::temperature`]).
+//!
 //! Every table and array on the way to the field must be in the base file, an index must be within its
 //! array and a name (`[name=A]`) must name one of its tables; only the last key may be missing, and its
 //! value's type is then read from the text (a whole number, a number, `true`/`false`, a TOML array or
 //! inline table, otherwise text). Such a field is checked once before the sweep: a key that the scenario
 //! format does not know is refused then ([`super::Sweep`]).
 
+use ohl::scenario::temperature::{celsius_twin, kelvin_twin};
 use toml::{Table, Value};
 
 use super::path::{FieldPath, Step};
@@ -192,7 +196,14 @@ fn set(root: &mut Value, path: &FieldPath, text: &str) -> Result<(), OverrideErr
     let p = parent(root, path)?;
     let slot = match (&path.steps[n - 1], p) {
         (Step::Key(key), Value::Table(t)) => {
-            let value = convert(t.get(key), path, text)?;
+            // A temperature given in the other unit (`reference_temperature_k` for a varied
+            // `reference_temperature_c`, or the reverse) is replaced: a file gives one of the two.
+            let twin = celsius_twin(key).or_else(|| kelvin_twin(key)).filter(|twin| t.contains_key(twin));
+            let was = t.get(key).or_else(|| twin.as_ref().and_then(|twin| t.get(twin)));
+            let value = convert(was, path, text)?;
+            if let Some(twin) = twin {
+                t.remove(&twin);
+            }
             t.insert(key.clone(), value);
             return Ok(());
         }
@@ -281,6 +292,18 @@ action = "break"
     }
     fn at(d: &Table, field: &str) -> Value {
         existing(d, &p(field)).unwrap().unwrap()
+    }
+
+    #[test]
+    fn a_temperature_replaces_its_twin_in_the_other_unit() {
+        let mut d: Table = "[conductor]\nreference_temperature_k = 288.15\n".parse().unwrap();
+        apply(&mut d, &p("conductor.reference_temperature_c"), "20").unwrap();
+        // The base file's number type (a float) is kept; the kelvin twin is gone.
+        assert_eq!(at(&d, "conductor.reference_temperature_c"), Value::Float(20.0));
+        assert!(existing(&d, &p("conductor.reference_temperature_k")).unwrap().is_none());
+        apply(&mut d, &p("conductor.reference_temperature_k"), "300").unwrap();
+        assert_eq!(at(&d, "conductor.reference_temperature_k"), Value::Float(300.0));
+        assert!(existing(&d, &p("conductor.reference_temperature_c")).unwrap().is_none());
     }
 
     #[test]
