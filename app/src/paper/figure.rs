@@ -5,14 +5,16 @@
 //! l`; the axis labels give the conversion to metres and seconds), a mid-span trajectory, the shapes at
 //! the snapshot times, tension histories and the mean temperature. The paper's values are drawn as
 //! markers at the time the paper prints them, the independent reference as a dashed line beside the
-//! computed curve.
+//! computed curve. A panel with several references (one per stage of a case: own weight, iced, ...)
+//! draws them in one colour under one legend entry, and the paper's values likewise: each stands at the
+//! time it belongs to, so the legend needs to say only what they are.
 
 use std::io::Write;
 use std::path::Path;
 
 use super::extract::Series as Columns;
 use super::table::Row;
-use crate::paper::spec::{ExtractKind, PanelKind, PanelSpec, PaperSpec, UnitSpec};
+use crate::paper::spec::{ExtractKind, PanelKind, PanelSpec, PaperSpec, ReferenceKind, UnitSpec};
 use crate::plot::{Chart, PlotError, Series, Style, TopAxis, render_titled};
 use ohl::run::Outcome;
 use ohl::scenario::Plan;
@@ -30,12 +32,61 @@ fn in_window(t: f64, w: Option<[f64; 2]>) -> bool {
     w.is_none_or(|[a, b]| t >= a - 1e-9 && t <= b + 1e-9)
 }
 
+/// The unit of the temperature panels: its axis label and the conversion from kelvin.
+const TEMPERATURE_UNIT: (&str, fn(f64) -> f64) = ("mean temperature [K]", |k| k);
+
+/// What a reference is, for a legend.
+fn describe(r: ReferenceKind) -> &'static str {
+    match r {
+        ReferenceKind::ExactArc => "exact arc",
+        ReferenceKind::PaperArc => "paper's arc (4.1)",
+        ReferenceKind::ExactCatenary => "exact catenary",
+        ReferenceKind::ExactCatenaryWithWind => "exact catenary with wind",
+        ReferenceKind::PaperParabola => "paper's parabola (4.3)-(4.4)",
+        ReferenceKind::ThermalStrain => "thermal strain (5.5)",
+        ReferenceKind::ThermalForce => "thermal force (5.6)",
+    }
+}
+
+/// Several references of a panel become one legend entry in one colour (the first one's), and several
+/// paper values likewise: `references` are the kinds of the panel's reference series, in their order.
+fn group_legend(chart: &mut Chart, references: &[ReferenceKind], section: &str) {
+    for (prefix, style) in [("reference: ", Style::Dashed), ("paper: ", Style::Markers)] {
+        let idx: Vec<usize> = (0..chart.series.len())
+            .filter(|&i| chart.series[i].style == style && chart.series[i].label.starts_with(prefix))
+            .collect();
+        if idx.len() < 2 {
+            continue;
+        }
+        let label = if style == Style::Dashed {
+            let mut names: Vec<&str> = references.iter().map(|r| describe(*r)).collect();
+            names.dedup();
+            format!("reference: {} at each stage", names.join(", "))
+        } else {
+            format!("paper (section {section}): its values at their times")
+        };
+        let color = chart.series[idx[0]].color;
+        for (n, &i) in idx.iter().enumerate() {
+            chart.series[i].color = color;
+            chart.series[i].label = if n == 0 { label.clone() } else { String::new() };
+        }
+    }
+}
+
 /// Build the panels of a case.
 pub fn charts(spec: &PaperSpec, plan: &Plan, o: &Outcome, cols: &Columns, rows: &[Row]) -> Vec<Chart> {
     let l = spec.length_scale_m;
     let mut out = Vec::new();
     for p in &spec.panels {
-        out.push(chart(p, spec, plan, o, cols, rows, l));
+        let mut c = chart(p, spec, plan, o, cols, rows, l);
+        let references: Vec<ReferenceKind> = rows
+            .iter()
+            .zip(&spec.checks)
+            .filter(|(r, _)| r.exact.is_some())
+            .filter_map(|(_, ch)| ch.reference)
+            .collect();
+        group_legend(&mut c, &references, &spec.section);
+        out.push(c);
     }
     out
 }
@@ -213,8 +264,9 @@ fn chart(p: &PanelSpec, spec: &PaperSpec, plan: &Plan, o: &Outcome, c: &Columns,
         }
         PanelKind::Temperature => {
             chart.title = p.title.clone().unwrap_or_else(|| "mean wire temperature".into());
-            chart.y_label = "mean temperature [K]".into();
-            let pts = idx.iter().map(|&i| (c.t[i] * tf, c.probes[i].mean_temperature_k)).collect();
+            let (label, convert) = TEMPERATURE_UNIT;
+            chart.y_label = label.into();
+            let pts = idx.iter().map(|&i| (c.t[i] * tf, convert(c.probes[i].mean_temperature_k))).collect();
             chart.series.push(Series::new("computed", pts, Style::Line, 0));
         }
     }
