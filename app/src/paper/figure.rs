@@ -321,3 +321,39 @@ pub fn write_csv(o: &Outcome, c: &Columns, plan: &Plan, l: f64, stem: &Path) -> 
     }
     Ok(())
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn several_references_and_paper_values_share_one_legend_entry_each() {
+        let seg = |a: f64| vec![(a, 1.0), (a + 1.0, 1.0)];
+        let mut chart = Chart {
+            series: vec![
+                Series::new("computed", seg(0.0), Style::Line, 0),
+                Series::new("reference: own weight", seg(0.0), Style::Dashed, 1),
+                Series::new("paper: own weight", vec![(1.0, 1.0)], Style::Markers, 4),
+                Series::new("reference: iced", seg(2.0), Style::Dashed, 2),
+                Series::new("paper: iced", vec![(3.0, 1.0)], Style::Markers, 5),
+                Series::new("reference: final", seg(4.0), Style::Dashed, 3),
+            ],
+            ..Default::default()
+        };
+        let kinds = [ReferenceKind::ExactCatenary, ReferenceKind::ExactCatenary, ReferenceKind::ExactCatenary];
+        group_legend(&mut chart, &kinds, "5.6");
+        let labels: Vec<&str> = chart.series.iter().map(|s| s.label.as_str()).filter(|l| !l.is_empty()).collect();
+        assert_eq!(
+            labels,
+            ["computed", "reference: exact catenary at each stage", "paper (section 5.6): its values at their times"]
+        );
+        // One colour per group: the first member's.
+        assert!(chart.series[1..].iter().filter(|s| s.style == Style::Dashed).all(|s| s.color == 1));
+        assert!(chart.series.iter().filter(|s| s.style == Style::Markers).all(|s| s.color == 4));
+        // A single reference keeps its own label.
+        let mut one = Chart { series: chart.series[..2].to_vec(), ..Default::default() };
+        one.series[1].label = "reference: own weight".into();
+        group_legend(&mut one, &kinds[..1], "5.6");
+        assert_eq!(one.series[1].label, "reference: own weight");
+    }
+}
