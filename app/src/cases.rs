@@ -394,8 +394,11 @@ fn draw(
                 let mut xs = vec![lo, hi];
                 xs.extend(g.profile_m.iter().map(|p| p[0]).filter(|&x| x > lo && x < hi));
                 xs.sort_by(f64::total_cmp);
-                let label =
-                    if g.profile_m.is_empty() { format!("ground, x3 = {} m", g.height_m) } else { "ground profile".into() };
+                let label = if g.profile_m.is_empty() {
+                    format!("ground, x3 = {} m", g.height_m)
+                } else {
+                    "ground profile".into()
+                };
                 shapes.push(Series::new(label, xs.iter().map(|&x| (x, g.height_at(x))).collect(), Style::Dashed, 7));
             }
         }

@@ -258,8 +258,6 @@ struct Prepared<'a> {
     label: String,
     /// for a solid line drawn over earlier ones: dash and gap [px at scale 1]
     cover_dash: Option<(f64, f64)>,
-    /// the colour of the line it covers, shown in the gaps of its legend sample
-    beneath: Option<RGBColor>,
 }
 
 /// Effective colours (unique among labelled series), and the lines that cover others: a line mostly
@@ -293,13 +291,11 @@ fn prepare<'a>(chart: &'a Chart, xr: (f64, f64), yr: (f64, f64)) -> Vec<Prepared
     let drawn = |s: &Series| -> Vec<(f64, f64)> {
         decimate(&s.points, xr, chart.log_x, CHECK_COLUMNS).into_iter().map(unit).collect()
     };
-    let lines: Vec<Option<Vec<(f64, f64)>>> =
-        chart.series.iter().map(|s| class(s).map(|_| drawn(s))).collect();
+    let lines: Vec<Option<Vec<(f64, f64)>>> = chart.series.iter().map(|s| class(s).map(|_| drawn(s))).collect();
     // Line i is covered by a later line j of its class if j runs within 0.6 % of the axes
     // (`HIDDEN_DISTANCE`) of most of i's points (of its points as decimated for drawing, `CHECK_COLUMNS`).
     // covers[j]: the labels of the lines j covers, and whether it covers all of them nearly everywhere.
     let mut covers: Vec<(Vec<String>, bool)> = vec![(Vec::new(), true); n];
-    let mut beneath: Vec<Option<usize>> = vec![None; n];
     let mut depth = vec![0_usize; n];
     for j in 0..n {
         let Some(b) = &lines[j] else { continue };
@@ -312,7 +308,6 @@ fn prepare<'a>(chart: &'a Chart, xr: (f64, f64), yr: (f64, f64)) -> Vec<Prepared
             let near = a.iter().filter(|p| grid.within(**p, b)).count();
             if near * 2 > a.len() {
                 depth[j] = depth[j].max(depth[i] + 1);
-                beneath[j] = beneath[j].or(Some(i));
                 let label = &chart.series[i].label;
                 if !label.is_empty() {
                     // The short form of a label: "t = 59.99 s" of "t = 59.99 s (tau = 7.50)".
@@ -328,7 +323,7 @@ fn prepare<'a>(chart: &'a Chart, xr: (f64, f64), yr: (f64, f64)) -> Vec<Prepared
     chart
         .series
         .iter()
-        .zip(colors.iter().copied())
+        .zip(colors)
         .enumerate()
         .map(|(j, (series, c))| {
             let (names, all) = &covers[j];
@@ -338,10 +333,9 @@ fn prepare<'a>(chart: &'a Chart, xr: (f64, f64), yr: (f64, f64)) -> Vec<Prepared
                 let how = if *all { "coincides with" } else { "largely over" };
                 format!("{} ({how} {})", series.label, names.join(", "))
             };
-            let cover_dash = (depth[j] > 0 && chart.series[j].style.class() == 0)
-                .then(|| size::COVER_DASH[(depth[j] - 1).min(1)]);
-            let beneath = beneath[j].map(|i| PALETTE[colors[i]]);
-            Prepared { series, color: PALETTE[c], label, cover_dash, beneath }
+            let cover_dash =
+                (depth[j] > 0 && chart.series[j].style.class() == 0).then(|| size::COVER_DASH[(depth[j] - 1).min(1)]);
+            Prepared { series, color: PALETTE[c], label, cover_dash }
         })
         .collect()
 }
@@ -593,11 +587,9 @@ fn draw_panel<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, panel: &Panel, 
     let y_area = widest_y + 1.5 * size::AXIS + 12.0;
     let plot_w = f64::from(pw) / s - y_area - 2.0 * size::MARGIN;
     let x_ticks = match &chart.x_categories {
-        Some(names) => Ticks {
-            at: (0..names.len()).map(|k| k as f64).collect(),
-            labels: names.clone(),
-            minor: Vec::new(),
-        },
+        Some(names) => {
+            Ticks { at: (0..names.len()).map(|k| k as f64).collect(), labels: names.clone(), minor: Vec::new() }
+        }
         None => axis_ticks(
             xr,
             chart.log_x,
@@ -858,10 +850,6 @@ fn draw_legend<DB: DrawingBackend>(
                 area.draw(&PathElement::new(vec![(xa, yy), (xb, yy)], stroke)).map_err(e)?;
             }
             (_, Some((on, off))) => {
-                if let (Some(under), Some(_)) = (p.beneath, p.cover_dash) {
-                    let stroke = under.stroke_width(px(size::LINE).max(1) as u32);
-                    area.draw(&PathElement::new(vec![(xa, yy), (xb, yy)], stroke)).map_err(e)?;
-                }
                 let mut t = 0.0;
                 while t < size::SAMPLE {
                     let a = px(x + t);
