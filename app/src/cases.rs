@@ -5,7 +5,7 @@
 //! - `<case>_loads.png/.svg`: the force of the conductor on every support along the line (`f2`) and
 //!   vertically (`f3`) [kN], the strings' swing along the line [deg] and each span's mid-span height
 //!   relative to its chord midpoint [m] (negative: below the chord), against time [s] (every panel in
-//!   seconds, the temperature of a thermal case too);
+//!   seconds, the temperature of a thermal case too: over the whole run, and over the load panels' time);
 //! - `<case>_shapes.png/.svg`: the section (height `x3` against the distance along the line `x2`) at the
 //!   snapshot times, and the ground under it where the case has one;
 //! - `<case>_table.csv` and the printed table: per support, the longitudinal load at the start, its peak
@@ -371,6 +371,17 @@ fn draw(
             series,
             ..Default::default()
         });
+        // The quadrant beside it: the temperature over the load panels' time range (the shedding).
+        if charts.len() % 2 == 1 && from_s.is_finite() {
+            let window: Vec<(f64, f64)> = pts.iter().copied().filter(|p| p.0 >= from_s).collect();
+            charts.push(Chart {
+                title: "Conductor temperature over the load panels' time".into(),
+                x_label: "time t [s]".into(),
+                y_label: unit.into(),
+                series: vec![Series::new("conductor", window, Style::Line, 0)],
+                ..Default::default()
+            });
+        }
     }
     let plot_err = |e: crate::plot::PlotError| CaseError::Io(e.to_string());
     render_titled(&charts, 2, (680, 440), heading, &dir.join(format!("{name}_loads"))).map_err(plot_err)?;

@@ -101,6 +101,8 @@ fn deicing_case_sheds_when_the_deicing_model_says_and_balances_after() {
     // section) drawn once each, the later one dashed over the other and named so in its legend entry.
     let loads = std::fs::read_to_string(c.dir.join("d_deicing_loads.svg")).unwrap();
     assert!(!loads.contains("[min]"), "minutes beside seconds");
+    // Six panels, none empty: the temperature also over the load panels' time (1900 s on).
+    assert!(loads.contains("Conductor temperature over the load panels' time"));
     assert!(loads.contains("aria-label=\"support 3 (coincides with support 0)\""));
     // The shed time in the run's summary is that of the stand-alone de-icing model of one metre of the
     // same conductor, ice and weather (`ohl thermal examples/thermal/drake_deicing.toml`): the run plays
