@@ -4,9 +4,10 @@
 //!
 //! - `<case>_loads.png/.svg`: the force of the conductor on every support along the line (`f2`) and
 //!   vertically (`f3`) [kN], the strings' swing along the line [deg] and each span's mid-span height
-//!   change [m], against time;
+//!   relative to its chord midpoint [m] (negative: below the chord), against time [s] (every panel in
+//!   seconds, the temperature of a thermal case too: over the whole run, and over the load panels' time);
 //! - `<case>_shapes.png/.svg`: the section (height `x3` against the distance along the line `x2`) at the
-//!   snapshot times;
+//!   snapshot times, and the ground under it where the case has one;
 //! - `<case>_table.csv` and the printed table: per support, the longitudinal load at the start, its peak
 //!   (largest magnitude) and time, the residual static load and the ratio of peak to residual; per span
 //!   the jump of its mid-span point (highest rise above its starting height). The ratio is left empty
@@ -235,6 +236,7 @@ pub fn run_case(path: &Path, out: &Path) -> Result<CaseOutcome, CaseError> {
         }
     }
     let dir = out.join(&name);
+    let ground = plan.ground.clone();
     let o = run(plan, &RunOptions { out_dir: Some(dir.clone()), record: false }).map_err(Box::new)?;
     let residual = residual_loads(&o.solver);
     let ts = read_columns(&dir.join("timeseries.csv"))?;
@@ -278,7 +280,7 @@ pub fn run_case(path: &Path, out: &Path) -> Result<CaseOutcome, CaseError> {
         c.diameter_m.map_or(String::new(), |d| format!(", d = {:.1} mm", d * 1e3)),
         c.axial_stiffness_n.map_or(String::new(), |ea| format!(", EA = {:.0} kN", ea / 1e3)),
     );
-    draw(&name, &heading, &dir, &t, &ts, n_sup, n_span, from)?;
+    draw(&name, &heading, &dir, &t, &ts, n_sup, n_span, from, ground.as_ref())?;
     write_table(&dir.join(format!("{name}_table.csv")), &supports, &jumps)?;
     let s = &o.summary;
     Ok(CaseOutcome {
@@ -308,6 +310,7 @@ fn draw(
     n_sup: usize,
     n_span: usize,
     from_s: f64,
+    ground: Option<&ohl::scheme::Ground>,
 ) -> Result<(), CaseError> {
     let series = |col: String, label: String, k: usize, scale: f64| {
         let y = ts.get(&col).cloned().unwrap_or_default();
@@ -344,21 +347,41 @@ fn draw(
         });
     }
     charts.push(Chart {
-        title: "Mid-span height change of each span".into(),
+        title: "Mid-span height relative to the chord midpoint, each span".into(),
         x_label: "time t [s]".into(),
-        y_label: "mid-span x3 - chord midpoint [m]".into(),
+        y_label: "mid-span x3 - chord-midpoint x3 [m]".into(),
         series: (0..n_span).map(|k| series(format!("span{k}_mid_dx3_m"), format!("span {k}"), k, 1.0)).collect(),
         ..Default::default()
     });
     if let Some(temp) = ts.get("temperature_k") {
-        let pts = t.iter().zip(temp).map(|(&a, &b)| (a / 60.0, b - 273.15)).collect();
+        // The figure's one time unit is the second (the load panels'); the temperature in Celsius.
+        let (unit, convert): (&str, fn(f64) -> f64) = ("conductor temperature [C]", |k| k - 273.15);
+        let pts: Vec<(f64, f64)> = t.iter().zip(temp).map(|(&a, &b)| (a, convert(b))).collect();
+        let mut series = vec![Series::new("conductor", pts.clone(), Style::Line, 0)];
+        // Where the load panels start, so that the two time ranges read together.
+        let (lo, hi) = pts.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| (a.min(p.1), b.max(p.1)));
+        if from_s.is_finite() && lo.is_finite() {
+            let label = format!("start of the load panels (t = {from_s} s)");
+            series.push(Series::new(label, vec![(from_s, lo), (from_s, hi)], Style::Dotted, 7));
+        }
         charts.push(Chart {
             title: "Conductor temperature (whole run)".into(),
-            x_label: "time t [min]".into(),
-            y_label: "conductor temperature [C]".into(),
-            series: vec![Series::new("conductor", pts, Style::Line, 0)],
+            x_label: "time t [s]".into(),
+            y_label: unit.into(),
+            series,
             ..Default::default()
         });
+        // The quadrant beside it: the temperature over the load panels' time range (the shedding).
+        if charts.len() % 2 == 1 && from_s.is_finite() {
+            let window: Vec<(f64, f64)> = pts.iter().copied().filter(|p| p.0 >= from_s).collect();
+            charts.push(Chart {
+                title: "Conductor temperature over the load panels' time".into(),
+                x_label: "time t [s]".into(),
+                y_label: unit.into(),
+                series: vec![Series::new("conductor", window, Style::Line, 0)],
+                ..Default::default()
+            });
+        }
     }
     let plot_err = |e: crate::plot::PlotError| CaseError::Io(e.to_string());
     render_titled(&charts, 2, (680, 440), heading, &dir.join(format!("{name}_loads"))).map_err(plot_err)?;
@@ -368,7 +391,7 @@ fn draw(
     if let (Some(st), Some(x2), Some(x3)) = (st, x2, x3) {
         let mut times: Vec<f64> = st.clone();
         times.dedup();
-        let shapes: Vec<Series> = times
+        let mut shapes: Vec<Series> = times
             .iter()
             .enumerate()
             .map(|(k, &tk)| {
@@ -376,6 +399,20 @@ fn draw(
                 Series::new(format!("t = {tk:.2} s"), pts, Style::Line, k)
             })
             .collect();
+        if let Some(g) = ground {
+            let (lo, hi) = x2.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| (a.min(v), b.max(v)));
+            if lo.is_finite() {
+                let mut xs = vec![lo, hi];
+                xs.extend(g.profile_m.iter().map(|p| p[0]).filter(|&x| x > lo && x < hi));
+                xs.sort_by(f64::total_cmp);
+                let label = if g.profile_m.is_empty() {
+                    format!("ground, x3 = {} m", g.height_m)
+                } else {
+                    "ground profile".into()
+                };
+                shapes.push(Series::new(label, xs.iter().map(|&x| (x, g.height_at(x))).collect(), Style::Dashed, 7));
+            }
+        }
         let chart = Chart {
             title: "The section at the snapshot times".into(),
             x_label: "distance along the line x2 [m]".into(),

@@ -4,8 +4,10 @@
 //! - `timeseries`: displacement of the mid-span point (a section: of each span's mid-span point) and of
 //!   every named probe from its chord point, vertical always and across or along the line when it moves;
 //!   the largest segment tension (a section: per span); the least ground clearance per span (with a
-//!   ground); the kinetic energy and the elastic, potential and total energy; the conductor temperature
-//!   (with a `[thermal]` table);
+//!   ground); the energy balance from the first sample drawn: kinetic energy, the changes of the elastic
+//!   and the potential energy, and the energy dissipated, `-(E_total - E_total(t0))`, so that the four add
+//!   up to zero (an event that changes the mass or the temperature adds to the dissipated curve its own
+//!   step); the conductor temperature (with a `[thermal]` table);
 //! - `reactions`: each support's force components (the force the wire applies to the support: vertical
 //!   `F3`, along the line `F2`, across it `F1`), and the swing of each suspension string;
 //! - `shapes`: the wire at the snapshot times (at most [`MAX_SHAPES`], evenly chosen), side view `x3`
@@ -18,6 +20,11 @@
 //! Every sample is handed to the plotting module, which reduces a long series to each pixel column's
 //! first, least, greatest and last point (peaks survive, the SVG stays small); a window (`--from`, `--to`)
 //! shows the detail.
+//!
+//! Without a window the transient is drawn readably as well: the vertical displacement gets a second
+//! panel over the first [`DETAIL_FRACTION`] of the time from the run's first event (`peaks_from_s`; the
+//! start if there is none) to its end, and so do the largest tension and the longitudinal support force
+//! where a figure would otherwise leave a quadrant empty.
 
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
@@ -28,6 +35,10 @@ use crate::plot::{Chart, PlotError, Series, Style, render};
 pub const MAX_SHAPES: usize = 8;
 /// A segment whose chord exceeds its unstretched length by this fraction is drawn as a gap (broken).
 pub const GAP_STRAIN: f64 = 0.1;
+/// The detail panels show this fraction of the time from the first event to the end (module doc).
+pub const DETAIL_FRACTION: f64 = 0.15;
+/// A detail window with fewer samples than this is not drawn (nothing to see in more detail).
+const DETAIL_MIN_SAMPLES: usize = 20;
 /// A displacement component whose range over the window stays below this [m] gets no panel.
 const STILL_M: f64 = 1.0e-6;
 
@@ -419,8 +430,42 @@ pub fn plot_run(run_dir: &Path, opts: &PlotOptions) -> Result<PlotReport, RunPlo
         report.files.push(stem.with_extension("svg"));
         Ok(())
     };
-    draw(timeseries_charts(&run, &rows)?, 2, PANEL, "timeseries")?;
-    let (reactions, mut notes) = reaction_charts(&run, &rows);
+    // The detail window of the transient (module doc), without a window of the user's.
+    let detail: Option<(f64, f64, Vec<usize>)> = match (opts.from_s, opts.to_s, t.first(), t.last()) {
+        (None, None, Some(&first), Some(&last)) => {
+            let a = run.events_from_s.filter(|&e| e > first && e < last).unwrap_or(first);
+            let b = a + DETAIL_FRACTION * (last - a);
+            let d: Vec<usize> = rows.iter().copied().filter(|&i| t[i] >= a && t[i] <= b).collect();
+            (d.len() >= DETAIL_MIN_SAMPLES).then_some((a, b, d))
+        }
+        _ => None,
+    };
+    let mut series_charts = timeseries_charts(&run, &rows)?;
+    let (mut reactions, mut notes) = reaction_charts(&run, &rows);
+    if let Some((a, b, d)) = &detail {
+        let retitle = |mut c: Chart| {
+            c.title = format!("{}, t = {} to {} s", c.title, short(*a), short(*b));
+            c
+        };
+        let mut fine = timeseries_charts(&run, d)?.into_iter();
+        // The vertical displacement is always the first panel; its detail goes beside it.
+        if let Some(c) = fine.next() {
+            series_charts.insert(1, retitle(c));
+        }
+        if series_charts.len() % 2 == 1
+            && let Some(k) = series_charts.iter().position(|c| c.y_label.starts_with("T_max"))
+            && let Some(c) = fine.find(|c| c.y_label.starts_with("T_max"))
+        {
+            series_charts.insert(k + 1, retitle(c));
+        }
+        if reactions.len() % 2 == 1
+            && let Some(k) = reactions.iter().position(|c| c.y_label.starts_with("F2"))
+            && let Some(c) = reaction_charts(&run, d).0.into_iter().find(|c| c.y_label.starts_with("F2"))
+        {
+            reactions.insert(k + 1, retitle(c));
+        }
+    }
+    draw(series_charts, 2, PANEL, "timeseries")?;
     if !reactions.is_empty() {
         draw(reactions, 2, PANEL, "reactions")?;
     }
@@ -530,28 +575,23 @@ fn timeseries_charts(run: &Run, rows: &[usize]) -> Result<Vec<Chart>, RunPlotErr
             ..Default::default()
         });
     }
-    if let Some(y) = ts.col("kinetic_j") {
-        let (unit, f) = energy_unit(max_abs([y], rows));
+    // The energy balance from the first sample drawn (module doc): E_kin + dE_el + dE_pot + dissipated = 0.
+    if let (Some(kin), Some(el), Some(pot), Some(tot), Some(&i0)) =
+        (ts.col("kinetic_j"), ts.col("elastic_j"), ts.col("potential_j"), ts.col("total_j"), rows.first())
+    {
+        let change = |y: &[f64], sign: f64| -> Vec<f64> { y.iter().map(|v| sign * (v - y[i0])).collect() };
+        let curves: [(Vec<f64>, &str); 4] = [
+            (kin.to_vec(), "kinetic"),
+            (change(el, 1.0), "elastic change"),
+            (change(pot, 1.0), "potential change"),
+            (change(tot, -1.0), "dissipated, -(total change)"),
+        ];
+        let (unit, f) = energy_unit(max_abs(curves.iter().map(|c| c.0.as_slice()), rows));
         charts.push(Chart {
-            title: run.title("kinetic energy"),
+            title: run.title(&format!("energy balance from t = {} s", short(t[i0]))),
             x_label: "t [s]".into(),
-            y_label: format!("E_kin [{unit}]"),
-            series: vec![line(y, f, "kinetic".into(), 0)],
-            ..Default::default()
-        });
-    }
-    let energies: Vec<(&[f64], &str)> = [("elastic_j", "elastic"), ("potential_j", "potential"), ("total_j", "total")]
-        .iter()
-        .filter_map(|(c, l)| Some((ts.col(c)?, *l)))
-        .collect();
-    if !energies.is_empty() {
-        let (unit, f) = energy_unit(max_abs(energies.iter().map(|c| c.0), rows));
-        charts.push(Chart {
-            title: run.title("elastic, potential and total energy"),
-            x_label: "t [s]".into(),
-            y_label: format!("E [{unit}]"),
-            // Colours 1.. so that no curve takes the kinetic energy's colour.
-            series: energies.iter().enumerate().map(|(k, (y, l))| line(y, f, l.to_string(), k + 1)).collect(),
+            y_label: format!("E - E(t0) [{unit}]"),
+            series: curves.iter().enumerate().map(|(k, (y, l))| line(y, f, l.to_string(), k)).collect(),
             ..Default::default()
         });
     }

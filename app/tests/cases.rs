@@ -46,6 +46,12 @@ fn broken_conductor_case_runs_and_its_residual_balances_the_weight() {
     let c = case("a_broken_conductor");
     assert_eq!(c.status, "completed");
     assert_eq!(c.residual, "static (Newton)");
+    // The figures: the case's ground (height 0 m in the case file) under the shapes, and the mid-span
+    // panel titled for what it plots (mid-span x3 minus the chord midpoint's, not a change from the start).
+    let shapes = std::fs::read_to_string(c.dir.join("a_broken_conductor_shapes.svg")).unwrap();
+    assert!(shapes.contains("aria-label=\"ground, x3 = 0 m\""), "no ground line in the shapes");
+    let loads = std::fs::read_to_string(c.dir.join("a_broken_conductor_loads.svg")).unwrap();
+    assert!(loads.contains("Mid-span height relative to the chord midpoint") && !loads.contains("height change"));
     let horizontal: f64 = c.supports.iter().map(|s| s.residual_n).sum();
     let vertical: f64 = c.supports.iter().map(|s| s.residual_vertical_n).sum();
     let w = total_weight_n("a_broken_conductor");
@@ -91,6 +97,13 @@ fn shedding_cases_are_symmetric_and_end_in_the_same_state() {
 fn deicing_case_sheds_when_the_deicing_model_says_and_balances_after() {
     let c = case("d_deicing");
     assert_eq!(c.status, "completed");
+    // The figure: one time unit (seconds), and the symmetric supports 0 and 3 (dead ends of a symmetric
+    // section) drawn once each, the later one dashed over the other and named so in its legend entry.
+    let loads = std::fs::read_to_string(c.dir.join("d_deicing_loads.svg")).unwrap();
+    assert!(!loads.contains("[min]"), "minutes beside seconds");
+    // Six panels, none empty: the temperature also over the load panels' time (1900 s on).
+    assert!(loads.contains("Conductor temperature over the load panels' time"));
+    assert!(loads.contains("aria-label=\"support 3 (coincides with support 0)\""));
     // The shed time in the run's summary is that of the stand-alone de-icing model of one metre of the
     // same conductor, ice and weather (`ohl thermal examples/thermal/drake_deicing.toml`): the run plays
     // that model's history, so they agree to rounding.

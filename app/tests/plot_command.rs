@@ -112,7 +112,17 @@ fn plots_a_section_run_and_refuses_what_is_not_a_run() {
     let name = "two-span test section (ACSR Drake)";
     svg(
         &plots.join("timeseries.svg"),
-        &[name, "t [s]", "dx3 [m]", "dx1 [m]", "T_max [kN]", "E_kin [kJ]", "T_c [°C]", "span 1", "quarter"],
+        &[name, "t [s]", "dx3 [m]", "dx1 [m]", "T_max [kN]", "E - E(t0) [kJ]", "T_c [°C]", "span 1", "quarter"],
+    );
+    // The energy balance from the first sample, and the transient's detail: the break at t = 1 s
+    // (`peaks_from_s`) to 1 + 0.15 (3 - 1) = 1.3 s (DETAIL_FRACTION of the rest of the run).
+    svg(
+        &plots.join("timeseries.svg"),
+        &[
+            "energy balance from t = 0 s",
+            "dissipated, -(total change)",
+            "vertical displacement from the chord, t = 1 to 1.3 s",
+        ],
     );
     svg(&plots.join("reactions.svg"), &[name, "t [s]", "F3 [kN]", "F2 [kN]", "F1 [kN]", "swing from plumb [deg]"]);
     svg(&plots.join("shapes.svg"), &[name, "x2, along the line [m]", "x3, height [m]", "x1, across the line [m]"]);
@@ -136,6 +146,11 @@ fn plots_a_section_run_and_refuses_what_is_not_a_run() {
         let axis = if name == "shapes" { "x2, along the line [m]" } else { "t [s]" };
         svg(&other.join(format!("{name}.svg")), &[axis]);
     }
+    // A window of the user's: no detail panel; the energy balance starts at the window's first sample.
+    let series = std::fs::read_to_string(other.join("timeseries.svg")).unwrap();
+    assert!(!series.contains(", t = 1 to 1.3 s"), "a detail panel inside a window of the user's");
+    // (the first sample at or after 0.5 s: the step of 5.15e-3 s lands at 0.5052 s)
+    svg(&other.join("timeseries.svg"), &["energy balance from t = 0.505"]);
     // The snapshot at t = 1 s (an event lands the clock on it) is in the window, the final one is not.
     svg(&other.join("shapes.svg"), &["t = 1 s"]);
     assert!(!std::fs::read_to_string(other.join("shapes.svg")).unwrap().contains("t = 3 s"));

@@ -5,14 +5,17 @@
 //! l`; the axis labels give the conversion to metres and seconds), a mid-span trajectory, the shapes at
 //! the snapshot times, tension histories and the mean temperature. The paper's values are drawn as
 //! markers at the time the paper prints them, the independent reference as a dashed line beside the
-//! computed curve.
+//! computed curve. A panel whose legend would list more than [`LEGEND_MAX`] entries (one reference and
+//! one paper value per stage of a case: own weight, iced, ...) draws its references in one colour under
+//! one legend entry, and the paper's values likewise: each stands at the time it belongs to, so the
+//! legend needs to say only what they are.
 
 use std::io::Write;
 use std::path::Path;
 
 use super::extract::Series as Columns;
 use super::table::Row;
-use crate::paper::spec::{ExtractKind, PanelKind, PanelSpec, PaperSpec, UnitSpec};
+use crate::paper::spec::{ExtractKind, PanelKind, PanelSpec, PaperSpec, ReferenceKind, UnitSpec};
 use crate::plot::{Chart, PlotError, Series, Style, TopAxis, render_titled};
 use ohl::run::Outcome;
 use ohl::scenario::Plan;
@@ -30,12 +33,81 @@ fn in_window(t: f64, w: Option<[f64; 2]>) -> bool {
     w.is_none_or(|[a, b]| t >= a - 1e-9 && t <= b + 1e-9)
 }
 
+/// The unit of the temperature panels: its axis label and the conversion from kelvin.
+const TEMPERATURE_UNIT: (&str, fn(f64) -> f64) =
+    ("mean temperature [C]", |k| k - ohl::scenario::temperature::ZERO_CELSIUS_K);
+
+/// What a reference is, for a legend.
+fn describe(r: ReferenceKind) -> &'static str {
+    match r {
+        ReferenceKind::ExactArc => "exact arc",
+        ReferenceKind::PaperArc => "paper's arc (4.1)",
+        ReferenceKind::ExactCatenary => "exact catenary",
+        ReferenceKind::ExactCatenaryWithWind => "exact catenary with wind",
+        ReferenceKind::PaperParabola => "paper's parabola (4.3)-(4.4)",
+        ReferenceKind::ThermalStrain => "thermal strain (5.5)",
+        ReferenceKind::ThermalForce => "thermal force (5.6)",
+    }
+}
+
+/// Most legend entries of a panel before its references (and paper values) share one entry.
+const LEGEND_MAX: usize = 4;
+
+/// A panel of more than [`LEGEND_MAX`] legend entries whose references are one kind of reference at
+/// successive stages (the same `kind_of` each, on time ranges that do not overlap) draws them in one
+/// colour (the first one's) under one legend entry, and its paper values likewise. `kind_of` gives the
+/// kind of reference of a reference series' label.
+fn group_legend(chart: &mut Chart, kind_of: impl Fn(&str) -> Option<ReferenceKind>, section: &str) {
+    if chart.series.iter().filter(|s| !s.label.is_empty()).count() <= LEGEND_MAX {
+        return;
+    }
+    let members = |chart: &Chart, prefix: &str, style: Style| -> Vec<usize> {
+        (0..chart.series.len())
+            .filter(|&i| chart.series[i].style == style && chart.series[i].label.starts_with(prefix))
+            .collect()
+    };
+    let refs = members(chart, "reference: ", Style::Dashed);
+    let kinds: Vec<Option<ReferenceKind>> = refs.iter().map(|&i| kind_of(&chart.series[i].label)).collect();
+    let Some(Some(kind)) = kinds.first().copied() else { return };
+    let mut spans: Vec<(f64, f64)> = refs
+        .iter()
+        .map(|&i| {
+            chart.series[i].points.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| (a.min(p.0), b.max(p.0)))
+        })
+        .collect();
+    spans.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let stages = spans.windows(2).all(|w| w[0].1 <= w[1].0 + 1e-9);
+    if refs.len() < 2 || !stages || kinds.iter().any(|k| *k != Some(kind)) {
+        return;
+    }
+    let paper = members(chart, "paper: ", Style::Markers);
+    let groups = [
+        (refs, format!("reference: {} at each stage", describe(kind))),
+        (paper, format!("paper (section {section}): its values at their times")),
+    ];
+    for (idx, label) in groups {
+        if idx.len() < 2 {
+            continue;
+        }
+        let color = chart.series[idx[0]].color;
+        for (n, &i) in idx.iter().enumerate() {
+            chart.series[i].color = color;
+            chart.series[i].label = if n == 0 { label.clone() } else { String::new() };
+        }
+    }
+}
+
 /// Build the panels of a case.
 pub fn charts(spec: &PaperSpec, plan: &Plan, o: &Outcome, cols: &Columns, rows: &[Row]) -> Vec<Chart> {
     let l = spec.length_scale_m;
     let mut out = Vec::new();
     for p in &spec.panels {
-        out.push(chart(p, spec, plan, o, cols, rows, l));
+        let mut c = chart(p, spec, plan, o, cols, rows, l);
+        let kind_of = |label: &str| {
+            spec.checks.iter().find(|ch| label == format!("reference: {}", ch.quantity)).and_then(|ch| ch.reference)
+        };
+        group_legend(&mut c, kind_of, &spec.section);
+        out.push(c);
     }
     out
 }
@@ -213,9 +285,9 @@ fn chart(p: &PanelSpec, spec: &PaperSpec, plan: &Plan, o: &Outcome, c: &Columns,
         }
         PanelKind::Temperature => {
             chart.title = p.title.clone().unwrap_or_else(|| "mean wire temperature".into());
-            chart.y_label = "mean temperature [C]".into();
-            let zero_c = ohl::scenario::temperature::ZERO_CELSIUS_K;
-            let pts = idx.iter().map(|&i| (c.t[i] * tf, c.probes[i].mean_temperature_k - zero_c)).collect();
+            let (label, convert) = TEMPERATURE_UNIT;
+            chart.y_label = label.into();
+            let pts = idx.iter().map(|&i| (c.t[i] * tf, convert(c.probes[i].mean_temperature_k))).collect();
             chart.series.push(Series::new("computed", pts, Style::Line, 0));
         }
     }
@@ -269,4 +341,64 @@ pub fn write_csv(o: &Outcome, c: &Columns, plan: &Plan, l: f64, stem: &Path) -> 
         f.flush()?;
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn several_references_and_paper_values_share_one_legend_entry_each() {
+        let seg = |a: f64| vec![(a, 1.0), (a + 1.0, 1.0)];
+        let mut chart = Chart {
+            series: vec![
+                Series::new("computed", seg(0.0), Style::Line, 0),
+                Series::new("reference: own weight", seg(0.0), Style::Dashed, 1),
+                Series::new("paper: own weight", vec![(1.0, 1.0)], Style::Markers, 4),
+                Series::new("reference: iced", seg(2.0), Style::Dashed, 2),
+                Series::new("paper: iced", vec![(3.0, 1.0)], Style::Markers, 5),
+                Series::new("reference: final", seg(4.0), Style::Dashed, 3),
+            ],
+            ..Default::default()
+        };
+        let catenary = |_: &str| Some(ReferenceKind::ExactCatenary);
+        // References of unknown kind are kept apart.
+        let mut unknown = chart.clone();
+        group_legend(&mut unknown, |_| None, "5.6");
+        assert_eq!(unknown.series[5].label, "reference: final");
+        // Two kinds of reference (an exact one and the paper's formula) at one time are kept apart.
+        let mut two = chart.clone();
+        let arcs = |l: &str| Some(if l.ends_with("iced") { ReferenceKind::PaperArc } else { ReferenceKind::ExactArc });
+        group_legend(&mut two, arcs, "5.6");
+        assert_eq!(two.series[3].label, "reference: iced");
+        // Overlapping references are not stages: kept apart.
+        let mut overlapping = chart.clone();
+        overlapping.series[3].points = seg(0.5);
+        group_legend(&mut overlapping, catenary, "5.6");
+        assert_eq!(overlapping.series[3].label, "reference: iced");
+        assert_eq!(overlapping.series[2].label, "paper: own weight");
+        group_legend(&mut chart, catenary, "5.6");
+        let labels: Vec<&str> = chart.series.iter().map(|s| s.label.as_str()).filter(|l| !l.is_empty()).collect();
+        assert_eq!(
+            labels,
+            ["computed", "reference: exact catenary at each stage", "paper (section 5.6): its values at their times"]
+        );
+        // One colour per group: the first member's.
+        assert!(chart.series[1..].iter().filter(|s| s.style == Style::Dashed).all(|s| s.color == 1));
+        assert!(chart.series.iter().filter(|s| s.style == Style::Markers).all(|s| s.color == 4));
+        // A legend of at most LEGEND_MAX entries keeps them apart.
+        let seg2 = seg(2.0);
+        let mut few = Chart {
+            series: vec![
+                Series::new("computed", seg(0.0), Style::Line, 0),
+                Series::new("reference: own weight", seg(0.0), Style::Dashed, 1),
+                Series::new("reference: iced", seg2, Style::Dashed, 2),
+                Series::new("paper: iced", vec![(3.0, 1.0)], Style::Markers, 5),
+            ],
+            ..Default::default()
+        };
+        group_legend(&mut few, catenary, "5.6");
+        assert_eq!(few.series[2].label, "reference: iced");
+        assert_eq!(few.series[3].label, "paper: iced");
+    }
 }

@@ -10,8 +10,10 @@
 //!   long) and shows each series as drawn: colour, dash pattern, markers;
 //! - within a panel no two labelled series look alike: two solid lines (or two dashed, or two marker
 //!   sets) never share a colour (a repeated palette index moves to the next free colour), while a computed
-//!   solid line and its dashed reference may; solid lines are drawn first, dashed and dotted references over them, markers last,
-//!   and a solid line that another one would hide is drawn wider beneath it;
+//!   solid line and its dashed reference may; solid lines are drawn first, dashed and dotted references over them, markers last;
+//! - every line has the same width (a wider line would read as emphasis): a solid line that runs over an
+//!   earlier one is drawn in long dashes, so that the one beneath shows in its gaps, and its legend entry
+//!   says which lines it covers ("coincides with" where it covers nearly all of them);
 //! - tick labels are chosen by measuring them ([`ticks`]), so they never collide or repeat;
 //! - the PNG is anti-aliased by supersampling ([`raster`]); lines longer than a few points per pixel
 //!   column are reduced to each column's first, least, greatest and last point, which draws the same
@@ -113,6 +115,8 @@ pub struct Chart {
     pub y_range: Option<(f64, f64)>,
     /// a second x axis on top
     pub top_axis: Option<TopAxis>,
+    /// a categorical x axis: category `k` sits at `x = k` and is labelled with `x_categories[k]`
+    pub x_categories: Option<Vec<String>>,
 }
 
 /// Plot failure.
@@ -148,7 +152,8 @@ mod size {
     pub const LEGEND: f64 = 13.0;
     pub const MARGIN: f64 = 10.0;
     pub const LINE: f64 = 2.0;
-    pub const LINE_HIDDEN_MAX: f64 = 5.0;
+    /// dash and gap of a solid line drawn over one earlier line, and over two or more
+    pub const COVER_DASH: [(f64, f64); 2] = [(8.0, 8.0), (4.0, 12.0)];
     pub const MARKER: f64 = 3.5;
     pub const SAMPLE: f64 = 30.0;
 }
@@ -238,21 +243,26 @@ impl<'a> Panel<'a> {
     fn new(chart: &'a Chart) -> Self {
         let xs = chart.series.iter().flat_map(|s| s.points.iter().map(|p| p.0));
         let ys = chart.series.iter().flat_map(|s| s.points.iter().map(|p| p.1));
-        let xr = chart.x_range.unwrap_or_else(|| data_range(xs, chart.log_x));
+        let categories = chart.x_categories.as_ref().map(|c| (-0.5, c.len().max(1) as f64 - 0.5));
+        let xr = chart.x_range.or(categories).unwrap_or_else(|| data_range(xs, chart.log_x));
         let yr = chart.y_range.unwrap_or_else(|| data_range(ys, chart.log_y));
         Panel { chart, xr, yr, prepared: prepare(chart, xr, yr) }
     }
 }
 
-/// A series ready to draw: its effective colour, stroke width [px at scale 1] and drawing rank.
+/// A series ready to draw: its effective colour, legend text and dash pattern.
 struct Prepared<'a> {
     series: &'a Series,
     color: RGBColor,
-    width: f64,
+    /// the legend text: the series' label, and the lines it covers
+    label: String,
+    /// for a solid line drawn over earlier ones: dash and gap [px at scale 1]
+    cover_dash: Option<(f64, f64)>,
 }
 
-/// Effective colours (unique among labelled series) and widths (a solid line mostly covered by a later
-/// solid line is widened so that it shows on both sides of it).
+/// Effective colours (unique among labelled series), and the lines that cover others: a line mostly
+/// covered by a later line of its drawing class is named in that line's legend entry, and a solid
+/// covering line is dashed so that the one beneath shows in its gaps.
 fn prepare<'a>(chart: &'a Chart, xr: (f64, f64), yr: (f64, f64)) -> Vec<Prepared<'a>> {
     // A colour may be shared only by series drawn differently (a computed solid line and its dashed
     // reference): the key is (colour, drawing class).
@@ -278,27 +288,35 @@ fn prepare<'a>(chart: &'a Chart, xr: (f64, f64), yr: (f64, f64)) -> Vec<Prepared
         (u(p.0, xr, chart.log_x), u(p.1, yr, chart.log_y))
     };
     let n = chart.series.len();
-    let mut width = vec![size::LINE; n];
-    // Line i is hidden if a later line j of its class runs within 0.6 % of the axes (`HIDDEN_DISTANCE`) of
-    // most of i's points (of its points as decimated for drawing, `CHECK_COLUMNS`).
-    for i in (0..n).rev() {
-        let Some(ci) = class(&chart.series[i]) else {
-            continue;
-        };
-        let drawn = |s: &Series| -> Vec<(f64, f64)> {
-            decimate(&s.points, xr, chart.log_x, CHECK_COLUMNS).into_iter().map(unit).collect()
-        };
-        let a = drawn(&chart.series[i]);
-        for j in i + 1..n {
-            if class(&chart.series[j]) != Some(ci) || a.is_empty() {
+    let drawn = |s: &Series| -> Vec<(f64, f64)> {
+        decimate(&s.points, xr, chart.log_x, CHECK_COLUMNS).into_iter().map(unit).collect()
+    };
+    let lines: Vec<Option<Vec<(f64, f64)>>> = chart.series.iter().map(|s| class(s).map(|_| drawn(s))).collect();
+    // Line i is covered by a later line j of its class if j runs within 0.6 % of the axes
+    // (`HIDDEN_DISTANCE`) of most of i's points (of its points as decimated for drawing, `CHECK_COLUMNS`).
+    // covers[j]: the labels of the lines j covers, and whether it covers all of them nearly everywhere.
+    let mut covers: Vec<(Vec<String>, bool)> = vec![(Vec::new(), true); n];
+    let mut depth = vec![0_usize; n];
+    for j in 0..n {
+        let Some(b) = &lines[j] else { continue };
+        let grid = SegmentGrid::new(b, HIDDEN_DISTANCE);
+        for i in 0..j {
+            let Some(a) = &lines[i] else { continue };
+            if class(&chart.series[i]) != class(&chart.series[j]) || a.is_empty() {
                 continue;
             }
-            let b = drawn(&chart.series[j]);
-            let grid = SegmentGrid::new(&b, HIDDEN_DISTANCE);
-            let near = a.iter().filter(|p| grid.within(**p, &b)).count();
+            let near = a.iter().filter(|p| grid.within(**p, b)).count();
             if near * 2 > a.len() {
-                // Nested stripes, capped so that a bundle of coincident lines stays thin.
-                width[i] = width[i].max((width[j] + 1.5).min(size::LINE_HIDDEN_MAX));
+                depth[j] = depth[j].max(depth[i] + 1);
+                let label = &chart.series[i].label;
+                if !label.is_empty() {
+                    // The short form of a label: "t = 59.99 s" of "t = 59.99 s (tau = 7.50)".
+                    let short = label.split(" (").next().unwrap_or(label).to_string();
+                    if !covers[j].0.contains(&short) {
+                        covers[j].0.push(short);
+                    }
+                    covers[j].1 &= near * 20 >= a.len() * 19;
+                }
             }
         }
     }
@@ -306,8 +324,19 @@ fn prepare<'a>(chart: &'a Chart, xr: (f64, f64), yr: (f64, f64)) -> Vec<Prepared
         .series
         .iter()
         .zip(colors)
-        .zip(width)
-        .map(|((series, c), width)| Prepared { series, color: PALETTE[c], width })
+        .enumerate()
+        .map(|(j, (series, c))| {
+            let (names, all) = &covers[j];
+            let label = if series.label.is_empty() || names.is_empty() {
+                series.label.clone()
+            } else {
+                let how = if *all { "coincides with" } else { "largely over" };
+                format!("{} ({how} {})", series.label, names.join(", "))
+            };
+            let cover_dash =
+                (depth[j] > 0 && chart.series[j].style.class() == 0).then(|| size::COVER_DASH[(depth[j] - 1).min(1)]);
+            Prepared { series, color: PALETTE[c], label, cover_dash }
+        })
         .collect()
 }
 
@@ -452,8 +481,8 @@ enum LegendPlace {
     Below(u32, usize),
 }
 
-fn legend_place(chart: &Chart, panel_w: f64, s: f64) -> LegendPlace {
-    let labels: Vec<&str> = chart.series.iter().filter(|x| !x.label.is_empty()).map(|x| x.label.as_str()).collect();
+fn legend_place(prepared: &[Prepared], panel_w: f64, s: f64) -> LegendPlace {
+    let labels: Vec<&str> = prepared.iter().filter(|x| !x.label.is_empty()).map(|x| x.label.as_str()).collect();
     // One labelled series needs no legend: the axis label says what it is.
     if labels.len() < 2 {
         return LegendPlace::None;
@@ -535,7 +564,7 @@ fn draw_panel<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, panel: &Panel, 
     let Panel { chart, xr, yr, prepared } = panel;
     let (chart, xr, yr) = (*chart, *xr, *yr);
     let (w, h) = area.dim_in_pixel();
-    let (plot_area, legend_area) = match legend_place(chart, f64::from(w), s) {
+    let (plot_area, legend_area) = match legend_place(prepared, f64::from(w), s) {
         LegendPlace::None => (area.clone(), None),
         LegendPlace::Right(lw) => {
             let (a, b) = area.split_horizontally(w.saturating_sub(lw));
@@ -557,8 +586,18 @@ fn draw_panel<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, panel: &Panel, 
     let widest_y = y_ticks.labels.iter().map(|l| text::width(l, size::TICK as f32) as f64).fold(0.0, f64::max);
     let y_area = widest_y + 1.5 * size::AXIS + 12.0;
     let plot_w = f64::from(pw) / s - y_area - 2.0 * size::MARGIN;
-    let x_ticks =
-        axis_ticks(xr, chart.log_x, plot_w, Along::X, chart.series.iter().flat_map(|s| s.points.iter().map(|p| p.0)));
+    let x_ticks = match &chart.x_categories {
+        Some(names) => {
+            Ticks { at: (0..names.len()).map(|k| k as f64).collect(), labels: names.clone(), minor: Vec::new() }
+        }
+        None => axis_ticks(
+            xr,
+            chart.log_x,
+            plot_w,
+            Along::X,
+            chart.series.iter().flat_map(|s| s.points.iter().map(|p| p.0)),
+        ),
+    };
     let geometry = Geometry { title: title_h, x_area, y_area, top, plot_w };
     match (chart.log_x, chart.log_y) {
         (false, false) => {
@@ -732,28 +771,37 @@ where
     order.sort_by_key(|p| p.series.style.class());
     for p in order {
         let c = p.color;
-        let stroke = c.stroke_width(px(p.width).max(1) as u32);
-        match p.series.style {
-            Style::Line => {
+        let stroke = c.stroke_width(px(size::LINE).max(1) as u32);
+        match (p.series.style, p.cover_dash) {
+            (Style::Line, Some((on, off))) => {
+                let pts = decimate(&p.series.points, xr, chart.log_x, columns);
+                cc.draw_series(DashedLineSeries::new(pts, px(on) as u32, px(off) as u32, stroke)).map_err(e)?;
+            }
+            (Style::Line, None) => {
                 let pts = decimate(&p.series.points, xr, chart.log_x, columns);
                 cc.draw_series(LineSeries::new(pts, stroke)).map_err(e)?;
             }
-            Style::Dashed => {
+            (Style::Dashed, _) => {
                 let pts = decimate(&p.series.points, xr, chart.log_x, columns);
                 cc.draw_series(DashedLineSeries::new(pts, px(7.0) as u32, px(4.0) as u32, stroke)).map_err(e)?;
             }
-            Style::Dotted => {
+            (Style::Dotted, _) => {
                 let pts = decimate(&p.series.points, xr, chart.log_x, columns);
                 cc.draw_series(DashedLineSeries::new(pts, px(2.0) as u32, px(3.0) as u32, stroke)).map_err(e)?;
             }
-            Style::Markers => {
+            (Style::Markers, _) => {
                 let pts = p.series.points.iter().copied().filter(|q| q.0.is_finite() && q.1.is_finite());
                 cc.draw_series(pts.map(|q| Circle::new(q, px(size::MARKER) as u32, c.filled()))).map_err(e)?;
             }
-            Style::LineMarkers => {
+            (Style::LineMarkers, dash) => {
                 let pts: Vec<_> =
                     p.series.points.iter().copied().filter(|q| q.0.is_finite() && q.1.is_finite()).collect();
-                cc.draw_series(LineSeries::new(pts.clone(), stroke)).map_err(e)?;
+                match dash {
+                    Some((on, off)) => cc
+                        .draw_series(DashedLineSeries::new(pts.clone(), px(on) as u32, px(off) as u32, stroke))
+                        .map_err(e)?,
+                    None => cc.draw_series(LineSeries::new(pts.clone(), stroke)).map_err(e)?,
+                };
                 cc.draw_series(pts.iter().map(|&q| Circle::new(q, px(size::MARKER) as u32, c.filled()))).map_err(e)?;
             }
         }
@@ -772,8 +820,8 @@ fn draw_legend<DB: DrawingBackend>(
 ) -> Result<(), String> {
     let e = |e: DrawingAreaErrorKind<DB::ErrorType>| e.to_string();
     let px = |v: f64| (v * s).round() as i32;
-    let entries: Vec<&Prepared> = prepared.iter().filter(|p| !p.series.label.is_empty()).collect();
-    let widest = entries.iter().map(|p| text::width(&p.series.label, size::LEGEND as f32) as f64).fold(0.0, f64::max);
+    let entries: Vec<&Prepared> = prepared.iter().filter(|p| !p.label.is_empty()).collect();
+    let widest = entries.iter().map(|p| text::width(&p.label, size::LEGEND as f32) as f64).fold(0.0, f64::max);
     let entry_w = size::SAMPLE + 8.0 + widest + 2.0 * size::MARGIN;
     let line_h = 1.5 * size::LEGEND;
     let per_row = below.unwrap_or(1);
@@ -789,13 +837,19 @@ fn draw_legend<DB: DrawingBackend>(
         let x = x0 + c as f64 * entry_w;
         let y = y0 + (r as f64 + 0.5) * line_h;
         let (xa, xb, yy) = (px(x), px(x + size::SAMPLE), px(y));
-        let stroke = p.color.stroke_width(px(p.width.min(3.0)).max(1) as u32);
-        match p.series.style {
-            Style::Line | Style::LineMarkers => {
+        let stroke = p.color.stroke_width(px(size::LINE).max(1) as u32);
+        let dash = match p.series.style {
+            Style::Line | Style::LineMarkers => p.cover_dash,
+            Style::Dashed => Some((7.0, 4.0)),
+            Style::Dotted => Some((2.0, 3.0)),
+            Style::Markers => None,
+        };
+        match (p.series.style, dash) {
+            (Style::Markers, _) => {}
+            (_, None) => {
                 area.draw(&PathElement::new(vec![(xa, yy), (xb, yy)], stroke)).map_err(e)?;
             }
-            Style::Dashed | Style::Dotted => {
-                let (on, off) = if p.series.style == Style::Dashed { (7.0, 4.0) } else { (2.0, 3.0) };
+            (_, Some((on, off))) => {
                 let mut t = 0.0;
                 while t < size::SAMPLE {
                     let a = px(x + t);
@@ -804,13 +858,12 @@ fn draw_legend<DB: DrawingBackend>(
                     t += on + off;
                 }
             }
-            Style::Markers => {}
         }
         if matches!(p.series.style, Style::Markers | Style::LineMarkers) {
             area.draw(&Circle::new((px(x + 0.5 * size::SAMPLE), yy), px(size::MARKER) as u32, p.color.filled()))
                 .map_err(e)?;
         }
-        area.draw(&Text::new(p.series.label.clone(), (px(x + size::SAMPLE + 8.0), yy), style.clone())).map_err(e)?;
+        area.draw(&Text::new(p.label.clone(), (px(x + size::SAMPLE + 8.0), yy), style.clone())).map_err(e)?;
     }
     Ok(())
 }
@@ -871,8 +924,12 @@ mod tests {
         // Two solid lines never share a colour; a solid line and a dashed one may.
         assert!(p[0].color != p[2].color);
         assert!(p[0].color == p[1].color);
-        // "a" lies under the identical solid "c": it is drawn wider.
-        assert!(p[0].width > p[2].width);
+        // "a" lies under the identical solid "c": "c" is dashed and says so in its legend entry, "a" is not.
+        assert_eq!(p[2].cover_dash, Some(size::COVER_DASH[0]));
+        assert_eq!(p[2].label, "c (coincides with a)");
+        assert_eq!((p[0].cover_dash, p[0].label.as_str()), (None, "a"));
+        // The dashed "b" is of another drawing class: it covers nothing.
+        assert_eq!(p[1].label, "b");
     }
 
     #[test]
