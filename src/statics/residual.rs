@@ -30,8 +30,8 @@ use super::{StaticError, StaticOptions, solve_on_ground};
 use crate::output::spans::SpanState;
 use crate::scheme::Explicit;
 
-/// Newton iterations allowed to the residual solve: from re-hung pieces the section's solves take some
-/// tens; ten times the library's default (100) leaves room for a long section (measured: 127 for case (a)
+/// Newton iterations allowed to the residual solve: from re-hung pieces a section's solve takes tens to
+/// a hundred or so; ten times the library's default (100) leaves room for a long section (measured: 127 for case (a)
 /// of `cases/` at 100 segments per span).
 pub const MAX_ITERATIONS: usize = 1000;
 
