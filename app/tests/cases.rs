@@ -368,3 +368,70 @@ fn the_residual_static_load_of_the_broken_conductor_agrees_with_a_hand_model() {
     assert!(fine < 2e-3 * load.abs(), "{fine} N against {load} N");
     assert!(coarse > 3.0 * fine, "20 segments: {coarse} N, 40: {fine} N");
 }
+
+/// The output of `ohl run --static-after` on a section: per support the peak (tracked every step: the
+/// value of `summary.json`) and final loads in kN, per span the sag ("broken" for the broken span), no
+/// "mid-span displacement" (the middle of the whole conductor is no mid-span) and no `tau`; then the
+/// residual static state, printed as `static.json` holds it. The printed numbers are the files' numbers
+/// rounded to the printed digits (compared as the same formatting of the file's value).
+#[test]
+fn ohl_run_prints_a_sections_support_loads_and_its_residual_static_state() {
+    let repo = Path::new(env!("CARGO_MANIFEST_DIR")).parent().unwrap().to_path_buf();
+    let dir = std::env::temp_dir().join(format!("ohl-run-static-after-{}", std::process::id()));
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_ohl"))
+        .args(["run", "cases/a_broken_conductor.toml", "--static-after", "--out", dir.to_str().unwrap()])
+        .current_dir(&repo)
+        .output()
+        .unwrap();
+    let text = String::from_utf8_lossy(&o.stdout);
+    print!("{text}");
+    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(!text.contains("mid-span displacement") && !text.contains("tau"), "{text}");
+    let read = |f: &str| -> serde_json::Value {
+        serde_json::from_str(&std::fs::read_to_string(dir.join(f)).unwrap()).unwrap()
+    };
+    let (summary, stat) = (read("summary.json"), read("static.json"));
+    let kn = |v: &serde_json::Value| format!("{:.2}", v.as_f64().unwrap() / 1e3);
+    let lines: Vec<&str> = text.lines().collect();
+    let table = |head: &str| lines.iter().position(|l| l.contains(head)).unwrap_or_else(|| panic!("{head}: {text}"));
+    // Support 1 in the run's table: its peak |F| and time, its final f3.
+    let row: Vec<&str> = lines[table("peak |F|") + 2].split_whitespace().collect();
+    let s1 = &summary["supports"][1];
+    assert_eq!(row[0], "1", "{row:?}");
+    assert_eq!(row[3], kn(&s1["peaks"]["magnitude"]["value_n"]), "{row:?}");
+    assert_eq!(row[4], format!("{:.3}", s1["peaks"]["magnitude"]["time_s"].as_f64().unwrap()));
+    assert_eq!(row.last().unwrap().to_string(), kn(&s1["final_force_n"][2]));
+    // Spans: span 0 broken, span 1's sag as summary.json has it.
+    let spans = table("sag [m]");
+    assert!(lines[spans + 1].split_whitespace().collect::<Vec<_>>()[..2] == ["0", "broken"], "{}", lines[spans + 1]);
+    let sag = summary["spans"][1]["final_sag_m"].as_f64().unwrap();
+    assert_eq!(lines[spans + 2].split_whitespace().nth(1).unwrap(), format!("{sag:.3}"));
+    // The residual static state: support 1's vertical load and the ground's share as static.json has them.
+    let residual = table("residual static state");
+    assert!(lines[residual].contains(&format!("the ground carries {} kN", kn(&stat["ground_reaction_n"][2]))));
+    let row: Vec<&str> = lines[residual + 3].split_whitespace().collect();
+    assert_eq!((row[0], row[5]), ("1", kn(&stat["supports"][1]["force_n"][2]).as_str()), "{row:?}");
+    assert!(stat["spans"][0]["sag_m"].is_null() && stat["spans"][1]["sag_m"].as_f64().unwrap() > 10.0);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// `--static-after` is refused for a `[line]` scenario (not available yet), with exit 2 before anything
+/// runs; a single span keeps its mid-span displacement and labels `tau` as the paper's `t U / l`.
+#[test]
+fn static_after_is_refused_for_a_line_and_a_single_span_keeps_its_mid_span() {
+    let repo = Path::new(env!("CARGO_MANIFEST_DIR")).parent().unwrap().to_path_buf();
+    let dir = std::env::temp_dir().join(format!("ohl-run-line-static-{}", std::process::id()));
+    let run = |args: &[&str]| {
+        std::process::Command::new(env!("CARGO_BIN_EXE_ohl")).args(args).current_dir(&repo).output().unwrap()
+    };
+    let o = run(&["run", "cases/e_three_phases_wind.toml", "--static-after", "--out", dir.to_str().unwrap()]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.contains("cases/e_three_phases_wind.toml: --static-after is not available for a [line] scenario"), "{err}");
+    assert!(!dir.exists(), "nothing may run");
+    let o = run(&["run", "paper_cases/fig4_break_fall.toml", "--out", dir.to_str().unwrap()]);
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(text.contains("(tau = t U / l = ") && text.contains("  mid-span displacement [m]: x1 = "), "{text}");
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -379,16 +379,36 @@ fn print_line_summary(s: &ohl::run::line::LineSummary, out: &std::path::Path) {
             metres(c.final_m)
         );
     }
-    for t in &s.towers {
-        let f = t.final_force_n;
+    if !s.towers.is_empty() {
+        out!("  tower loads [kN], resultant of every attachment on the tower (f1 across, f2 along the line, f3 up):");
         out!(
-            "  tower {}: peak |F| {:.1} N at {:.3} s; final F = [{:.1}, {:.1}, {:.1}] N",
+            "    {:>10} | {:>9} {:>8} {:>8} {:>8} {:>8} | {:>9} {:>8} {:>8} {:>8}",
+            "tower",
+            "peak |F|",
+            "at [s]",
+            "f1",
+            "f2",
+            "f3",
+            "final |F|",
+            "f1",
+            "f2",
+            "f3"
+        );
+    }
+    for t in &s.towers {
+        let (p, f) = (t.peak_force_n, t.final_force_n);
+        out!(
+            "    {:>10} | {:>9.2} {:>8.3} {:>8.2} {:>8.2} {:>8.2} | {:>9.2} {:>8.2} {:>8.2} {:>8.2}",
             t.name,
-            t.peak_force_magnitude_n,
+            kn(t.peak_force_magnitude_n),
             t.peak_force_time_s,
-            f[0],
-            f[1],
-            f[2]
+            kn(p[0]),
+            kn(p[1]),
+            kn(p[2]),
+            kn((f[0] * f[0] + f[1] * f[1] + f[2] * f[2]).sqrt()),
+            kn(f[0]),
+            kn(f[1]),
+            kn(f[2])
         );
     }
     for a in &s.attachments {
