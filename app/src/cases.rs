@@ -14,22 +14,15 @@
 //!   [`NO_RESIDUAL`] of the peak is zero to the static solver's tolerance (a support that symmetry or a
 //!   break unloads), and the ratio would be rounding over rounding (it printed `4.7e15`, `inf`, `NaN`).
 //!
-//! The residual static load is the static equilibrium after the event, solved by Newton
-//! ([`ohl::statics`]) from the run's final state: the design quantity of a broken-conductor or
-//! ice-shedding load case (the residual static load of ASCE 74). A broken span's pieces are first
-//! re-hung below the clamps they hang from (10 degrees off vertical, unstretched): from a piece lying on
-//! the ground Newton would have to swing it through 90 degrees, outside its basin (`tests/statics.rs`,
-//! `a_broken_span_hangs_straight_down_from_its_supports`). Where the run has a ground, the re-hung line
-//! stops where it reaches the ground and the rest of the piece is laid on the ground towards its free
-//! end, and the ground stays in the solve as a frictionless contact ([`ohl::statics::solve_on_ground`],
-//! [`ohl::statics::ground`]): the piece hangs from its support down to the ground and lies on it beyond,
-//! so the support carries the weight of the hanging part only (the ground the rest: `residual_ground_n`,
-//! printed with the table). Frictionless, because the tension a frictional ground holds in the lying
-//! piece depends on how it came to rest, and the explicit run does not settle on one: case (a) continued
-//! with mass damping from its end creeps from 5.20 to 5.06 kN of vertical load on support 1 over 770 s,
-//! towards the frictionless 4.81 kN (docs/decisions.md). With a frictionless ground, the damped run
-//! without smoothing comes to rest at this state (`app/tests/cases.rs`). Should the solve fail, the
-//! table uses the last sample and says so.
+//! The residual static load is the static equilibrium after the event, solved by Newton from the run's
+//! final state ([`ohl::statics::residual`], the solve of `ohl run --static-after`): the design quantity
+//! of a broken-conductor or ice-shedding load case (the residual static load of ASCE 74). A broken piece
+//! is re-hung below its clamp and laid on the ground where it reaches it, the ground a frictionless
+//! contact of the solve, so the support carries the weight of the hanging part only (the ground the rest:
+//! `residual_ground_n`, printed with the table). Why frictionless, and why re-hung: the module doc of
+//! [`ohl::statics::residual`]. With a frictionless ground, the damped run without smoothing comes to rest
+//! at this state (`app/tests/cases.rs`). Should the solve fail, the table uses the last sample and says
+//! so.
 
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
