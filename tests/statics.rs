@@ -372,7 +372,8 @@ fn span_state_gives_the_catenarys_sag_and_horizontal_tension() {
             let (a, b) = (s.wire().position(0), s.wire().position(n));
             let cat = ElasticCatenary::solve(a, b, l0, [0.0, 0.0, -RHO * G], EA_N).unwrap();
             let sag = ohl::wire::section::midspan_sag_m(&cat, a, b);
-            let (ds, dh) = (state.sag_m.unwrap() - sag, state.horizontal_tension_n.unwrap() - cat.horizontal_tension_n());
+            let (ds, dh) =
+                (state.sag_m.unwrap() - sag, state.horizontal_tension_n.unwrap() - cat.horizontal_tension_n());
             println!(
                 "h = {h} m, N = {n}: sag {:.6} m (catenary {sag:.6}), H {:.4} N (catenary {:.4})",
                 state.sag_m.unwrap(),

@@ -346,21 +346,19 @@ fn the_residual_static_load_of_the_broken_conductor_agrees_with_a_hand_model() {
             worst = worst.max((lib[1] - hand[k][0]).abs()).max((lib[2] - hand[k][1]).abs());
         }
         // The dead-ends: span 4's pull on the right one, half of the broken segment on the left one.
-        let last = ohl::exact::ElasticCatenary::solve(
-            [0.0, p[6], p[7]],
-            right_end,
-            lengths[4],
-            [0.0, 0.0, -g * rho],
-            ea,
-        )
-        .unwrap();
+        let last =
+            ohl::exact::ElasticCatenary::solve([0.0, p[6], p[7]], right_end, lengths[4], [0.0, 0.0, -g * rho], ea)
+                .unwrap();
         let right = r.supports[5].force_n;
         worst = worst.max((right[1] + last.horizontal_tension_n()).abs()).max((right[2] + last.reaction_b_n()).abs());
         let left = r.supports[0].force_n;
         assert!((left[2] + 0.5 * g * w.segment_mass[0]).abs() < 1e-6 * g * w.segment_mass[0], "{left:?}");
         // The ground carries the piece but for its hanging part and the dead-end's half segment.
         let ground = g * rho * lengths[0] - piece(p[1]) - 0.5 * g * w.segment_mass[0];
-        println!("N = {n}: ground {:.3} N, hand {ground:.3} N; largest support difference {worst:.3} N", r.ground_reaction_n[2]);
+        println!(
+            "N = {n}: ground {:.3} N, hand {ground:.3} N; largest support difference {worst:.3} N",
+            r.ground_reaction_n[2]
+        );
         assert!((r.ground_reaction_n[2] - ground).abs() < 1e-6 * ground, "{} vs {ground}", r.ground_reaction_n[2]);
         errors.push((worst, hand[0][0]));
     }
@@ -427,7 +425,10 @@ fn static_after_is_refused_for_a_line_and_a_single_span_keeps_its_mid_span() {
     let o = run(&["run", "cases/e_three_phases_wind.toml", "--static-after", "--out", dir.to_str().unwrap()]);
     let err = String::from_utf8_lossy(&o.stderr);
     assert_eq!(o.status.code(), Some(2), "{err}");
-    assert!(err.contains("cases/e_three_phases_wind.toml: --static-after is not available for a [line] scenario"), "{err}");
+    assert!(
+        err.contains("cases/e_three_phases_wind.toml: --static-after is not available for a [line] scenario"),
+        "{err}"
+    );
     assert!(!dir.exists(), "nothing may run");
     let o = run(&["run", "paper_cases/fig4_break_fall.toml", "--out", dir.to_str().unwrap()]);
     let text = String::from_utf8_lossy(&o.stdout);

@@ -19,10 +19,10 @@ use std::time::Instant;
 use crate::events::EventState;
 use crate::output::clock::LANDING;
 use crate::output::rows::write_atomically;
+use crate::output::spans::SpanState;
 use crate::output::summary::{
     EquilibriumReport, EventRecord, InstabilityReport, ProbeSummary, SpanSummary, SupportSummary,
 };
-use crate::output::spans::SpanState;
 use crate::output::timeseries::{Columns, LineColumns};
 use crate::output::{Peaks, ProbePoint, Recorder, Sample, Snapshots, Summary, Timeseries};
 use crate::scenario::Plan;
