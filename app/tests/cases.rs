@@ -414,9 +414,9 @@ fn ohl_run_prints_a_sections_support_loads_and_its_residual_static_state() {
 }
 
 /// `--static-after` is refused for a `[line]` scenario (not available yet), with exit 2 before anything
-/// runs; a single span keeps its mid-span displacement and labels `tau` as the paper's `t U / l`.
+/// runs; a static solve that fails says why, with exit 1; a single span keeps its mid-span displacement and labels `tau` as the paper's `t U / l`.
 #[test]
-fn static_after_is_refused_for_a_line_and_a_single_span_keeps_its_mid_span() {
+fn static_after_is_refused_for_a_line_or_says_why_it_failed_and_a_single_span_keeps_its_mid_span() {
     let repo = Path::new(env!("CARGO_MANIFEST_DIR")).parent().unwrap().to_path_buf();
     let dir = std::env::temp_dir().join(format!("ohl-run-line-static-{}", std::process::id()));
     let run = |args: &[&str]| {
@@ -430,9 +430,49 @@ fn static_after_is_refused_for_a_line_and_a_single_span_keeps_its_mid_span() {
         "{err}"
     );
     assert!(!dir.exists(), "nothing may run");
+    // A static state the solver cannot give (a wind gated by the direction of motion): a typed error
+    // naming the file, exit 1, and the run's own files written.
+    let gated = std::env::temp_dir().join(format!("ohl-downwind-gate-{}.toml", std::process::id()));
+    std::fs::write(&gated, DOWNWIND_GATE).unwrap();
+    let o = run(&["run", gated.to_str().unwrap(), "--static-after", "--out", dir.to_str().unwrap()]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(1), "{err}");
+    let message = format!(
+        "error: {}: residual static state after the run: the downwind wind gate has no static meaning",
+        gated.display()
+    );
+    assert!(err.contains(&message), "{err}");
+    assert!(dir.join("summary.json").is_file() && !dir.join("static.json").exists());
+    let _ = std::fs::remove_file(&gated);
     let o = run(&["run", "paper_cases/fig4_break_fall.toml", "--out", dir.to_str().unwrap()]);
     let text = String::from_utf8_lossy(&o.stdout);
     assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
     assert!(text.contains("(tau = t U / l = ") && text.contains("  mid-span displacement [m]: x1 = "), "{text}");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// A short single span whose wind acts only where the wire moves downwind (`gate = "downwind"`).
+const DOWNWIND_GATE: &str = r#"
+name = "downwind gate"
+[conductor]
+axial_stiffness_n = 791999.5
+linear_density_kg_per_m = 1.0
+diameter_m = 0.01553
+[geometry]
+left_support_m = [0.0, 0.0, 0.0]
+right_support_m = [0.0, 160.0, 0.0]
+segments = 20
+[initial]
+shape = "parabola"
+sag_m = 5.0
+[loads.wind]
+law = "aerodynamic"
+speed_m_per_s = 20.0
+[duration]
+end_time_s = 0.5
+[[events]]
+time_s = 0.0
+action = "wind"
+scale = 1.0
+gate = "downwind"
+"#;
