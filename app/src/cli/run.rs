@@ -5,6 +5,12 @@
 //! exit 2 unless `--allow-large` is given. When stderr is not a terminal (no progress bar) and the run is
 //! long, one line `running: N steps, about T s` goes to stderr before it starts. Warnings (valid but
 //! doubtful values, [`ohl::scenario::warnings`]) go to stderr first, one line each, and into `summary.json`.
+//!
+//! The printed summary: for one span its mid-span displacement and largest tension; for a section per
+//! support its peak and final loads and per span its final sag, clearance and tensions (kN, from
+//! `summary.json`); for a line per conductor, clearance pair and tower. `--static-after` then solves the
+//! residual static state of the final configuration ([`ohl::statics::residual`]), prints it and writes
+//! `static.json` (exit 1 if that solve fails; refused for a line, exit 2).
 
 use std::path::PathBuf;
 use std::process::ExitCode;
