@@ -117,3 +117,10 @@ def test_static_after_a_run_is_the_command_lines_static_json(tmp_path: Path, ohl
     # The ground carries most of the fallen 400 m piece.
     assert st["ground_reaction_n"][2] > 0.8 * 400 * 1.628 * 9.80665
     assert ohl.run(case).static is None
+
+
+def test_static_after_is_refused_for_a_line_before_it_runs() -> None:
+    """As `ohl run --static-after` on a `[line]` (exit 2): not available yet, refused before the run."""
+    line = ohl.load_line(REPO / "cases" / "e_three_phases_wind.toml")
+    with pytest.raises(ValueError, match="static_after is not available for a line scenario"):
+        ohl.run(line, static_after=True)
