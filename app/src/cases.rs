@@ -15,22 +15,15 @@
 //!   [`NO_RESIDUAL`] of the peak is zero to the static solver's tolerance (a support that symmetry or a
 //!   break unloads), and the ratio would be rounding over rounding (it printed `4.7e15`, `inf`, `NaN`).
 //!
-//! The residual static load is the static equilibrium after the event, solved by Newton
-//! ([`ohl::statics`]) from the run's final state: the design quantity of a broken-conductor or
-//! ice-shedding load case (the residual static load of ASCE 74). A broken span's pieces are first
-//! re-hung below the clamps they hang from (10 degrees off vertical, unstretched): from a piece lying on
-//! the ground Newton would have to swing it through 90 degrees, outside its basin (`tests/statics.rs`,
-//! `a_broken_span_hangs_straight_down_from_its_supports`). Where the run has a ground, the re-hung line
-//! stops where it reaches the ground and the rest of the piece is laid on the ground towards its free
-//! end, and the ground stays in the solve as a frictionless contact ([`ohl::statics::solve_on_ground`],
-//! [`ohl::statics::ground`]): the piece hangs from its support down to the ground and lies on it beyond,
-//! so the support carries the weight of the hanging part only (the ground the rest: `residual_ground_n`,
-//! printed with the table). Frictionless, because the tension a frictional ground holds in the lying
-//! piece depends on how it came to rest, and the explicit run does not settle on one: case (a) continued
-//! with mass damping from its end creeps from 5.20 to 5.06 kN of vertical load on support 1 over 770 s,
-//! towards the frictionless 4.81 kN (docs/decisions.md). With a frictionless ground, the damped run
-//! without smoothing comes to rest at this state (`app/tests/cases.rs`). Should the solve fail, the
-//! table uses the last sample and says so.
+//! The residual static load is the static equilibrium after the event, solved by Newton from the run's
+//! final state ([`ohl::statics::residual`], the solve of `ohl run --static-after`): the design quantity
+//! of a broken-conductor or ice-shedding load case (the residual static load of ASCE 74). A broken piece
+//! is re-hung below its clamp and laid on the ground where it reaches it, the ground a frictionless
+//! contact of the solve, so the support carries the weight of the hanging part only (the ground the rest:
+//! `residual_ground_n`, printed with the table). Why frictionless, and why re-hung: the module doc of
+//! [`ohl::statics::residual`]. With a frictionless ground, the damped run without smoothing comes to rest
+//! at this state (`app/tests/cases.rs`). Should the solve fail, the table uses the last sample and says
+//! so.
 
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
@@ -48,8 +41,7 @@ pub fn peak_over_residual(peak_n: f64, residual_n: f64) -> Option<f64> {
 use ohl::run::{RunOptions, run};
 use ohl::scenario;
 use ohl::scheme::Explicit;
-use ohl::statics::ground::GroundPenalty;
-use ohl::statics::{self, StaticOptions};
+use ohl::statics;
 
 use crate::plot::{Chart, Series, Style, render_titled};
 
@@ -107,85 +99,12 @@ pub struct Residual {
     pub ground_n: [f64; 3],
 }
 
-/// The residual static loads after the run: Newton from the final state, broken pieces re-hung and,
-/// where the run has a ground, laid on it, the ground a frictionless contact of the solve (module doc).
+/// The residual static loads after the run: the library's residual static state
+/// ([`ohl::statics::residual`]: Newton from the final state, broken pieces re-hung and, where the run has a
+/// ground, laid on it, the ground a frictionless contact of the solve).
 pub fn residual_loads(final_state: &Explicit) -> Result<Residual, String> {
-    let mut s = final_state.clone();
-    rehang_broken_pieces(&mut s);
-    let opts = StaticOptions { max_iterations: 1000, ..StaticOptions::default() };
-    statics::solve_on_ground(&mut s, &opts).map_err(|e| e.to_string())?;
-    s.evaluate_forces();
-    let mut f = Vec::new();
-    s.support_forces(&mut f);
-    let mut ground_n = [0.0; 3];
-    if let Some(g) = s.ground() {
-        let contact = GroundPenalty::of(&s, g);
-        let w = s.wire();
-        for i in (0..w.nodes()).filter(|&i| w.free[i] > 0.0) {
-            let r = contact.force(w.position(i));
-            for k in 0..3 {
-                ground_n[k] += r[k];
-            }
-        }
-    }
-    Ok(Residual { supports: f.into_iter().map(|(_, v)| v).collect(), ground_n })
-}
-
-/// Each piece cut by a broken segment is put on a line 10 degrees off the vertical below the node that
-/// holds it (a fixed node or a string's clamp), unstretched, on the side of its free end; where that line
-/// reaches the solver's ground, if it has one, the rest of the piece is laid on the ground, straight
-/// along the line (`x2`) towards the free end.
-fn rehang_broken_pieces(s: &mut Explicit) {
-    let w = s.wire();
-    let n = w.segments();
-    let held = |i: usize| w.is_held(i);
-    let ground = s.ground();
-    let mut moves: Vec<(usize, [f64; 3])> = Vec::new();
-    let tilt = 10f64.to_radians();
-    for j in (0..n).filter(|&j| w.intact[j] != 1.0) {
-        // The piece left of the break ends at node j; the one right of it starts at node j + 1.
-        for (end, step) in [(j, -1i64), (j + 1, 1i64)] {
-            let mut path = vec![end];
-            let mut i = end as i64;
-            while !held(i as usize) {
-                let next = i + step;
-                let seg = if step < 0 { next } else { i } as usize;
-                if next < 0 || next > n as i64 || w.intact[seg] != 1.0 {
-                    path.clear();
-                    break;
-                }
-                i = next;
-                path.push(i as usize);
-            }
-            let Some(&top) = path.last() else { continue };
-            let p = w.position(top);
-            let side = -step as f64; // the free end lies on this side of the holding node (along x2)
-            let (mut d, mut q, mut on_ground) = (0.0, p, false);
-            for pair in path.windows(2).rev() {
-                let (below, above) = (pair[0], pair[1]);
-                let l = w.rest_length[below.min(above)];
-                d += l;
-                let hang = [p[0], p[1] + side * d * tilt.sin(), p[2] - d * tilt.cos()];
-                q = match ground {
-                    Some(g) if on_ground || g.clearance_m(hang) < 0.0 => {
-                        // On the ground: a step of length `l` along its slope towards the free end.
-                        on_ground = true;
-                        let slope = g.surface(q[1]).1;
-                        let x2 = q[1] + side * l / (1.0 + slope * slope).sqrt();
-                        [q[0], x2, g.height_at(x2)]
-                    }
-                    _ => hang,
-                };
-                moves.push((below, q));
-            }
-        }
-    }
-    let w = s.wire_mut();
-    for (i, x) in moves {
-        for k in 0..3 {
-            w.x[k][i] = x[k];
-        }
-    }
+    let r = statics::residual::residual(final_state, &[]).map_err(|e| e.to_string())?;
+    Ok(Residual { supports: r.supports.iter().map(|s| s.force_n).collect(), ground_n: r.ground_reaction_n })
 }
 
 /// A case failed.

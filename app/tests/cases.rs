@@ -214,3 +214,278 @@ fn the_broken_conductors_residual_is_the_state_its_damped_run_comes_to_rest_in()
     assert!(residual.supports[1][2] > -5.0e3 && residual.supports[1][2] < -4.6e3, "{:?}", residual.supports[1]);
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// The residual static state of the broken conductor (a) by the library path of `ohl run --static-after`
+/// (`ohl::scenario::plan`, `ohl::run::run`, `ohl::statics::residual::residual`) on coarse grids of 20 and
+/// 40 segments per span, against an independent hand model that uses no `ohl` solver:
+///
+/// - spans 1 to 4 are closed-form elastic catenaries (`ohl::exact::ElasticCatenary`, Irvine) between
+///   the clamps, with the plan's unstretched span lengths;
+/// - each string is an elastic tension link from its pivot `Q`, its mass at the clamp: the clamp sits at
+///   `Q + l (1 + T / EA_i) L / |L|`, with `L` the load on the clamp (the two spans' pulls, the string's
+///   weight, the hanging piece) and `T = |L|` the string's tension; the force on the support is `L`;
+/// - the broken span 0 hangs plumb from clamp 1 down to the frictionless ground and lies on it beyond
+///   (tests/statics.rs, `a_broken_span_hangs_to_a_frictionless_ground_and_lies_on_it`): clamp 1 carries
+///   the weight of the piece's nodes above the ground, `g rho l0 (n_h + 1/2)` (the clamp node's half
+///   segment and the `n_h` nodes hanging at `l0, 2 l0, ...` below it; the stretch of that short piece,
+///   1e-5, moves no node across the ground).
+///
+/// The four clamps are solved by Newton's method (finite-difference Jacobian) to 1e-9 m.
+///
+/// Tolerance: the library discretises the spans' chains, a second-order discretisation (section_statics
+/// study: order 2 +- 0.1), so its support loads differ from the catenaries' by `C ds^2`. Asserted: the
+/// largest difference of any support load component at 40 segments per span below 2e-3 of the
+/// longitudinal load on support 1 (measured: see the printout), and smaller than at 20 segments by a
+/// factor of at least 3 (order 2 gives 4; 3 leaves room for the non-asymptotic part). The ground's
+/// reaction is checked against the piece's weight less the hanging part and the dead-end's half segment
+/// to 1e-6 relative (the penalty contact's sink moves no node across the ground).
+#[test]
+fn the_residual_static_load_of_the_broken_conductor_agrees_with_a_hand_model() {
+    let repo = Path::new(env!("CARGO_MANIFEST_DIR")).parent().unwrap().to_path_buf();
+    let mut errors = Vec::new();
+    for n in [20usize, 40] {
+        let mut sc = ohl::scenario::load(&repo.join("cases/a_broken_conductor.toml")).unwrap();
+        sc.section.as_mut().unwrap().segments_per_span = Some(n);
+        let plan = ohl::scenario::plan(&sc, "a_broken_conductor (coarse)").unwrap();
+        let spans = plan.spans.clone();
+        let o = ohl::run::run(plan, &ohl::run::RunOptions::default()).unwrap();
+        let r = ohl::statics::residual::residual(&o.solver, &spans).unwrap();
+        let w = o.solver.wire();
+        let g = o.solver.loads().gravity_m_per_s2;
+        let rho = w.segment_mass[spans[1].0] / w.reference_length[spans[1].0];
+        let ea = w.axial_stiffness_n[spans[1].0];
+        let strings = w.insulators.clone();
+        let lengths: Vec<f64> = spans.iter().map(|&(a, b)| w.rest_length[a..b].iter().sum()).collect();
+        let l0 = w.rest_length[1];
+        let (left_end, right_end) = (w.position(0), w.position(w.segments()));
+        // The hanging piece: nodes at l0, 2 l0, ... below clamp 1 while above the ground (x3 = 0).
+        let piece = |clamp_z: f64| {
+            let hanging = (1..).take_while(|k| clamp_z - *k as f64 * l0 > 0.0).count() as f64;
+            g * rho * l0 * (hanging + 0.5)
+        };
+        // Loads on the four clamps [F2, F3] for clamp positions p (x2, x3 of each).
+        let loads = |p: &[f64]| -> Vec<[f64; 2]> {
+            let at = |k: usize| -> [f64; 3] {
+                match k {
+                    0 => left_end,
+                    5 => right_end,
+                    _ => [0.0, p[2 * (k - 1)], p[2 * (k - 1) + 1]],
+                }
+            };
+            let mut out = vec![[0.0; 2]; 4];
+            for (k, s) in strings.iter().enumerate() {
+                out[k][1] -= s.mass_kg * g;
+            }
+            out[0][1] -= piece(p[1]);
+            for span in 1..5 {
+                let (a, b) = (at(span), at(span + 1));
+                let c = ohl::exact::ElasticCatenary::solve(a, b, lengths[span], [0.0, 0.0, -g * rho], ea).unwrap();
+                let (h, v) = (c.horizontal_tension_n(), c.reaction_a_n());
+                // The span pulls its left end towards its right end and down by V, the right end back and
+                // down by the rest of its weight.
+                out[span - 1][0] += h;
+                out[span - 1][1] -= v;
+                if span < 4 {
+                    out[span][0] -= h;
+                    out[span][1] -= c.reaction_b_n();
+                }
+            }
+            out
+        };
+        let residual = |p: &[f64]| -> Vec<f64> {
+            let l = loads(p);
+            let mut f = Vec::new();
+            for (k, s) in strings.iter().enumerate() {
+                let t = l[k][0].hypot(l[k][1]);
+                let stretch = s.length_m * (1.0 + t / s.stiffness_n) / t;
+                f.push(p[2 * k] - (s.pivot_m[1] + stretch * l[k][0]));
+                f.push(p[2 * k + 1] - (s.pivot_m[2] + stretch * l[k][1]));
+            }
+            f
+        };
+        // Newton from the plumb clamps, a finite-difference Jacobian, Gaussian elimination.
+        let mut p: Vec<f64> = strings.iter().flat_map(|s| [s.pivot_m[1], s.pivot_m[2] - s.length_m]).collect();
+        for _ in 0..100 {
+            let f = residual(&p);
+            if f.iter().all(|x| x.abs() < 1e-9) {
+                break;
+            }
+            let m = p.len();
+            let mut a = vec![vec![0.0; m + 1]; m];
+            for j in 0..m {
+                let mut q = p.clone();
+                q[j] += 1e-6;
+                let fq = residual(&q);
+                for i in 0..m {
+                    a[i][j] = (fq[i] - f[i]) / 1e-6;
+                }
+            }
+            for i in 0..m {
+                a[i][m] = -f[i];
+            }
+            for c in 0..m {
+                let piv = (c..m).max_by(|&x, &y| a[x][c].abs().total_cmp(&a[y][c].abs())).unwrap();
+                a.swap(c, piv);
+                for i in c + 1..m {
+                    let factor = a[i][c] / a[c][c];
+                    for j in c..=m {
+                        a[i][j] -= factor * a[c][j];
+                    }
+                }
+            }
+            let mut dx = vec![0.0; m];
+            for i in (0..m).rev() {
+                dx[i] = (a[i][m] - (i + 1..m).map(|j| a[i][j] * dx[j]).sum::<f64>()) / a[i][i];
+            }
+            let step = dx.iter().fold(0.0f64, |s, d| s.max(d.abs()));
+            let scale = if step > 1.0 { 1.0 / step } else { 1.0 };
+            for i in 0..m {
+                p[i] += scale * dx[i];
+            }
+        }
+        assert!(residual(&p).iter().all(|x| x.abs() < 1e-9), "the hand model did not converge: {p:?}");
+        let hand = loads(&p);
+        let mut worst: f64 = 0.0;
+        for k in 0..4 {
+            let lib = r.supports[k + 1].force_n;
+            println!(
+                "N = {n}: support {}: library f2 {:.3} f3 {:.3} N, hand model f2 {:.3} f3 {:.3} N",
+                k + 1,
+                lib[1],
+                lib[2],
+                hand[k][0],
+                hand[k][1]
+            );
+            worst = worst.max((lib[1] - hand[k][0]).abs()).max((lib[2] - hand[k][1]).abs());
+        }
+        // The dead-ends: span 4's pull on the right one, half of the broken segment on the left one.
+        let last =
+            ohl::exact::ElasticCatenary::solve([0.0, p[6], p[7]], right_end, lengths[4], [0.0, 0.0, -g * rho], ea)
+                .unwrap();
+        let right = r.supports[5].force_n;
+        worst = worst.max((right[1] + last.horizontal_tension_n()).abs()).max((right[2] + last.reaction_b_n()).abs());
+        let left = r.supports[0].force_n;
+        assert!((left[2] + 0.5 * g * w.segment_mass[0]).abs() < 1e-6 * g * w.segment_mass[0], "{left:?}");
+        // The ground carries the piece but for its hanging part and the dead-end's half segment.
+        let ground = g * rho * lengths[0] - piece(p[1]) - 0.5 * g * w.segment_mass[0];
+        println!(
+            "N = {n}: ground {:.3} N, hand {ground:.3} N; largest support difference {worst:.3} N",
+            r.ground_reaction_n[2]
+        );
+        assert!((r.ground_reaction_n[2] - ground).abs() < 1e-6 * ground, "{} vs {ground}", r.ground_reaction_n[2]);
+        errors.push((worst, hand[0][0]));
+    }
+    let ((coarse, _), (fine, load)) = (errors[0], errors[1]);
+    assert!(fine < 2e-3 * load.abs(), "{fine} N against {load} N");
+    assert!(coarse > 3.0 * fine, "20 segments: {coarse} N, 40: {fine} N");
+}
+
+/// The output of `ohl run --static-after` on a section: per support the peak (tracked every step: the
+/// value of `summary.json`) and final loads in kN, per span the sag ("broken" for the broken span), no
+/// "mid-span displacement" (the middle of the whole conductor is no mid-span) and no `tau`; then the
+/// residual static state, printed as `static.json` holds it. The printed numbers are the files' numbers
+/// rounded to the printed digits (compared as the same formatting of the file's value).
+#[test]
+fn ohl_run_prints_a_sections_support_loads_and_its_residual_static_state() {
+    let repo = Path::new(env!("CARGO_MANIFEST_DIR")).parent().unwrap().to_path_buf();
+    let dir = std::env::temp_dir().join(format!("ohl-run-static-after-{}", std::process::id()));
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_ohl"))
+        .args(["run", "cases/a_broken_conductor.toml", "--static-after", "--out", dir.to_str().unwrap()])
+        .current_dir(&repo)
+        .output()
+        .unwrap();
+    let text = String::from_utf8_lossy(&o.stdout);
+    print!("{text}");
+    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(!text.contains("mid-span displacement") && !text.contains("tau"), "{text}");
+    let read = |f: &str| -> serde_json::Value {
+        serde_json::from_str(&std::fs::read_to_string(dir.join(f)).unwrap()).unwrap()
+    };
+    let (summary, stat) = (read("summary.json"), read("static.json"));
+    let kn = |v: &serde_json::Value| format!("{:.2}", v.as_f64().unwrap() / 1e3);
+    let lines: Vec<&str> = text.lines().collect();
+    let table = |head: &str| lines.iter().position(|l| l.contains(head)).unwrap_or_else(|| panic!("{head}: {text}"));
+    // Support 1 in the run's table: its peak |F| and time, its final f3.
+    let row: Vec<&str> = lines[table("peak |F|") + 2].split_whitespace().collect();
+    let s1 = &summary["supports"][1];
+    assert_eq!(row[0], "1", "{row:?}");
+    assert_eq!(row[3], kn(&s1["peaks"]["magnitude"]["value_n"]), "{row:?}");
+    assert_eq!(row[4], format!("{:.3}", s1["peaks"]["magnitude"]["time_s"].as_f64().unwrap()));
+    assert_eq!(row.last().unwrap().to_string(), kn(&s1["final_force_n"][2]));
+    // Spans: span 0 broken, span 1's sag as summary.json has it.
+    let spans = table("sag [m]");
+    assert!(lines[spans + 1].split_whitespace().collect::<Vec<_>>()[..2] == ["0", "broken"], "{}", lines[spans + 1]);
+    let sag = summary["spans"][1]["final_sag_m"].as_f64().unwrap();
+    assert_eq!(lines[spans + 2].split_whitespace().nth(1).unwrap(), format!("{sag:.3}"));
+    // The residual static state: support 1's vertical load and the ground's share as static.json has them.
+    let residual = table("residual static state");
+    assert!(lines[residual].contains(&format!("the ground carries {} kN", kn(&stat["ground_reaction_n"][2]))));
+    let row: Vec<&str> = lines[residual + 3].split_whitespace().collect();
+    assert_eq!((row[0], row[5]), ("1", kn(&stat["supports"][1]["force_n"][2]).as_str()), "{row:?}");
+    assert!(stat["spans"][0]["sag_m"].is_null() && stat["spans"][1]["sag_m"].as_f64().unwrap() > 10.0);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// `--static-after` is refused for a `[line]` scenario (not available yet), with exit 2 before anything
+/// runs; a static solve that fails says why, with exit 1; a single span keeps its mid-span displacement and labels `tau` as the paper's `t U / l`.
+#[test]
+fn static_after_is_refused_for_a_line_or_says_why_it_failed_and_a_single_span_keeps_its_mid_span() {
+    let repo = Path::new(env!("CARGO_MANIFEST_DIR")).parent().unwrap().to_path_buf();
+    let dir = std::env::temp_dir().join(format!("ohl-run-line-static-{}", std::process::id()));
+    let run = |args: &[&str]| {
+        std::process::Command::new(env!("CARGO_BIN_EXE_ohl")).args(args).current_dir(&repo).output().unwrap()
+    };
+    let o = run(&["run", "cases/e_three_phases_wind.toml", "--static-after", "--out", dir.to_str().unwrap()]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("cases/e_three_phases_wind.toml: --static-after is not available for a [line] scenario"),
+        "{err}"
+    );
+    assert!(!dir.exists(), "nothing may run");
+    // A static state the solver cannot give (a wind gated by the direction of motion): a typed error
+    // naming the file, exit 1, and the run's own files written.
+    let gated = std::env::temp_dir().join(format!("ohl-downwind-gate-{}.toml", std::process::id()));
+    std::fs::write(&gated, DOWNWIND_GATE).unwrap();
+    let o = run(&["run", gated.to_str().unwrap(), "--static-after", "--out", dir.to_str().unwrap()]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(1), "{err}");
+    let message = format!(
+        "error: {}: residual static state after the run: the downwind wind gate has no static meaning",
+        gated.display()
+    );
+    assert!(err.contains(&message), "{err}");
+    assert!(dir.join("summary.json").is_file() && !dir.join("static.json").exists());
+    let _ = std::fs::remove_file(&gated);
+    let o = run(&["run", "paper_cases/fig4_break_fall.toml", "--out", dir.to_str().unwrap()]);
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(text.contains("(tau = t U / l = ") && text.contains("  mid-span displacement [m]: x1 = "), "{text}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// A short single span whose wind acts only where the wire moves downwind (`gate = "downwind"`).
+const DOWNWIND_GATE: &str = r#"
+name = "downwind gate"
+[conductor]
+axial_stiffness_n = 791999.5
+linear_density_kg_per_m = 1.0
+diameter_m = 0.01553
+[geometry]
+left_support_m = [0.0, 0.0, 0.0]
+right_support_m = [0.0, 160.0, 0.0]
+segments = 20
+[initial]
+shape = "parabola"
+sag_m = 5.0
+[loads.wind]
+law = "aerodynamic"
+speed_m_per_s = 20.0
+[duration]
+end_time_s = 0.5
+[[events]]
+time_s = 0.0
+action = "wind"
+scale = 1.0
+gate = "downwind"
+"#;

@@ -277,6 +277,7 @@ class RunResult(_Series):
         snapshots: the :class:`Snapshots`.
         summary: the summary, a dict with the keys of ``summary.json``.
         events: the events applied, as (time [s], what) tuples.
+        static: the residual static state after the run (``run(..., static_after=True)``), else None.
     """
 
     def __init__(self, raw: dict, scenario: Scenario) -> None:
@@ -285,6 +286,7 @@ class RunResult(_Series):
         self.status: str = raw["status"]
         self.summary: Dict[str, Any] = raw["summary"]
         self.events: List[Tuple[float, str]] = list(raw["events"])
+        self.static: Optional[Dict[str, Any]] = raw.get("static")
 
     def __repr__(self) -> str:
         return (
@@ -386,6 +388,7 @@ def run(
     *,
     out_dir: Optional[Union[str, "os.PathLike[str]"]] = None,
     allow_large: bool = False,
+    static_after: bool = False,
 ) -> RunResult:
     """Run a scenario to its end and return its :class:`RunResult`.
 
@@ -394,14 +397,23 @@ def run(
     scheduler) run in parallel. With ``out_dir`` it also writes ``timeseries.csv``, ``snapshots.csv``
     and ``summary.json`` there, as ``ohl run --out`` does.
 
+    With ``static_after`` (as ``ohl run --static-after``) the residual static state of the run's final
+    configuration is solved after the run (Newton; broken pieces hang to the ground and lie on it) and
+    returned as ``RunResult.static``, a dict with the keys of ``static.json`` (``supports``, ``spans``,
+    ``ground_reaction_n``, ``iterations``, ...) and the solved wire as :func:`equilibrium` gives it
+    (``x_m``, ``support_forces_n``, ...); with ``out_dir`` it also writes ``static.json``.
+
     Raises :class:`WorkBudgetError` above the work budget unless ``allow_large`` (as ``ohl run
     --allow-large``), :class:`UnstableError` (with the result so far in ``.result``) if the scheme goes
-    unstable, ``KeyboardInterrupt`` on Ctrl-C.
+    unstable, :class:`StaticsError` if the static solve of ``static_after`` fails, ``KeyboardInterrupt``
+    on Ctrl-C.
     """
     if isinstance(scenario, LineScenario):
+        if static_after:
+            raise ValueError("static_after is not available for a line scenario yet (a single conductor or a section only)")
         return run_line(scenario, out_dir=out_dir, allow_large=allow_large)
     sc = _as_scenario(scenario)
-    raw = _ohl.run_raw(sc, out_dir, allow_large)
+    raw = _ohl.run_raw(sc, out_dir, allow_large, static_after)
     result = RunResult(raw, sc)
     u = raw["instability"]
     if u is not None:

@@ -231,6 +231,7 @@ class RunResult(_Series):
     status: str
     summary: Dict[str, Any]
     events: List[Tuple[float, str]]
+    static: Optional[Dict[str, Any]]  # run(..., static_after=True): the residual static state (static.json's keys)
 
 class ConductorResult(_Series):
     """One conductor of a line run."""
@@ -261,7 +262,9 @@ class LineResult:
 @overload
 def run(scenario: LineScenario, *, out_dir: Optional[PathLike] = None, allow_large: bool = False) -> LineResult: ...
 @overload
-def run(scenario: ScenarioLike, *, out_dir: Optional[PathLike] = None, allow_large: bool = False) -> RunResult: ...
+def run(
+    scenario: ScenarioLike, *, out_dir: Optional[PathLike] = None, allow_large: bool = False, static_after: bool = False
+) -> RunResult: ...
 def run_line(scenario: LineScenarioLike, *, out_dir: Optional[PathLike] = None, allow_large: bool = False) -> LineResult: ...
 
 class WireState(TypedDict):

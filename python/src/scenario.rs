@@ -372,8 +372,10 @@ pub fn run_raw<'py>(
     scenario: &Bound<'py, Scenario>,
     out_dir: Option<&Bound<'py, PyAny>>,
     allow_large: &Bound<'py, PyAny>,
+    static_after: &Bound<'py, PyAny>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let (out_dir, allow_large) = run_options(out_dir, allow_large)?;
+    let static_after = args::flag("static_after", static_after)?;
     let sc = scenario.get();
     let estimate = sc.plan.work_estimate();
     let checked = if allow_large { estimate.check_resolvable() } else { estimate.check() };
@@ -408,6 +410,23 @@ pub fn run_raw<'py>(
         events.append((*t, what.as_str()))?;
     }
     d.set_item("events", events)?;
+    // The residual static state of `ohl run --static-after`, of a run that did not go unstable.
+    if static_after && instability.is_none() {
+        let solved = py.detach(|| statics::residual::residual(&outcome.solver, &sc.plan.spans));
+        let r = solved.map_err(|e| {
+            raise(py, "StaticsError", (format!("{}: residual static state after the run: {e}", sc.file),))
+        })?;
+        if let Some(dir) = &opts.out_dir {
+            ohl::run::write_residual(dir, &r).map_err(|e| PyOSError::new_err(e.to_string()))?;
+        }
+        let st = state_dict(py, &r.solver)?;
+        for (k, v) in to_py(py, &r)?.cast_into::<PyDict>()?.iter() {
+            st.set_item(k, v)?;
+        }
+        d.set_item("static", st)?;
+    } else {
+        d.set_item("static", py.None())?;
+    }
     match instability {
         Some(i) => {
             let u = PyDict::new(py);

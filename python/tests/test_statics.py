@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 import ohl
-from conftest import assert_bitwise, cli, read_csv
+from conftest import REPO, assert_bitwise, cli, read_csv, read_json
 
 SPAN = """
 name = "statics"
@@ -83,3 +83,44 @@ def test_equilibrium_balances_the_loads() -> None:
 def test_equilibrium_that_does_not_converge() -> None:
     with pytest.raises(ohl.StaticsError, match="did not converge"):
         ohl.equilibrium(ohl.loads(SPAN.replace("{shape}", "parabola")), max_iterations=1)
+
+
+def test_static_after_a_run_is_the_command_lines_static_json(tmp_path: Path, ohl_cli: Path) -> None:
+    """`ohl.run(..., static_after=True)` solves the residual static state of the broken conductor (case
+    (a): the conductor broken at the first dead-end, the piece hanging from support 1 to the ground and
+    lying on it) and gives the numbers of `ohl run --static-after`'s static.json bit for bit. Independent
+    checks: the support loads and the ground's reaction balance the weight of the section (five spans of
+    conductor at their unstretched lengths and four 100 kg strings) to 1e-6 (the Newton tolerance is 1e-10
+    of the nodal loads), and nothing is left along the line (sum of f2, 1e-6 of the weight)."""
+    case = REPO / "cases" / "a_broken_conductor.toml"
+    p = cli(ohl_cli, "run", str(case), "--out", str(tmp_path / "cli"), "--static-after", "--quiet")
+    assert p.returncode == 0, p.stderr
+    r = ohl.run(case, out_dir=tmp_path / "py", static_after=True)
+    st = r.static
+    assert st is not None
+    assert read_json(tmp_path / "py" / "static.json") == read_json(tmp_path / "cli" / "static.json")
+    written = read_json(tmp_path / "cli" / "static.json")
+    for k, sup in enumerate(written["supports"]):
+        assert sup["force_n"] == st["supports"][k]["force_n"]
+        assert_bitwise(np.array(sup["force_n"]), st["support_forces_n"][k], f"support {k}")
+    assert written["spans"] == st["spans"]
+    assert st["spans"][0]["sag_m"] is None and all(s["sag_m"] > 0 for s in st["spans"][1:])
+    # The weight: what the supports carry in the intact section's equilibrium without the ground and the
+    # break (the same masses: case (a) has no ice).
+    text = case.read_text()
+    intact = text[: text.index("[ground]")] + text[text.index("[duration]") : text.index("[[events]]")]
+    weight = -ohl.equilibrium(ohl.loads(intact))["support_forces_n"][:, 2].sum()
+    f = np.array([s["force_n"] for s in st["supports"]])
+    assert f.shape == (len(r.scenario.supports), 3)
+    assert abs(f[:, 2].sum() - st["ground_reaction_n"][2] + weight) < 1e-6 * weight
+    assert abs(f[:, 1].sum()) < 1e-6 * weight
+    # The ground carries most of the fallen 400 m piece.
+    assert st["ground_reaction_n"][2] > 0.8 * 400 * 1.628 * 9.80665
+    assert ohl.run(case).static is None
+
+
+def test_static_after_is_refused_for_a_line_before_it_runs() -> None:
+    """As `ohl run --static-after` on a `[line]` (exit 2): not available yet, refused before the run."""
+    line = ohl.load_line(REPO / "cases" / "e_three_phases_wind.toml")
+    with pytest.raises(ValueError, match="static_after is not available for a line scenario"):
+        ohl.run(line, static_after=True)

@@ -41,6 +41,14 @@ pub struct SpanSummary {
     /// its least vertical clearance above the ground at the end [m] (with a ground)
     #[serde(skip_serializing_if = "Option::is_none")]
     pub final_least_clearance_m: Option<f64>,
+    /// its sag at the end: vertical distance from the chord down to the conductor at the horizontal
+    /// middle of the span [m] ([`super::spans`]; absent for a broken span)
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub final_sag_m: Option<f64>,
+    /// its horizontal tension at the end: the tension's component along the horizontal chord direction at
+    /// the middle of the span [N] ([`super::spans`]; absent for a broken span)
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub final_horizontal_tension_n: Option<f64>,
     /// its peaks from `peaks_from_s` on, every time level
     pub peaks: SpanPeaks,
 }

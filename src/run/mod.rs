@@ -19,6 +19,7 @@ use std::time::Instant;
 use crate::events::EventState;
 use crate::output::clock::LANDING;
 use crate::output::rows::write_atomically;
+use crate::output::spans::SpanState;
 use crate::output::summary::{
     EquilibriumReport, EventRecord, InstabilityReport, ProbeSummary, SpanSummary, SupportSummary,
 };
@@ -235,15 +236,17 @@ pub fn run_observed<'o>(
             .iter()
             .zip(&run_peaks.spans)
             .enumerate()
-            .map(|(k, (&(first, last), p))| SpanSummary {
-                span: k,
-                nodes: [first, last],
-                final_max_tension_n: solver.max_tension_in(first..last),
-                final_least_clearance_m: plan
-                    .ground
-                    .as_ref()
-                    .map(|g| g.least_clearance_m(&solver.wire().x, first..=last)),
-                peaks: p.clone(),
+            .map(|(k, (&(first, last), p))| {
+                let state = SpanState::of(&solver, first, last, plan.ground.as_ref());
+                SpanSummary {
+                    span: k,
+                    nodes: [first, last],
+                    final_max_tension_n: state.max_tension_n,
+                    final_least_clearance_m: state.least_clearance_m,
+                    final_sag_m: state.sag_m,
+                    final_horizontal_tension_n: state.horizontal_tension_n,
+                    peaks: p.clone(),
+                }
             })
             .collect(),
         phases: peaks.phases.clone(),
@@ -317,5 +320,12 @@ fn thermal_summary(h: &crate::scenario::thermal::ThermalHistory, t_end: f64) -> 
 pub fn write_summary(dir: &Path, s: &Summary) -> Result<(), OutputError> {
     let p = dir.join("summary.json");
     let text = serde_json::to_string_pretty(s).map_err(std::io::Error::other).map_err(OutputError::at(&p))?;
+    write_atomically(&p, &(text + "\n")).map_err(OutputError::at(&p))
+}
+
+/// Write the residual static state of `ohl run --static-after` to `dir/static.json`, whole or not at all.
+pub fn write_residual(dir: &Path, r: &crate::statics::residual::Residual) -> Result<(), OutputError> {
+    let p = dir.join("static.json");
+    let text = serde_json::to_string_pretty(r).map_err(std::io::Error::other).map_err(OutputError::at(&p))?;
     write_atomically(&p, &(text + "\n")).map_err(OutputError::at(&p))
 }

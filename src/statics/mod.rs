@@ -17,6 +17,9 @@
 //! Ground contact, which the explicit scheme enforces by projection, is refused by [`solve`]; with
 //! [`solve_on_ground`] it is a frictionless penalty contact ([`ground`]).
 //!
+//! After a run, [`residual`] solves the residual static state of its final configuration (broken pieces
+//! re-hung, the ground kept) for `ohl run --static-after` and `ohl cases`.
+//!
 //! A suspension string adds its force to its clamp node ([`crate::wire::insulator`]); an elastic
 //! crossarm adds its pivot's two horizontal coordinates as unknowns, with the pivot's balance of springs
 //! and string pull as their equations ([`pivots`]).
@@ -81,6 +84,7 @@ pub mod line;
 pub mod line_jacobian;
 mod newton;
 pub mod pivots;
+pub mod residual;
 pub mod sparse_lu;
 
 pub use line::solve_line;

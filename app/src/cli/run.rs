@@ -5,6 +5,12 @@
 //! exit 2 unless `--allow-large` is given. When stderr is not a terminal (no progress bar) and the run is
 //! long, one line `running: N steps, about T s` goes to stderr before it starts. Warnings (valid but
 //! doubtful values, [`ohl::scenario::warnings`]) go to stderr first, one line each, and into `summary.json`.
+//!
+//! The printed summary: for one span its mid-span displacement and largest tension; for a section per
+//! support its peak and final loads and per span its final sag, clearance and tensions (kN, from
+//! `summary.json`); for a line per conductor, clearance pair and tower. `--static-after` then solves the
+//! residual static state of the final configuration ([`ohl::statics::residual`]), prints it and writes
+//! `static.json` (exit 1 if that solve fails; refused for a line, exit 2).
 
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -12,6 +18,7 @@ use std::process::ExitCode;
 use ohl::run::{RunError, RunOptions, run_observed};
 
 use ohl::scenario::{self, WorkEstimate};
+use ohl_app::cases::peak_over_residual;
 use ohl_app::paper::heat_spec;
 use ohl_app::progress::Bar;
 
@@ -33,6 +40,11 @@ pub struct RunArgs {
     /// run a scenario above the work budget (2e10 node-steps or 2 GB of output)
     #[arg(long)]
     allow_large: bool,
+    /// after the run, solve the residual static state of its final configuration (Newton; broken pieces,
+    /// failed strings, ice and temperatures as at the end; a fallen piece lies on the ground), print its
+    /// support loads and span sags and write it to DIR/static.json
+    #[arg(long)]
+    static_after: bool,
 }
 
 /// Above this many node-steps a run announces itself on stderr when no progress bar is drawn.
@@ -40,12 +52,19 @@ const ANNOUNCE_NODE_STEPS: f64 = 1.0e9;
 
 /// Run the command; exit 0 on success, 1 if unstable or output failed, 2 on invalid input.
 pub fn main(args: RunArgs) -> ExitCode {
-    let RunArgs { scenario: path, out, quiet, dry_run, allow_large } = args;
+    let RunArgs { scenario: path, out, quiet, dry_run, allow_large, static_after } = args;
     if let Some(message) = heat_case_refusal(&path) {
         err!("error: {}: {message}", path.display());
         return ExitCode::from(2);
     }
     if std::fs::read_to_string(&path).is_ok_and(|t| scenario::line::is_line(&t)) {
+        if static_after {
+            err!(
+                "error: {}: --static-after is not available for a [line] scenario yet (a single conductor or a [section] only)",
+                path.display()
+            );
+            return ExitCode::from(2);
+        }
         return run_line(&path, &out, quiet, dry_run, allow_large);
     }
     let plan = match scenario::load(&path).and_then(|sc| scenario::plan(&sc, &path.display().to_string())) {
@@ -76,38 +95,181 @@ pub fn main(args: RunArgs) -> ExitCode {
     }
     let mut extra: Vec<&mut dyn ohl::run::Observer> =
         bar.iter_mut().map(|b| b as &mut dyn ohl::run::Observer).collect();
-    match run_observed(plan, &opts, &mut extra) {
-        Ok(o) => {
-            if !quiet {
-                let s = &o.summary;
-                let d = s.final_midspan_displacement_m;
-                out!(
-                    "{}: {} at t = {:.4} s (tau = {:.4}) after {} steps of {:.4e} s",
-                    s.name,
-                    s.status,
-                    s.final_time_s,
-                    s.final_tau,
-                    s.steps,
-                    s.dt_s
-                );
-                out!("  mid-span displacement [m]: x1 = {:.6}, x2 = {:.6}, x3 = {:.6}", d[0], d[1], d[2]);
-                out!(
-                    "  max tension: {:.2} N; throughput {:.3e} node-steps/s",
-                    s.final_max_tension_n,
-                    s.node_steps_per_second
-                );
-                out!("  written to {}", out.display());
-            }
-            ExitCode::SUCCESS
-        }
+    let spans = plan.spans.clone();
+    let outcome = match run_observed(plan, &opts, &mut extra) {
+        Ok(o) => o,
         Err(RunError::Unstable { instability, .. }) => {
             err!("error: {}: {instability}; output so far is in {}", path.display(), out.display());
-            ExitCode::from(1)
+            return ExitCode::from(1);
         }
         Err(e) => {
             err!("error: {e}");
-            ExitCode::from(1)
+            return ExitCode::from(1);
         }
+    };
+    if !quiet {
+        print_summary(&outcome.summary);
+    }
+    if static_after {
+        let solved = ohl::statics::residual::residual(&outcome.solver, &spans);
+        let r = match solved {
+            Ok(r) => r,
+            Err(e) => {
+                err!("error: {}: residual static state after the run: {e}", path.display());
+                return ExitCode::from(1);
+            }
+        };
+        if let Err(e) = ohl::run::write_residual(&out, &r) {
+            err!("error: {e}");
+            return ExitCode::from(1);
+        }
+        if !quiet {
+            print_residual(&r, &outcome.summary);
+        }
+    }
+    if !quiet {
+        out!("  written to {}", out.display());
+    }
+    ExitCode::SUCCESS
+}
+
+/// Kilonewtons, for the printed tables.
+fn kn(f_n: f64) -> f64 {
+    f_n / 1e3
+}
+
+/// The summary of a run: for one span its mid-span displacement and largest tension; for a section the
+/// loads on every support (peak and final) and the state of every span at the end.
+fn print_summary(s: &ohl::output::Summary) {
+    if s.spans.is_empty() {
+        // One span: its mid-span is the probe `mid`; tau is the paper's dimensionless time.
+        let d = s.final_midspan_displacement_m;
+        out!(
+            "{}: {} at t = {:.4} s (tau = t U / l = {:.4}) after {} steps of {:.4e} s",
+            s.name,
+            s.status,
+            s.final_time_s,
+            s.final_tau,
+            s.steps,
+            s.dt_s
+        );
+        out!("  mid-span displacement [m]: x1 = {:.6}, x2 = {:.6}, x3 = {:.6}", d[0], d[1], d[2]);
+        out!("  max tension: {:.2} N; throughput {:.3e} node-steps/s", s.final_max_tension_n, s.node_steps_per_second);
+        return;
+    }
+    out!("{}: {} at t = {:.4} s after {} steps of {:.4e} s", s.name, s.status, s.final_time_s, s.steps, s.dt_s);
+    out!(
+        "  support loads [kN], force of the conductor on the support (f2 along the line, f3 up; peaks from t = {:.4} s, every step):",
+        s.peaks_from_s
+    );
+    out!(
+        "    {:>7} {:>9} | {:>9} {:>8} | {:>9} {:>8} | {:>9} {:>8} | {:>9} {:>9} {:>9}",
+        "support",
+        "x2 [m]",
+        "peak |F|",
+        "at [s]",
+        "peak f2",
+        "at [s]",
+        "peak f3",
+        "at [s]",
+        "final |F|",
+        "final f2",
+        "final f3"
+    );
+    for (k, sup) in s.supports.iter().enumerate() {
+        let (p, f) = (&sup.peaks, sup.final_force_n);
+        out!(
+            "    {:>7} {:>9.1} | {:>9.2} {:>8.3} | {:>9.2} {:>8.3} | {:>9.2} {:>8.3} | {:>9.2} {:>9.2} {:>9.2}",
+            k,
+            sup.position_m[1],
+            kn(p.magnitude.value_n),
+            p.magnitude.time_s,
+            kn(p.components[1].value_n),
+            p.components[1].time_s,
+            kn(p.components[2].value_n),
+            p.components[2].time_s,
+            kn((f[0] * f[0] + f[1] * f[1] + f[2] * f[2]).sqrt()),
+            kn(f[1]),
+            kn(f[2])
+        );
+    }
+    out!("  spans at the end (sag: chord to conductor at the horizontal middle; H: horizontal tension):");
+    out!(
+        "    {:>7} {:>9} {:>14} {:>9} {:>11} | {:>12} {:>8}",
+        "span",
+        "sag [m]",
+        "clearance [m]",
+        "H [kN]",
+        "max T [kN]",
+        "peak T [kN]",
+        "at [s]"
+    );
+    for sp in &s.spans {
+        out!(
+            "    {:>7} {:>9} {:>14} {:>9} {:>11.2} | {:>12.2} {:>8.3}",
+            sp.span,
+            or_broken(sp.final_sag_m, 3, 1.0),
+            sp.final_least_clearance_m.map_or("-".into(), |c| format!("{c:.3}")),
+            or_broken(sp.final_horizontal_tension_n, 2, 1e-3),
+            kn(sp.final_max_tension_n),
+            kn(sp.peaks.max_tension.value_n),
+            sp.peaks.max_tension.time_s
+        );
+    }
+    out!("  max tension: {:.2} kN; throughput {:.3e} node-steps/s", kn(s.final_max_tension_n), s.node_steps_per_second);
+}
+
+/// A span quantity scaled by `scale` with `digits` decimals, or "broken" where the span has none.
+fn or_broken(x: Option<f64>, digits: usize, scale: f64) -> String {
+    x.map_or("broken".into(), |v| format!("{:.*}", digits, v * scale))
+}
+
+/// The residual static state of `--static-after`, beside the run's peaks.
+fn print_residual(r: &ohl::statics::residual::Residual, s: &ohl::output::Summary) {
+    let ground = r.ground_reaction_n[2];
+    out!(
+        "  residual static state (Newton from the state at t = {:.4} s: {} iterations, residual {:.2e} N){}; static.json:",
+        r.after_time_s,
+        r.iterations,
+        r.residual_n,
+        if ground != 0.0 { format!("; the ground carries {:.2} kN (frictionless)", kn(ground)) } else { String::new() }
+    );
+    out!(
+        "    {:>7} {:>9} | {:>9} {:>9} {:>9} | {:>13}",
+        "support",
+        "x2 [m]",
+        "|F| [kN]",
+        "f2 [kN]",
+        "f3 [kN]",
+        "peak/static f2"
+    );
+    for (k, sup) in r.supports.iter().enumerate() {
+        let f = sup.force_n;
+        // The ratio where the support carries a static longitudinal load (`ohl cases`' table, NO_RESIDUAL).
+        let ratio = (s.supports.get(k))
+            .and_then(|p| peak_over_residual(p.peaks.components[1].value_n, f[1]))
+            .map_or("-".into(), |v| format!("{v:.2}"));
+        out!(
+            "    {:>7} {:>9.1} | {:>9.2} {:>9.2} {:>9.2} | {:>13}",
+            k,
+            sup.position_m[1],
+            kn((f[0] * f[0] + f[1] * f[1] + f[2] * f[2]).sqrt()),
+            kn(f[1]),
+            kn(f[2]),
+            ratio
+        );
+    }
+    out!("    {:>7} {:>9} {:>14} {:>9} {:>11}", "span", "sag [m]", "clearance [m]", "H [kN]", "max T [kN]");
+    for sp in &r.spans {
+        let st = &sp.state;
+        out!(
+            "    {:>7} {:>9} {:>14} {:>9} {:>11.2}",
+            sp.span,
+            or_broken(st.sag_m, 3, 1.0),
+            st.least_clearance_m.map_or("-".into(), |c| format!("{c:.3}")),
+            or_broken(st.horizontal_tension_n, 2, 1e-3),
+            kn(st.max_tension_n)
+        );
     }
 }
 
@@ -223,16 +385,36 @@ fn print_line_summary(s: &ohl::run::line::LineSummary, out: &std::path::Path) {
             metres(c.final_m)
         );
     }
-    for t in &s.towers {
-        let f = t.final_force_n;
+    if !s.towers.is_empty() {
+        out!("  tower loads [kN], resultant of every attachment on the tower (f1 across, f2 along the line, f3 up):");
         out!(
-            "  tower {}: peak |F| {:.1} N at {:.3} s; final F = [{:.1}, {:.1}, {:.1}] N",
+            "    {:>10} | {:>9} {:>8} {:>8} {:>8} {:>8} | {:>9} {:>8} {:>8} {:>8}",
+            "tower",
+            "peak |F|",
+            "at [s]",
+            "f1",
+            "f2",
+            "f3",
+            "final |F|",
+            "f1",
+            "f2",
+            "f3"
+        );
+    }
+    for t in &s.towers {
+        let (p, f) = (t.peak_force_n, t.final_force_n);
+        out!(
+            "    {:>10} | {:>9.2} {:>8.3} {:>8.2} {:>8.2} {:>8.2} | {:>9.2} {:>8.2} {:>8.2} {:>8.2}",
             t.name,
-            t.peak_force_magnitude_n,
+            kn(t.peak_force_magnitude_n),
             t.peak_force_time_s,
-            f[0],
-            f[1],
-            f[2]
+            kn(p[0]),
+            kn(p[1]),
+            kn(p[2]),
+            kn((f[0] * f[0] + f[1] * f[1] + f[2] * f[2]).sqrt()),
+            kn(f[0]),
+            kn(f[1]),
+            kn(f[2])
         );
     }
     for a in &s.attachments {
