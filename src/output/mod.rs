@@ -6,6 +6,7 @@
 //! - [`peaks`]: peaks of tension, probe displacements and support forces, every time level, per phase;
 //! - [`recorder`]: the same samples and shapes in memory;
 //! - [`summary`]: `summary.json`, written whole at the end;
+//! - [`start_up`]: which peaks come from the start (a wind's onset) rather than from the design load;
 //!
 //! with their building blocks: [`clock`] (when an output acts, without moving the clock), [`probe`]
 //! (Lagrangian points) and [`rows`] (CSV files that only ever hold whole rows).
@@ -16,6 +17,7 @@ pub mod probe;
 pub mod recorder;
 pub mod rows;
 pub mod snapshots;
+pub mod start_up;
 pub mod summary;
 pub mod timeseries;
 

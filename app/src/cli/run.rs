@@ -96,7 +96,21 @@ pub fn main(args: RunArgs) -> ExitCode {
                     s.final_max_tension_n,
                     s.node_steps_per_second
                 );
+                out!(
+                    "  peak tension: {:.2} N at {:.3} s (peaks from {} s){}",
+                    s.peak_max_tension_n,
+                    s.peak_max_tension_time_s,
+                    s.peaks_from_s,
+                    match &s.start_up {
+                        Some(u) if !u.flagged.is_empty() => " [start-up overshoot]",
+                        _ => "",
+                    }
+                );
                 out!("  written to {}", out.display());
+            }
+            // A peak that comes from the start (ohl::output::start_up) is no design value: said on stderr.
+            for w in s_start_up_lines(&o.summary) {
+                err!("warning: {}: {w}", path.display());
             }
             ExitCode::SUCCESS
         }
@@ -247,4 +261,9 @@ fn print_line_summary(s: &ohl::run::line::LineSummary, out: &std::path::Path) {
         );
     }
     out!("  throughput {:.3e} node-steps/s; written to {}", s.node_steps_per_second, out.display());
+}
+
+/// The start-up warnings of a summary (empty when no peak comes from the start).
+fn s_start_up_lines(s: &ohl::output::Summary) -> Vec<String> {
+    s.start_up.as_ref().map(|u| u.describe()).unwrap_or_default()
 }
