@@ -548,5 +548,21 @@ fn a_line_from_its_equilibrium_under_a_steady_wind_stays_at_rest() {
             c.name, c.peak_max_tension_n, c.final_max_tension_n
         );
         assert!(drift <= nodes * tol, "{}: drift {drift} N above {} N", c.name, nodes * tol);
+        assert!(c.start_up.is_none(), "{}: no onset, no start-up check", c.name);
+    }
+    // The case as shipped, its wind switched on at once at 1 s: every conductor's peak tension (in the
+    // first swing, by 5.9 s) is its start's overshoot, 33 % above the end value for the phases.
+    let text = std::fs::read_to_string(&path)
+        .unwrap()
+        .replace("snapshot_times_s = [1.0, 5.0, 20.0]", "snapshot_times_s = [1.0]");
+    let plan = line::plan(&line::parse(&text, "e.toml").unwrap(), "e.toml").unwrap();
+    let out = run_line(plan, None).unwrap();
+    for c in &out.summary.conductors {
+        let u = c.start_up.as_ref().expect("an onset at 1 s");
+        println!(
+            "{}: peak {:.1} N at {:.3} s, end {:.1} N, T1 {:.3} s",
+            c.name, c.peak_max_tension_n, c.peak_max_tension_time_s, c.final_max_tension_n, u.first_mode_period_s
+        );
+        assert!(u.assessed && u.flagged.len() == 1, "{}: {u:?}", c.name);
     }
 }

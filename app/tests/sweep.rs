@@ -293,10 +293,7 @@ fn bad_values_and_unstable_runs_are_rows_with_their_reason() {
     );
     let (status, why) = reason(4);
     assert_eq!(status, "invalid");
-    assert!(
-        why.contains("field `loads.wind.speed_m_per_s` = 500 is not allowed") && why.contains("[0, 100]"),
-        "{why}"
-    );
+    assert!(why.contains("field `loads.wind.speed_m_per_s` = 500 is not allowed") && why.contains("[0, 100]"), "{why}");
     assert_eq!(rows[4]["final_time_s"], "");
     let (_, why) = reason(8);
     assert!(why.contains("field `loads.wind.speed_m_per_s` = fast is not allowed: expected a number"), "{why}");
@@ -483,7 +480,8 @@ fn a_wind_sweep_from_still_air_flags_the_start_up_peaks() {
     assert!(o.status.success() && !text(&o).contains("warning"), "{}", text(&o));
     for r in table(&e.join("sweep.csv")) {
         assert_eq!(r["start_up_peak"], "");
-        let (peak, end): (f64, f64) = (r["peak_max_tension_n"].parse().unwrap(), r["final_max_tension_n"].parse().unwrap());
+        let (peak, end): (f64, f64) =
+            (r["peak_max_tension_n"].parse().unwrap(), r["final_max_tension_n"].parse().unwrap());
         assert!((peak - end).abs() < 1e-9 * end, "{peak} vs {end}");
     }
     std::fs::remove_dir_all(&d).unwrap();

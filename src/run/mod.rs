@@ -259,7 +259,7 @@ pub fn run_observed<'o>(
                 peaks: p.clone(),
             })
             .collect(),
-        start_up: start_up::check(&plan, &solver, &start_up_peaks),
+        start_up: start_up::check(&plan, &solver, plan.initial_equilibrium.is_some(), &start_up_peaks),
         phases: peaks.phases.clone(),
         events: timeline.log.iter().map(|(t, w)| EventRecord { time_s: *t, what: w.clone() }).collect(),
         instability: match &ending {

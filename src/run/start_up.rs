@@ -1,4 +1,4 @@
-//! The start-up check of a single-conductor run ([`crate::output::start_up`] states the rule): the wind's
+//! The start-up check of a single-conductor run or of a line's conductor ([`crate::output::start_up`] states the rule): the wind's
 //! onset from the plan, the first mode's period from the state at the end, the peaks from the run.
 
 use crate::events::Action;
@@ -8,11 +8,13 @@ use crate::scheme::Explicit;
 
 /// The wind's onset in a plan: `(t_on, what, R, index of the onset's event)` (`None` for the index: the
 /// wind acts from `t = 0` on a shape that is not its equilibrium); `None` when the wind is never raised.
-pub fn wind_onset(plan: &Plan) -> Option<(f64, String, f64, Option<usize>)> {
+/// `from_equilibrium`: the run starts from the static equilibrium of its loads at `t = 0` (a line's
+/// conductor: the line's).
+pub fn wind_onset(plan: &Plan, from_equilibrium: bool) -> Option<(f64, String, f64, Option<usize>)> {
     let loads = plan.solver.loads();
     loads.wind?;
     let mut scale = loads.wind_scale;
-    if scale > 0.0 && plan.initial_equilibrium.is_none() {
+    if scale > 0.0 && !from_equilibrium {
         return Some((0.0, "wind on from t = 0 on a shape that is not its equilibrium".into(), 0.0, None));
     }
     for (k, e) in plan.events.iter().enumerate() {
@@ -34,10 +36,16 @@ pub fn wind_onset(plan: &Plan) -> Option<(f64, String, f64, Option<usize>)> {
     None
 }
 
-/// The check after a run: `solver` at the end (forces evaluated), `peaks` as
-/// [`StartUp::check`] takes them. `None` without an onset or without a positive tension at the end.
-pub fn check(plan: &Plan, solver: &Explicit, peaks: &[(String, f64, f64, f64)]) -> Option<StartUp> {
-    let (onset_s, what, ramp_s, index) = wind_onset(plan)?;
+/// The check after a run: `solver` at the end (forces evaluated), `from_equilibrium` as for
+/// [`wind_onset`], `peaks` as [`StartUp::check`] takes them. `None` without an onset or without a
+/// positive tension at the end.
+pub fn check(
+    plan: &Plan,
+    solver: &Explicit,
+    from_equilibrium: bool,
+    peaks: &[(String, f64, f64, f64)],
+) -> Option<StartUp> {
+    let (onset_s, what, ramp_s, index) = wind_onset(plan, from_equilibrium)?;
     let w = solver.wire();
     let n = w.segments();
     let spans: Vec<(usize, usize)> = if plan.spans.is_empty() { vec![(0, n)] } else { plan.spans.clone() };

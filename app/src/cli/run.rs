@@ -212,13 +212,21 @@ fn print_line_summary(s: &ohl::run::line::LineSummary, out: &std::path::Path) {
     out!("{}: {} at t = {:.4} s after {} steps of {:.4e} s", s.name, s.status, s.final_time_s, s.steps, s.dt_s);
     for c in &s.conductors {
         out!(
-            "  {} ({}): peak tension {:.1} N at {:.3} s, final {:.1} N",
+            "  {} ({}): peak tension {:.1} N at {:.3} s, final {:.1} N{}",
             c.name,
             c.role,
             c.peak_max_tension_n,
             c.peak_max_tension_time_s,
-            c.final_max_tension_n
+            c.final_max_tension_n,
+            match &c.start_up {
+                Some(u) if !u.flagged.is_empty() => " [start-up overshoot]",
+                _ => "",
+            }
         );
+        // A peak that comes from the start (ohl::output::start_up) is no design value: said on stderr.
+        for w in c.start_up.as_ref().map(|u| u.describe()).unwrap_or_default() {
+            err!("warning: {}: {w}", c.name);
+        }
     }
     // A distance, or why there is none (a conductor broken in every segment).
     let metres = |x: Option<f64>| x.map_or_else(|| "none (no segment left)".to_string(), |x| format!("{x:.3} m"));

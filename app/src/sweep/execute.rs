@@ -100,10 +100,13 @@ pub fn run_sweep(
     let table_path = opts.out.join(format!("{stem}.csv"));
     let fields: Vec<String> = sweep.spec.fields().map(|f| f.to_string()).collect();
     let results = sweep.result_columns();
-    let start_up_column = results.iter().position(|c| c == "start_up_peak");
+    // `start_up_peak`, or a line's `NAME_start_up_peak` per conductor.
+    let start_up_columns: Vec<usize> =
+        (results.iter().enumerate()).filter(|(_, c)| c.ends_with("start_up_peak")).map(|(k, _)| k).collect();
     let start_up_cases = (rows.iter())
         .filter(|r| {
-            start_up_column.is_some_and(|k| r.results.as_ref().and_then(|c| c.get(k)).is_some_and(|c| c == "yes"))
+            let cells = r.results.as_deref().unwrap_or_default();
+            start_up_columns.iter().any(|&k| cells.get(k).is_some_and(|c| c == "yes"))
         })
         .map(|r| r.case)
         .collect();

@@ -93,7 +93,12 @@ pub const RESULT_COLUMNS: [&str; 24] = [
 /// support's largest force) comes from the wind's onset, `no` when none does, `not_assessed` when events
 /// after the onset change the loads, empty when the wind is never raised.
 pub fn start_up_cell(s: &Summary) -> &'static str {
-    match &s.start_up {
+    start_up_word(s.start_up.as_ref())
+}
+
+/// The `start_up_peak` word of a start-up check ([`start_up_cell`]).
+pub fn start_up_word(u: Option<&ohl::output::start_up::StartUp>) -> &'static str {
+    match u {
         None => "",
         Some(u) if !u.assessed => "not_assessed",
         Some(u) if u.flagged.is_empty() => "no",
@@ -176,7 +181,7 @@ pub fn result_cells(s: &Summary) -> Vec<String> {
 }
 
 /// A line's quantities per conductor, each column `NAME_QUANTITY` ([`line_columns`]).
-pub const LINE_CONDUCTOR_COLUMNS: [&str; 12] = [
+pub const LINE_CONDUCTOR_COLUMNS: [&str; 13] = [
     "peak_max_tension_n",
     "peak_max_tension_time_s",
     "peak_mid_dx1_m",
@@ -189,6 +194,7 @@ pub const LINE_CONDUCTOR_COLUMNS: [&str; 12] = [
     "final_mid_dx1_m",
     "final_mid_dx2_m",
     "final_mid_dx3_m",
+    "start_up_peak",
 ];
 
 /// The result columns of a line whose conductors (a bundle's sub-conductors each: `A.1`, `A.2`) are
@@ -230,6 +236,7 @@ pub fn line_result_cells(s: &LineSummary, conductors: &[String]) -> Vec<String> 
                     cells.extend([n(p[k].value_m), n(p[k].time_s)]);
                 }
                 cells.extend([n(c.final_max_tension_n), n(d[0]), n(d[1]), n(d[2])]);
+                cells.push(start_up_word(c.start_up.as_ref()).into());
             }
             None => cells.extend(LINE_CONDUCTOR_COLUMNS.map(|_| String::new())),
         }
