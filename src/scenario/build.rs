@@ -320,7 +320,7 @@ pub fn build(s: &Scenario) -> Result<Plan, Vec<Problem>> {
         uniform_load_n_per_m: s.loads.uniform_load_n_per_m,
         wind,
         // A wind ramp `[loads.wind] ramp_s` starts from still air: the multiplier is 0 at `t = 0` (and in the
-        // equilibrium solved there) and a `wind` event at `t = 0` ramps it up (below).
+        // equilibrium solved there) and a `wind` event at `t = 0` ramps it up to `initial_scale` (below; none for 0).
         wind_scale: s.loads.wind.as_ref().map_or(1.0, |w| if w.ramp_s > 0.0 { 0.0 } else { w.initial_scale }),
         wind_gate: WindGate::Always,
     };
@@ -354,7 +354,7 @@ pub fn build(s: &Scenario) -> Result<Plan, Vec<Problem>> {
     let (a, b) = (wire.position(0), wire.position(n));
     let mut events: Vec<Event> = s.events.iter().flat_map(|e| events_of(e, n, &spans, &wire, &support_node)).collect();
     events.sort_by(|p, q| p.time_s.total_cmp(&q.time_s));
-    if let Some(w) = s.loads.wind.as_ref().filter(|w| w.ramp_s > 0.0) {
+    if let Some(w) = s.loads.wind.as_ref().filter(|w| w.ramp_s > 0.0 && w.initial_scale > 0.0) {
         let ramp = Action::Wind { scale: w.initial_scale, gate: WindGate::Always, ramp_s: w.ramp_s };
         events.insert(0, Event { time_s: 0.0, action: ramp });
     }
