@@ -524,3 +524,60 @@ fn a_stiff_spacer_sets_the_lines_step() {
     println!("{} steps to t = {} s", o.summary.steps, o.summary.final_time_s);
     assert!((o.summary.final_time_s - 3.0).abs() < 1e-9, "{}", o.summary.final_time_s);
 }
+
+/// Issue 23: a line started from its static equilibrium with the wind on (`[initial] shape =
+/// "equilibrium"`, `[loads.wind] initial_scale = 1`) stays at rest: the line's static solve
+/// (`ohl::statics::solve_line`) includes each conductor's wind at its initial scale with the kernel's own
+/// aerodynamic element. Case (e) of `cases/` (three Drake phases and an earth wire on shared towers, 30 m/s
+/// across) with the wind on from the start; its event at 1 s (scale 1) then changes nothing. Each
+/// conductor's peak tension from 1 s on and its tension at the end lie within `nodes tol` of the tension
+/// at the start, `tol` the static solve's force tolerance (the bound of `tests/equilibrium.rs`: the
+/// residual forces of all nodes added up).
+#[test]
+fn a_line_from_its_equilibrium_under_a_steady_wind_stays_at_rest() {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("cases/e_three_phases_wind.toml");
+    let text = std::fs::read_to_string(&path)
+        .unwrap()
+        .replace("initial_scale = 0.0", "initial_scale = 1.0")
+        .replace("end_time_s = 40.0", "end_time_s = 4.0")
+        .replace("snapshot_times_s = [1.0, 5.0, 20.0]", "snapshot_times_s = [1.0]");
+    let sc = line::parse(&text, "e_wind_on.toml").unwrap();
+    let plan = line::plan(&sc, "e_wind_on.toml").unwrap();
+    let tol = plan.initial_equilibrium.as_ref().expect("solved").tolerance_n;
+    let starts: Vec<(f64, f64)> = plan
+        .line
+        .conductors()
+        .iter()
+        .map(|c| {
+            let mut c = c.clone();
+            c.evaluate_forces();
+            (c.max_tension_n(), c.wire().nodes() as f64)
+        })
+        .collect();
+    let nodes: f64 = starts.iter().map(|s| s.1).sum();
+    let out = run_line(plan, None).unwrap();
+    for (c, &(t0, _)) in out.summary.conductors.iter().zip(&starts) {
+        let drift = (c.peak_max_tension_n - t0).abs().max((c.final_max_tension_n - t0).abs());
+        println!(
+            "{}: T0 = {t0:.4} N, peak {:.4} N, end {:.4} N, drift {drift:.3e} N",
+            c.name, c.peak_max_tension_n, c.final_max_tension_n
+        );
+        assert!(drift <= nodes * tol, "{}: drift {drift} N above {} N", c.name, nodes * tol);
+        assert!(c.start_up.is_none(), "{}: no onset, no start-up check", c.name);
+    }
+    // The case as shipped, its wind switched on at once at 1 s: every conductor's peak tension (in the
+    // first swing, by 5.9 s) is its start's overshoot, 33 % above the end value for the phases.
+    let text = std::fs::read_to_string(&path)
+        .unwrap()
+        .replace("snapshot_times_s = [1.0, 5.0, 20.0]", "snapshot_times_s = [1.0]");
+    let plan = line::plan(&line::parse(&text, "e.toml").unwrap(), "e.toml").unwrap();
+    let out = run_line(plan, None).unwrap();
+    for c in &out.summary.conductors {
+        let u = c.start_up.as_ref().expect("an onset at 1 s");
+        println!(
+            "{}: peak {:.1} N at {:.3} s, end {:.1} N, T1 {:.3} s",
+            c.name, c.peak_max_tension_n, c.peak_max_tension_time_s, c.final_max_tension_n, u.first_mode_period_s
+        );
+        assert!(u.assessed && u.flagged.len() == 1, "{}: {u:?}", c.name);
+    }
+}

@@ -162,7 +162,11 @@ const CASES: &[(&str, &[&str])] = &[
     ("event_action_unknown", &["line 19, column 10", "unknown variant `melt`"]),
     ("event_field_unknown", &["line 21", "unknown field `gate`"]),
     ("nesting_too_deep", &["line 2", "max recursion depth"]),
-    ("wind_speed_absurd", &["field `loads.wind.speed_m_per_s` = 1000000", "[0.01, 100] m/s", "km/h"]),
+    ("wind_speed_absurd", &["field `loads.wind.speed_m_per_s` = 1000000", "[0, 100] m/s", "km/h", "0 is still air"]),
+    // Issue 23: 0 is still air, but a speed between 0 and 0.01 m/s would overflow the damping (2.6).
+    ("wind_speed_tiny", &["field `loads.wind.speed_m_per_s` = 0.001", "must be 0 (still air) or at least 0.01 m/s"]),
+    ("wind_ramp_negative", &["field `loads.wind.ramp_s` = -5", "must be a finite number >= 0, at most 1e8 s"]),
+    ("wind_event_ramp_nan", &["field `events[0].ramp_s` = NaN", "at most 1e8 s"]),
     ("probe_named_mid", &["field `output.probes[0].name` = \"mid\"", "letters, digits and _ only"]),
     ("event_time_negative", &["field `events[0].time_s` = -1", "[0, end time]"]),
     ("break_at_the_support", &["field `events[0].at_fraction` = 1", "(0, 1)"]),

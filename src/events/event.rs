@@ -23,12 +23,15 @@ pub enum Action {
         /// change of linear density `delta rho0` [kg/m]
         delta_kg_per_m: f64,
     },
-    /// Set the wind multiplier to `scale` [-] and its gate; ends a gust.
+    /// Set the wind multiplier to `scale` [-] (at once, `ramp_s = 0`, or as a linear ramp from its current
+    /// value over `ramp_s` [s], [`super::WindRamp`]) and its gate; ends a gust or an earlier ramp.
     Wind {
         /// multiplier on the wind load [-]
         scale: f64,
         /// where the wind acts
         gate: WindGate,
+        /// ramp duration [s] (0: a step)
+        ramp_s: f64,
     },
     /// Start a gust `amplitude |sin(pi (t - t_event) / period_s)|` (law (4.5) with a physical period).
     Gust {

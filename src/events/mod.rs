@@ -9,7 +9,8 @@
 //! - `break`: [`Wire::break_segment`](crate::wire::Wire::break_segment), the break (3.5); both parts
 //!   continue as free-ended wires;
 //! - `ice`: [`Wire::add_linear_density`](crate::wire::Wire::add_linear_density) over the span range;
-//! - `wind`: a constant multiplier on the wind load and its gate (ends a gust);
+//! - `wind`: a multiplier on the wind load and its gate, at once or as a linear ramp from its current
+//!   value ([`wind_ramp`]; ends a gust);
 //! - `gust`: the law (4.5) with a physical period ([`gust`]);
 //! - `temperature`: a step or a linear ramp ([`ramp`]) of the segment temperatures; the stress-free
 //!   lengths follow by (5.5) through [`Wire::update_rest_lengths`](crate::wire::Wire::update_rest_lengths);
@@ -24,6 +25,7 @@ pub mod event;
 pub mod gust;
 pub mod heating;
 pub mod ramp;
+pub mod wind_ramp;
 
 use crate::scheme::{Explicit, Ground};
 
@@ -32,6 +34,7 @@ pub use event::{Action, Event};
 pub use gust::Gust;
 pub use heating::Heating;
 pub use ramp::Ramp;
+pub use wind_ramp::WindRamp;
 
 /// The timeline and the processes running.
 #[derive(Clone, Debug)]
@@ -40,6 +43,7 @@ pub struct EventState {
     next: usize,
     ground: Option<Ground>,
     gust: Option<Gust>,
+    wind_ramp: Option<WindRamp>,
     ramps: Vec<Ramp>,
     conduction: Option<Conduction>,
     heating: Option<Heating>,
@@ -58,6 +62,7 @@ impl EventState {
             next: 0,
             ground,
             gust: None,
+            wind_ramp: None,
             ramps: Vec::new(),
             conduction: None,
             heating,
@@ -122,13 +127,26 @@ impl EventState {
                 solver.wire_mut().set_constraint(node, crate::wire::Constraint::Free);
                 format!("conductor released at node {node}")
             }
-            Action::Wind { scale, gate } => {
+            Action::Wind { scale, gate, ramp_s } => {
+                // The multiplier now: a gust's value at this time (the last step set it at the step's start).
+                let from = match &self.gust {
+                    Some(g) => g.scale(t),
+                    None => solver.loads().wind_scale,
+                };
                 self.gust = None;
-                solver.loads_mut().wind_scale = scale;
+                self.wind_ramp = None;
                 solver.loads_mut().wind_gate = gate;
-                format!("wind multiplier {scale}, gate {gate:?}")
+                if ramp_s > 0.0 {
+                    self.wind_ramp = Some(WindRamp { start_s: t, duration_s: ramp_s, from, to: scale });
+                    solver.loads_mut().wind_scale = from;
+                    format!("wind multiplier {from} to {scale} over a ramp of {ramp_s} s, gate {gate:?}")
+                } else {
+                    solver.loads_mut().wind_scale = scale;
+                    format!("wind multiplier {scale}, gate {gate:?}")
+                }
             }
             Action::Gust { period_s, amplitude, gate } => {
+                self.wind_ramp = None;
                 self.gust = Some(Gust { start_s: at_s, period_s, amplitude });
                 solver.loads_mut().wind_gate = gate;
                 format!("gust (4.5): period {period_s} s, amplitude {amplitude}, gate {gate:?}")
@@ -172,14 +190,21 @@ impl EventState {
         }
     }
 
-    /// Before a step from time `t` [s]: the gust multiplier, the temperature ramps and the `[thermal]`
-    /// temperature at `t`.
+    /// Before a step from time `t` [s]: the gust multiplier or the wind ramp's, the temperature ramps and
+    /// the `[thermal]` temperature at `t` (each once per step).
     pub fn before_step(&mut self, solver: &mut Explicit, t: f64) {
         if let Some(h) = &mut self.heating {
             h.apply(solver.wire_mut(), t);
         }
         if let Some(g) = &self.gust {
             solver.loads_mut().wind_scale = g.scale(t);
+        }
+        if let Some(r) = &self.wind_ramp {
+            let (scale, done) = r.scale(t);
+            solver.loads_mut().wind_scale = scale;
+            if done {
+                self.wind_ramp = None;
+            }
         }
         if !self.ramps.is_empty() {
             let w = solver.wire_mut();

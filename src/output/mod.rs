@@ -7,6 +7,7 @@
 //! - [`recorder`]: the same samples and shapes in memory;
 //! - [`summary`]: `summary.json`, written whole at the end;
 //! - [`spans`]: a span's sag, horizontal tension, largest tension and clearance at one level;
+//! - [`start_up`]: which peaks come from the start (a wind's onset) rather than from the design load;
 //!
 //! with their building blocks: [`clock`] (when an output acts, without moving the clock), [`probe`]
 //! (Lagrangian points) and [`rows`] (CSV files that only ever hold whole rows).
@@ -18,6 +19,7 @@ pub mod recorder;
 pub mod rows;
 pub mod snapshots;
 pub mod spans;
+pub mod start_up;
 pub mod summary;
 pub mod timeseries;
 

@@ -141,6 +141,10 @@ pub struct Summary {
     pub probes: Vec<ProbeSummary>,
     /// the spans of a section (empty for one span)
     pub spans: Vec<SpanSummary>,
+    /// which peaks come from the start: present when the wind is raised during the run or acts from
+    /// `t = 0` on a shape that is not its equilibrium ([`super::start_up`])
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub start_up: Option<super::start_up::StartUp>,
     /// the phases between events, each with its own peaks (every time level)
     pub phases: Vec<Phase>,
     /// the events applied

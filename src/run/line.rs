@@ -53,6 +53,10 @@ pub struct ConductorSummary {
     pub final_midspan_displacement_m: [f64; 3],
     /// largest-magnitude mid-span displacement per component over the run [m]
     pub peak_midspan_displacement_m: [Peak; 3],
+    /// whether its peak tension comes from the wind's onset ([`crate::output::start_up`]): present when
+    /// the wind is raised during the run or acts from `t = 0` on a line not started from its equilibrium
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub start_up: Option<crate::output::start_up::StartUp>,
 }
 
 /// The least clearance of a pair of conductor groups.
@@ -553,6 +557,12 @@ pub fn run_line_observed<'o>(
                     final_max_tension_n: s.max_tension_n(),
                     final_midspan_displacement_m: outputs[c].mid.displacement(s.wire()),
                     peak_midspan_displacement_m: run.probes[0],
+                    start_up: super::start_up::check(
+                        &plan.plans[c],
+                        s,
+                        plan.initial_equilibrium.is_some(),
+                        &[("max_tension".into(), run.max_tension.value_n, run.max_tension.time_s, s.max_tension_n())],
+                    ),
                 }
             })
             .collect(),

@@ -12,6 +12,7 @@
 
 pub mod line;
 pub mod settle;
+pub mod start_up;
 
 use std::path::{Path, PathBuf};
 use std::time::Instant;
@@ -183,6 +184,18 @@ pub fn run_observed<'o>(
     solver.support_forces(&mut forces);
     let n = solver.wire().segments();
     let run_peaks = &peaks.run;
+    // The peaks the start-up check looks at, with their values at the end.
+    let start_up_peaks: Vec<(String, f64, f64, f64)> = std::iter::once((
+        "max_tension".to_string(),
+        run_peaks.max_tension.value_n,
+        run_peaks.max_tension.time_s,
+        last.max_tension_n,
+    ))
+    .chain(supports.iter().zip(&forces).zip(&run_peaks.supports).map(|(((node, _), (_, f)), p)| {
+        let end = f.iter().map(|c| c * c).sum::<f64>().sqrt();
+        (format!("support {node}"), p.magnitude.value_n, p.magnitude.time_s, end)
+    }))
+    .collect();
     let summary = Summary {
         name: plan.name.clone(),
         status: ending.status().into(),
@@ -249,6 +262,7 @@ pub fn run_observed<'o>(
                 }
             })
             .collect(),
+        start_up: start_up::check(&plan, &solver, plan.initial_equilibrium.is_some(), &start_up_peaks),
         phases: peaks.phases.clone(),
         events: timeline.log.iter().map(|(t, w)| EventRecord { time_s: *t, what: w.clone() }).collect(),
         instability: match &ending {

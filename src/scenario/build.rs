@@ -226,7 +226,7 @@ fn events_of(e: &EventSpec, n: usize, spans: &[(usize, usize)], wire: &Wire, sup
             }
         }
         EventSpec::Release { support, .. } => Action::Release { node: support_node.get(support).copied().unwrap_or(0) },
-        EventSpec::Wind { scale, gate: g, .. } => Action::Wind { scale, gate: gate(g) },
+        EventSpec::Wind { scale, gate: g, ramp_s, .. } => Action::Wind { scale, gate: gate(g), ramp_s },
         EventSpec::Gust { period_s, amplitude, gate: g, .. } => Action::Gust { period_s, amplitude, gate: gate(g) },
         EventSpec::Temperature { temperature_k, range, ramp_s, .. } => {
             Action::Temperature { segments: segment_range(range, n), temperature_k, ramp_s }
@@ -295,7 +295,9 @@ pub fn build(s: &Scenario) -> Result<Plan, Vec<Problem>> {
     let wind = s.loads.wind.as_ref().map(|w| {
         let norm: f64 = w.direction.iter().map(|v| v * v).sum::<f64>().sqrt();
         let direction = w.direction.map(|v| v / norm);
-        let mu_over_u = s.numerics.mu / w.speed_m_per_s;
+        // Still air (`U = 0`): no drag and no aerodynamic damping (2.6), whose `mu / U` is then taken as 0
+        // (the load it multiplies is 0 anyway; validation refuses 0 < U < 0.01, where `mu / U` overflows).
+        let mu_over_u = if w.speed_m_per_s > 0.0 { s.numerics.mu / w.speed_m_per_s } else { 0.0 };
         match w.law {
             WindLawSpec::UniformNormal => WindLoad::UniformNormal(UniformNormal {
                 direction,
@@ -317,7 +319,9 @@ pub fn build(s: &Scenario) -> Result<Plan, Vec<Problem>> {
         gravity_m_per_s2: s.loads.gravity_m_per_s2,
         uniform_load_n_per_m: s.loads.uniform_load_n_per_m,
         wind,
-        wind_scale: s.loads.wind.as_ref().map_or(1.0, |w| w.initial_scale),
+        // A wind ramp `[loads.wind] ramp_s` starts from still air: the multiplier is 0 at `t = 0` (and in the
+        // equilibrium solved there) and a `wind` event at `t = 0` ramps it up to `initial_scale` (below; none for 0).
+        wind_scale: s.loads.wind.as_ref().map_or(1.0, |w| if w.ramp_s > 0.0 { 0.0 } else { w.initial_scale }),
         wind_gate: WindGate::Always,
     };
     let mut warnings = super::warnings::warnings(s);
@@ -350,6 +354,10 @@ pub fn build(s: &Scenario) -> Result<Plan, Vec<Problem>> {
     let (a, b) = (wire.position(0), wire.position(n));
     let mut events: Vec<Event> = s.events.iter().flat_map(|e| events_of(e, n, &spans, &wire, &support_node)).collect();
     events.sort_by(|p, q| p.time_s.total_cmp(&q.time_s));
+    if let Some(w) = s.loads.wind.as_ref().filter(|w| w.ramp_s > 0.0 && w.initial_scale > 0.0) {
+        let ramp = Action::Wind { scale: w.initial_scale, gate: WindGate::Always, ramp_s: w.ramp_s };
+        events.insert(0, Event { time_s: 0.0, action: ramp });
+    }
     // The same stable sort keeps the heat_conduction events in the order `events` has them.
     let mut heat_conduction: Vec<(f64, usize)> = (s.events.iter().enumerate())
         .filter(|(_, e)| matches!(e, EventSpec::HeatConduction { .. }))

@@ -158,6 +158,10 @@ pub enum EventSpec {
         /// where it acts; default `"always"`
         #[serde(default)]
         gate: GateSpec,
+        /// ramp time [s], in [0, 1e8]: the multiplier goes linearly from its value at `time_s` to `scale`
+        /// over `ramp_s`; default 0, a step
+        #[serde(default)]
+        ramp_s: f64,
     },
     /// Start a gust, law (4.5) written with its physical period `P` (docs/paper_notes.md: the paper counts time in
     /// integration steps): the wind load is multiplied by `amplitude |sin(pi (t - time_s) / P)|`.

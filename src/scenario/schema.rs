@@ -323,9 +323,9 @@ pub struct WindSpec {
     /// (norm at least 1e-12); default `[1, 0, 0]` (the paper's `x1`)
     #[serde(default = "default_wind_direction", deserialize_with = "three")]
     pub direction: [f64; 3],
-    /// undisturbed wind speed `U` [m/s], in [0.01, 100] (design wind speeds are below about 70 m/s; the
-    /// strongest gust measured, 113 m/s, was not a steady wind); scales the damping (2.6) and, for the
-    /// aerodynamic law, `q`
+    /// undisturbed wind speed `U` [m/s], 0 (still air: no drag and no aerodynamic damping, so that a sweep
+    /// can start there) or in [0.01, 100] (design wind speeds are below about 70 m/s; the strongest gust
+    /// measured, 113 m/s, was not a steady wind); scales the damping (2.6) and, for the aerodynamic law, `q`
     pub speed_m_per_s: f64,
     /// air density `rho_air` [kg/m^3], in (0, 2] (1.225 at sea level, ISA; the densest cold air is about
     /// 1.5: a value above 2 is another unit, e.g. g/m^3); default 1.225 (docs/paper_notes.md, ISA sea level)
@@ -346,6 +346,12 @@ pub struct WindSpec {
     /// change it during the run.
     #[serde(default = "default_initial_scale")]
     pub initial_scale: f64,
+    /// ramp time `R` [s], in [0, 1e8]: the multiplier goes linearly from 0 at `t = 0` to `initial_scale` at
+    /// `t = R` ([`crate::events::WindRamp`]); default 0, a step (the wind is on at full scale from `t = 0`).
+    /// A ramp of several periods of the span's first mode keeps the dynamic amplification near 1
+    /// (docs/scenario.md, "Design loads without start-up overshoot").
+    #[serde(default)]
+    pub ramp_s: f64,
 }
 
 fn default_initial_scale() -> f64 {

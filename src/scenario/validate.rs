@@ -106,9 +106,10 @@ pub const MAX_COORDINATE_M: f64 = 1.0e5;
 /// Largest wind speed accepted [m/s]: design wind speeds are below about 70 m/s.
 pub const MAX_WIND_SPEED_M_PER_S: f64 = 100.0;
 
-/// Least wind speed accepted [m/s]. The damping (2.6) divides by `U`: `(1 - mu V_n / U)^2` overflows for
-/// a vanishing `U` while `q ~ U^2` underflows, giving `inf * 0`. From 0.01 m/s, with node speeds below the
-/// 1e7 m/s speed bound, `mu V_n / U < 1e9`: no overflow. Still air is a scenario without wind.
+/// Least wind speed accepted above 0 [m/s]. The damping (2.6) divides by `U`: `(1 - mu V_n / U)^2`
+/// overflows for a vanishing `U` while `q ~ U^2` underflows, giving `inf * 0`. From 0.01 m/s, with node
+/// speeds below the 1e7 m/s speed bound, `mu V_n / U < 1e9`: no overflow. `U = 0` itself is still air (no
+/// drag, no damping from it: the build takes `mu / U` as 0), so that a sweep over `U` can start there.
 pub const MIN_WIND_SPEED_M_PER_S: f64 = 0.01;
 
 /// Largest air density accepted [kg/m^3]: 1.225 at sea level, about 1.5 in the coldest air.
@@ -371,7 +372,17 @@ pub(crate) fn check(s: &Scenario) -> (Vec<Problem>, Derived) {
                 }
             }
         }
-        c.range("loads.wind.speed_m_per_s", w.speed_m_per_s, &WIND_SPEED);
+        if c.range("loads.wind.speed_m_per_s", w.speed_m_per_s, &WIND_SPEED)
+            && w.speed_m_per_s > 0.0
+            && w.speed_m_per_s < MIN_WIND_SPEED_M_PER_S
+        {
+            c.fail_number(
+                "loads.wind.speed_m_per_s",
+                w.speed_m_per_s,
+                "must be 0 (still air) or at least 0.01 m/s: the damping (2.6) divides by the speed",
+            );
+        }
+        c.range("loads.wind.ramp_s", w.ramp_s, &Allowed::closed(0.0, MAX_TIME_S, "s").at_most());
         c.range("loads.wind.air_density_kg_per_m3", w.air_density_kg_per_m3, &AIR_DENSITY);
         c.range("loads.wind.normal_coefficient", w.normal_coefficient, &COEFFICIENT_ALLOWED);
         c.range("loads.wind.tangential_coefficient", w.tangential_coefficient, &COEFFICIENT_ALLOWED);
@@ -559,10 +570,10 @@ pub(crate) fn check(s: &Scenario) -> (Vec<Problem>, Derived) {
 const CONDUCTOR_DENSITY: Allowed =
     LINEAR_DENSITY_KG_PER_M.finite().note(" (bare conductors 0.1 to 5 kg/m, heavily iced ones up to about 30 kg/m)");
 const EA_ALLOWED: Allowed = AXIAL_STIFFNESS_N.finite().note(" (section 4: 7.9e5 N; conductors are 1e6 to 1e9 N)");
-/// Wind speed [m/s], between [`MIN_WIND_SPEED_M_PER_S`] and [`MAX_WIND_SPEED_M_PER_S`].
-const WIND_SPEED: Allowed = Allowed::closed(MIN_WIND_SPEED_M_PER_S, MAX_WIND_SPEED_M_PER_S, "m/s").note(
-    " (design wind speeds are below about 70 m/s; check the unit: m/s, not km/h; for still air leave out [loads.wind])",
-);
+/// Wind speed [m/s], from 0 (still air) to [`MAX_WIND_SPEED_M_PER_S`]; above 0 at least
+/// [`MIN_WIND_SPEED_M_PER_S`] (a check of its own).
+const WIND_SPEED: Allowed = Allowed::closed(0.0, MAX_WIND_SPEED_M_PER_S, "m/s")
+    .note(" (design wind speeds are below about 70 m/s; check the unit: m/s, not km/h; 0 is still air)");
 /// Air density [kg/m^3], up to [`MAX_AIR_DENSITY_KG_PER_M3`].
 const AIR_DENSITY: Allowed = Allowed::open_closed(0.0, MAX_AIR_DENSITY_KG_PER_M3, "kg/m^3")
     .at_most()
@@ -953,8 +964,9 @@ fn check_ground_and_events(
                     released.push((support, k));
                 }
             }
-            EventSpec::Wind { scale, .. } => {
+            EventSpec::Wind { scale, ramp_s, .. } => {
                 c.range(&f("scale"), scale, &SCALE_ALLOWED);
+                c.range(&f("ramp_s"), ramp_s, &Allowed::closed(0.0, MAX_TIME_S, "s").at_most());
             }
             EventSpec::Gust { period_s, amplitude, .. } => {
                 if c.time(&f("period_s"), period_s)

@@ -110,6 +110,10 @@ pub fn main(args: RunArgs) -> ExitCode {
     if !quiet {
         print_summary(&outcome.summary);
     }
+    // A peak that comes from the start (ohl::output::start_up) is no design value: said on stderr.
+    for w in s_start_up_lines(&outcome.summary) {
+        err!("warning: {}: {w}", path.display());
+    }
     if static_after {
         let solved = ohl::statics::residual::residual(&outcome.solver, &spans);
         let r = match solved {
@@ -155,6 +159,16 @@ fn print_summary(s: &ohl::output::Summary) {
         );
         out!("  mid-span displacement [m]: x1 = {:.6}, x2 = {:.6}, x3 = {:.6}", d[0], d[1], d[2]);
         out!("  max tension: {:.2} N; throughput {:.3e} node-steps/s", s.final_max_tension_n, s.node_steps_per_second);
+        out!(
+            "  peak tension: {:.2} N at {:.3} s (peaks from {} s){}",
+            s.peak_max_tension_n,
+            s.peak_max_tension_time_s,
+            s.peaks_from_s,
+            match &s.start_up {
+                Some(u) if !u.flagged.is_empty() => " [start-up overshoot]",
+                _ => "",
+            }
+        );
         return;
     }
     out!("{}: {} at t = {:.4} s after {} steps of {:.4e} s", s.name, s.status, s.final_time_s, s.steps, s.dt_s);
@@ -360,13 +374,21 @@ fn print_line_summary(s: &ohl::run::line::LineSummary, out: &std::path::Path) {
     out!("{}: {} at t = {:.4} s after {} steps of {:.4e} s", s.name, s.status, s.final_time_s, s.steps, s.dt_s);
     for c in &s.conductors {
         out!(
-            "  {} ({}): peak tension {:.1} N at {:.3} s, final {:.1} N",
+            "  {} ({}): peak tension {:.1} N at {:.3} s, final {:.1} N{}",
             c.name,
             c.role,
             c.peak_max_tension_n,
             c.peak_max_tension_time_s,
-            c.final_max_tension_n
+            c.final_max_tension_n,
+            match &c.start_up {
+                Some(u) if !u.flagged.is_empty() => " [start-up overshoot]",
+                _ => "",
+            }
         );
+        // A peak that comes from the start (ohl::output::start_up) is no design value: said on stderr.
+        for w in c.start_up.as_ref().map(|u| u.describe()).unwrap_or_default() {
+            err!("warning: {}: {w}", c.name);
+        }
     }
     // A distance, or why there is none (a conductor broken in every segment).
     let metres = |x: Option<f64>| x.map_or_else(|| "none (no segment left)".to_string(), |x| format!("{x:.3} m"));
@@ -429,4 +451,9 @@ fn print_line_summary(s: &ohl::run::line::LineSummary, out: &std::path::Path) {
         );
     }
     out!("  throughput {:.3e} node-steps/s; written to {}", s.node_steps_per_second, out.display());
+}
+
+/// The start-up warnings of a summary (empty when no peak comes from the start).
+fn s_start_up_lines(s: &ohl::output::Summary) -> Vec<String> {
+    s.start_up.as_ref().map(|u| u.describe()).unwrap_or_default()
 }

@@ -144,6 +144,15 @@ fn main_run(a: RunArgs) -> ExitCode {
         );
         out!("  table: {}, manifest: {}", report.table.display(), report.manifest.display());
     }
+    if !report.start_up_cases.is_empty() {
+        let ids: Vec<String> = report.start_up_cases.iter().map(|c| c.to_string()).collect();
+        err!(
+            "warning: case(s) {} have a peak from the wind's onset (column start_up_peak = yes): the overshoot of \
+             the start, not a design value; start from the equilibrium under the wind or ramp it over several \
+             periods of the span's first mode (docs/sweeps.md)",
+            ids.join(", ")
+        );
+    }
     let failed = report.statuses.get(&Status::Failed).copied().unwrap_or(0);
     if failed > 0 {
         return fail(format!("{failed} case(s) failed: files could not be written (see the reason column)"), 1);

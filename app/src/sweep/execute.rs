@@ -42,6 +42,8 @@ pub struct Report {
     pub ran: usize,
     /// rows per status
     pub statuses: BTreeMap<Status, usize>,
+    /// the cases (ids) with a peak from the wind's onset (`start_up_peak` = `yes`)
+    pub start_up_cases: Vec<usize>,
     /// wall-clock time of running the cases [s]
     pub wall_time_s: f64,
     /// cases run per second of wall-clock time
@@ -98,6 +100,16 @@ pub fn run_sweep(
     let table_path = opts.out.join(format!("{stem}.csv"));
     let fields: Vec<String> = sweep.spec.fields().map(|f| f.to_string()).collect();
     let results = sweep.result_columns();
+    // `start_up_peak`, or a line's `NAME_start_up_peak` per conductor.
+    let start_up_columns: Vec<usize> =
+        (results.iter().enumerate()).filter(|(_, c)| c.ends_with("start_up_peak")).map(|(k, _)| k).collect();
+    let start_up_cases = (rows.iter())
+        .filter(|r| {
+            let cells = r.results.as_deref().unwrap_or_default();
+            start_up_columns.iter().any(|&k| cells.get(k).is_some_and(|c| c == "yes"))
+        })
+        .map(|r| r.case)
+        .collect();
     table::write(&table_path, &table::header(&fields, &results), rows.iter().map(|r| table::cells(r, results.len())))
         .map_err(write_err(&table_path))?;
     let cases_per_second = if wall_time_s > 0.0 { rows.len() as f64 / wall_time_s } else { 0.0 };
@@ -127,6 +139,7 @@ pub fn run_sweep(
         cases: sweep.spec.cases,
         ran: rows.len(),
         statuses,
+        start_up_cases,
         wall_time_s,
         cases_per_second,
         table: table_path,

@@ -2,7 +2,7 @@
 //!
 //! Columns: `case` (the id, from 0), one column per varied field named by its path (the value as written;
 //! empty where a cases file left the base value), `status`, `reason`, then the scalar results of the run's
-//! summary ([`RESULT_COLUMNS`], units in the names; for a line, [`line_columns`]: each conductor's peaks
+//! summary ([`RESULT_COLUMNS`], units in the names, the last `start_up_peak` ([`start_up_cell`]); for a line, [`line_columns`]: each conductor's peaks
 //! prefixed by its name, the least clearance and the largest tower load), `warnings`, and last the timings
 //! ([`TIMING_COLUMNS`],
 //! which differ from run to run; every other column is the same for the same case on any thread count,
@@ -62,7 +62,7 @@ impl Status {
 }
 
 /// The result columns, in order: the summary's scalar values ([`result_cells`]).
-pub const RESULT_COLUMNS: [&str; 23] = [
+pub const RESULT_COLUMNS: [&str; 24] = [
     "final_time_s",
     "steps",
     "dt_s",
@@ -86,7 +86,25 @@ pub const RESULT_COLUMNS: [&str; 23] = [
     "peak_support_force_time_s",
     "peak_support_force_support",
     "peak_temperature_k",
+    "start_up_peak",
 ];
+
+/// The `start_up_peak` cell ([`ohl::output::start_up`]): `yes` when a peak (the largest tension or a
+/// support's largest force) comes from the wind's onset, `no` when none does, `not_assessed` when events
+/// after the onset change the loads, empty when the wind is never raised.
+pub fn start_up_cell(s: &Summary) -> &'static str {
+    start_up_word(s.start_up.as_ref())
+}
+
+/// The `start_up_peak` word of a start-up check ([`start_up_cell`]).
+pub fn start_up_word(u: Option<&ohl::output::start_up::StartUp>) -> &'static str {
+    match u {
+        None => "",
+        Some(u) if !u.assessed => "not_assessed",
+        Some(u) if u.flagged.is_empty() => "no",
+        Some(_) => "yes",
+    }
+}
 
 /// The timing columns, last: time loop [s], its throughput [node-steps/s], and the whole case with its
 /// parse, validation, static solve and outputs [s].
@@ -156,13 +174,14 @@ pub fn result_cells(s: &Summary) -> Vec<String> {
         opt(support.map(|b| b.2)),
         support.map(|b| b.0.to_string()).unwrap_or_default(),
         opt(s.thermal.as_ref().map(|t| t.peak_temperature_k)),
+        start_up_cell(s).to_string(),
     ];
     debug_assert_eq!(cells.len(), RESULT_COLUMNS.len());
     cells
 }
 
 /// A line's quantities per conductor, each column `NAME_QUANTITY` ([`line_columns`]).
-pub const LINE_CONDUCTOR_COLUMNS: [&str; 12] = [
+pub const LINE_CONDUCTOR_COLUMNS: [&str; 13] = [
     "peak_max_tension_n",
     "peak_max_tension_time_s",
     "peak_mid_dx1_m",
@@ -175,6 +194,7 @@ pub const LINE_CONDUCTOR_COLUMNS: [&str; 12] = [
     "final_mid_dx1_m",
     "final_mid_dx2_m",
     "final_mid_dx3_m",
+    "start_up_peak",
 ];
 
 /// The result columns of a line whose conductors (a bundle's sub-conductors each: `A.1`, `A.2`) are
@@ -216,6 +236,7 @@ pub fn line_result_cells(s: &LineSummary, conductors: &[String]) -> Vec<String> 
                     cells.extend([n(p[k].value_m), n(p[k].time_s)]);
                 }
                 cells.extend([n(c.final_max_tension_n), n(d[0]), n(d[1]), n(d[2])]);
+                cells.push(start_up_word(c.start_up.as_ref()).into());
             }
             None => cells.extend(LINE_CONDUCTOR_COLUMNS.map(|_| String::new())),
         }
