@@ -9,8 +9,10 @@
 //! - `<case>_shapes.png/.svg`: the section (height `x3` against the distance along the line `x2`) at the
 //!   snapshot times, and the ground under it where the case has one;
 //! - `<case>_table.csv` and the printed table: per support, the longitudinal load at the start, its peak
-//!   (largest magnitude) and time, the residual static load and the ratio of peak to residual; per span
-//!   the jump of its mid-span point (highest rise above its starting height). The ratio is left empty
+//!   (largest magnitude, from `output.peaks_from_s` on, tracked every time step: `summary.json`) and
+//!   time, the residual static load, the ratio of peak to residual and the string's largest swing along
+//!   the line (every step too); per span the jump of its mid-span point (highest rise above its starting
+//!   height, from the samples of `timeseries.csv`). The ratio is left empty
 //!   (`-` in the printed table) where the support carries no residual longitudinal load: a residual below
 //!   [`NO_RESIDUAL`] of the peak is zero to the static solver's tolerance (a support that symmetry or a
 //!   break unloads), and the ratio would be rounding over rounding (it printed `4.7e15`, `inf`, `NaN`).
@@ -167,17 +169,17 @@ pub fn run_case(path: &Path, out: &Path) -> Result<CaseOutcome, CaseError> {
     for k in 0..n_sup {
         let f2 = col(&format!("support{k}_f2_n"));
         let f3 = col(&format!("support{k}_f3_n"));
-        let i = (0..f2.len()).max_by(|&a, &b| f2[a].abs().total_cmp(&f2[b].abs())).unwrap_or(0);
-        let swing = ts.get(&format!("support{k}_swing_along_deg"));
+        // The peaks are the run's, tracked every time step from `peaks_from_s` on (summary.json), not the
+        // largest of the samples in timeseries.csv, which miss a peak between two samples.
+        let peaks = o.summary.supports.get(k).map(|s| &s.peaks);
         supports.push(SupportRow {
             support: k,
             initial_n: f2.first().copied().unwrap_or(f64::NAN),
-            peak_n: f2.get(i).copied().unwrap_or(f64::NAN),
-            peak_time_s: t.get(i).copied().unwrap_or(f64::NAN),
+            peak_n: peaks.map_or(f64::NAN, |p| p.components[1].value_n),
+            peak_time_s: peaks.map_or(f64::NAN, |p| p.components[1].time_s),
             residual_n: residual.as_ref().map_or(f2.last().copied().unwrap_or(f64::NAN), |r| r.supports[k][1]),
             residual_vertical_n: residual.as_ref().map_or(f3.last().copied().unwrap_or(f64::NAN), |r| r.supports[k][2]),
-            peak_swing_deg: swing
-                .map(|s| s.iter().copied().fold(0.0, |m: f64, x| if x.abs() > m.abs() { x } else { m })),
+            peak_swing_deg: peaks.and_then(|p| p.swing.as_ref()).map(|[along, _]| along.value_deg),
         });
     }
     let mut jumps = Vec::new();
