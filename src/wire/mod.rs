@@ -76,6 +76,12 @@ pub struct Wire {
     pub segment_mass: Vec<f64>,
     /// 1.0 for an intact segment, 0.0 for a broken one [-], length `N` (the break (3.5))
     pub intact: Vec<f64>,
+    /// the diameter the wind acts on over the conductor's `k = (d + 2 t) / d` [-], length `N`: 1.0 bare,
+    /// radial ice `t` enlarges it ([`Wire::set_radial_ice`]; the aerodynamic law (2.5)-(2.6) scales by it)
+    pub wind_diameter_factor: Vec<f64>,
+    /// mass of the radial ice shell of each segment per unit reference length `rho_ice pi t (d + t)`
+    /// [kg/m], length `N` (0 bare; ice given in kg/m is not in it: it enlarges no diameter)
+    pub radial_ice_kg_per_m: Vec<f64>,
     /// 1.0 while distributed loads (wind, uniform load) act on the node, 0.0 once it has touched the
     /// ground (section 4.4, assumption b) [-], length `N + 1`
     pub exposed: Vec<f64>,
@@ -128,6 +134,8 @@ impl Wire {
             rest_length,
             segment_mass,
             intact: vec![1.0; n_nodes - 1],
+            wind_diameter_factor: vec![1.0; n_nodes - 1],
+            radial_ice_kg_per_m: vec![0.0; n_nodes - 1],
             exposed: vec![1.0; n_nodes],
             temperature_k: vec![REFERENCE_TEMPERATURE_K; n_nodes - 1],
             reference_temperature_k: REFERENCE_TEMPERATURE_K,
@@ -220,6 +228,7 @@ impl Wire {
             rest_length_m: self.rest_length[j],
             reference_length_m: self.reference_length[j],
             intact: self.intact[j],
+            wind_diameter_factor: self.wind_diameter_factor[j],
         }
     }
 
@@ -286,6 +295,31 @@ impl Wire {
         }
         for j in range {
             self.segment_mass[j] = after(self.segment_mass[j], self.reference_length[j]);
+        }
+        self.update_node_masses();
+        true
+    }
+
+    /// Set the radial ice shell of segments `range`: `kg_per_m` [kg/m] per unit reference length (its mass
+    /// `rho_ice pi t (d + t)`) and the wind diameter factor `(d + 2 t) / d` [-]. The shell replaces the one
+    /// the segments had (the segment mass changes by the difference; ice given in kg/m stays). A shell
+    /// that is negative, not finite, or a factor below 1 is refused: the wire is left unchanged and `false`
+    /// returned (validation refuses such events up front).
+    #[must_use = "a refused change leaves the wire unchanged"]
+    pub fn set_radial_ice(&mut self, range: std::ops::Range<usize>, kg_per_m: f64, diameter_factor: f64) -> bool {
+        if range.end > self.segments()
+            || range.start > range.end
+            || !(kg_per_m.is_finite() && kg_per_m >= 0.0)
+            || !(diameter_factor.is_finite() && diameter_factor >= 1.0)
+        {
+            return false;
+        }
+        for j in range {
+            let m = self.segment_mass[j] + (kg_per_m - self.radial_ice_kg_per_m[j]) * self.reference_length[j];
+            // The shell's own mass is what leaves, so the mass stays positive; the bound only guards it.
+            self.segment_mass[j] = m.max(f64::MIN_POSITIVE);
+            self.radial_ice_kg_per_m[j] = kg_per_m;
+            self.wind_diameter_factor[j] = diameter_factor;
         }
         self.update_node_masses();
         true
