@@ -342,3 +342,39 @@ impl Wire {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_radial_shell_replaces_the_previous_one_and_sheds_to_the_mass_without_it() {
+        // 20 segments of 8 m at 1 kg/m, 0.5 kg/m of kg/m ice on all, then shells on 5..15.
+        let conductor =
+            Conductor { axial_stiffness_n: 1.0, internal_friction_n_s: 0.0, law: tension::LawKind::TensionOnly };
+        let n = 20;
+        let x = [vec![0.0; n + 1], (0..=n).map(|i| i as f64 * 8.0).collect(), vec![0.0; n + 1]];
+        let mut w = Wire::new(conductor, x, vec![8.0; n], 1.0);
+        assert!(w.add_linear_density(0..n, 0.5));
+        // Masses are exact binary fractions here (1.5, 2.25, 1.75 kg/m on 8 m), so equality is exact.
+        assert!(w.set_radial_ice(5..15, 0.75, 3.0));
+        assert_eq!((w.segment_mass[4], w.segment_mass[5], w.segment_mass[14]), (12.0, 18.0, 18.0));
+        assert_eq!((w.wind_diameter_factor[4], w.wind_diameter_factor[5]), (1.0, 3.0));
+        // A new shell replaces the old (not added to it); the kg/m ice stays.
+        assert!(w.set_radial_ice(10..15, 0.25, 2.0));
+        assert_eq!((w.segment_mass[9], w.segment_mass[10]), (18.0, 14.0));
+        assert_eq!((w.wind_diameter_factor[9], w.wind_diameter_factor[10]), (3.0, 2.0));
+        // Shedding (t = 0: no mass, factor 1) leaves the wire with its kg/m ice only.
+        assert!(w.set_radial_ice(0..n, 0.0, 1.0));
+        assert!(w.segment_mass.iter().all(|&m| m == 12.0));
+        assert!(w.wind_diameter_factor.iter().all(|&k| k == 1.0));
+        assert_eq!(w.mass[10], 12.0);
+        // Invalid shells are refused and change nothing.
+        let before = w.segment_mass.clone();
+        assert!(!w.set_radial_ice(0..n, -0.1, 1.0));
+        assert!(!w.set_radial_ice(0..n, 0.1, 0.5));
+        assert!(!w.set_radial_ice(0..n + 1, 0.1, 1.5));
+        assert!(!w.set_radial_ice(0..n, f64::NAN, 1.5));
+        assert_eq!(w.segment_mass, before);
+    }
+}
