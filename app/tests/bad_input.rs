@@ -96,6 +96,7 @@ const CASES: &[(&str, &[&str])] = &[
     ("ice_thickness_negative", &["field `events[0].radial_thickness_m` = -0.01", "[0, 0.2] m"]),
     ("ice_density_out_of_range", &["field `events[0].density_kg_per_m3` = 1500", "[100, 1e3] kg/m^3", "glaze 900"]),
     ("ice_thickness_without_density", &["field `events[0].density_kg_per_m3` = (missing)", "radial_thickness_m"]),
+    ("ice_without_amount", &["field `events[0].action` = \"ice\"", "needs linear_density_kg_per_m [kg/m], or"]),
     ("ice_thickness_without_diameter", &["field `conductor.diameter_m` = (missing)", "radial_thickness_m"]),
     ("ice_change_too_large", &["field `events[0].linear_density_kg_per_m` = 10000000", "[-1e3, 1e3] kg/m"]),
     ("support_with_four_components", &["line 7", "invalid length 4, expected exactly 3 components"]),

@@ -20,7 +20,7 @@
 /// (ISO 2533), the value the scenario's `[loads.wind] air_density_kg_per_m3` defaults to.
 pub const AIR_DENSITY_KG_PER_M3: f64 = 1.225;
 
-/// NESC ice density 57 lb/ft^3 [kg/m^3] (NESC Rule 250B; 57 * 0.45359237 / 0.3048^3 = 913.1).
+/// NESC ice density 57 lb/ft^3 [kg/m^3] (NESC Rule 251; 57 * 0.45359237 / 0.3048^3 = 913.05, given as 913).
 pub const NESC_ICE_DENSITY_KG_PER_M3: f64 = 913.0;
 
 /// One load case of a code.
@@ -46,14 +46,15 @@ pub struct LoadCase {
     pub user_chooses: &'static str,
 }
 
-/// The presets. NESC: Rule 250B, Table 250-1 (ice, pressure, temperature) and Table 251-1 (`K`), in the
+/// The presets. NESC: Rule 250B, Table 250-1 (ice, pressure, temperature), Rule 251 (ice density) and Table
+/// 251-1 (`K`), in the
 /// code's metric values. IEC 60826 and EN 50341-1: the code fixes the method (ice as a concentric
 /// cylinder, the wind on the iced diameter, a coincident reduced wind) but every number is a site,
 /// reliability-level or national-annex value: they are inputs (docs/loads.md).
 pub const CASES: &[LoadCase] = &[
     LoadCase {
         name: "nesc_heavy",
-        source: "NESC (IEEE C2) Rule 250B, heavy loading district (Tables 250-1, 251-1)",
+        source: "NESC (IEEE C2) Rule 250B, heavy loading district (Table 250-1; ice density and K: Rule 251, Table 251-1)",
         radial_ice_m: Some(0.0125),
         ice_density_kg_per_m3: Some(NESC_ICE_DENSITY_KG_PER_M3),
         wind_pressure_pa: Some(190.0),
@@ -64,7 +65,7 @@ pub const CASES: &[LoadCase] = &[
     },
     LoadCase {
         name: "nesc_medium",
-        source: "NESC (IEEE C2) Rule 250B, medium loading district (Tables 250-1, 251-1)",
+        source: "NESC (IEEE C2) Rule 250B, medium loading district (Table 250-1; ice density and K: Rule 251, Table 251-1)",
         radial_ice_m: Some(0.0065),
         ice_density_kg_per_m3: Some(NESC_ICE_DENSITY_KG_PER_M3),
         wind_pressure_pa: Some(190.0),
@@ -75,7 +76,7 @@ pub const CASES: &[LoadCase] = &[
     },
     LoadCase {
         name: "nesc_light",
-        source: "NESC (IEEE C2) Rule 250B, light loading district (Tables 250-1, 251-1)",
+        source: "NESC (IEEE C2) Rule 250B, light loading district (Table 250-1; ice density and K: Rule 251, Table 251-1)",
         radial_ice_m: Some(0.0),
         ice_density_kg_per_m3: Some(NESC_ICE_DENSITY_KG_PER_M3),
         wind_pressure_pa: Some(430.0),

@@ -958,7 +958,8 @@ fn check_ground_and_events(
                         c.fail(
                             &f("linear_density_kg_per_m"),
                             number(d),
-                            "give the ice in one form: linear_density_kg_per_m [kg/m], or radial_thickness_m [m]                              with density_kg_per_m3 [kg/m^3], not both",
+                            "give the ice in one form: linear_density_kg_per_m [kg/m], or radial_thickness_m [m] \
+                             with density_kg_per_m3 [kg/m^3], not both",
                         );
                         false
                     }
@@ -966,7 +967,8 @@ fn check_ground_and_events(
                         c.fail(
                             &f("action"),
                             "\"ice\"",
-                            "needs linear_density_kg_per_m [kg/m], or radial_thickness_m [m] with density_kg_per_m3                              [kg/m^3]",
+                            "needs linear_density_kg_per_m [kg/m], or radial_thickness_m [m] with density_kg_per_m3 \
+                             [kg/m^3]",
                         );
                         false
                     }
