@@ -18,6 +18,7 @@
 //!   run loop and the outputs; [`output`]: the observers that write or record a run; [`run`]: the run
 //!   loop, which assembles the standard outputs;
 //! - [`exact`]: exact static solutions the scheme is verified against;
+//! - [`loads`]: ice and wind as the design codes give them (radial ice, the codes' load cases);
 //! - [`thermal`]: conductor temperature from current and weather (IEEE 738, CIGRE TB 601).
 //!
 //! The library holds the model only: the command line `ohl`, the paper cases, the plots, the benchmark
@@ -28,6 +29,7 @@ pub mod events;
 pub mod exact;
 pub mod heat;
 pub mod line;
+pub mod loads;
 pub mod observer;
 pub mod output;
 pub mod run;

@@ -244,3 +244,89 @@ fn a_run_from_the_equilibrium_under_a_steady_wind_stays_at_rest() {
         }
     }
 }
+
+/// A level 400 m span of ACSR Drake (d = 28.14 mm, 1.628 kg/m, EA = 3.607e7 N) under radial ice and a
+/// concurrent wind, both at t = 0, started from its static equilibrium.
+fn iced_drake(ice: &str, n: usize) -> String {
+    format!(
+        r#"
+        [conductor]
+        axial_stiffness_n = 3.607e7
+        linear_density_kg_per_m = 1.628
+        diameter_m = 0.02814
+        [geometry]
+        left_support_m = [0.0, 0.0, 0.0]
+        right_support_m = [0.0, 400.0, 0.0]
+        unstretched_length_m = 401.0
+        segments = {n}
+        [initial]
+        shape = "equilibrium"
+        [loads.wind]
+        law = "aerodynamic"
+        direction = [1.0, 0.0, 0.0]
+        speed_m_per_s = 20.0
+        normal_coefficient = 1.0
+        tangential_coefficient = 0.0
+        [duration]
+        end_time_s = 0.1
+        [[events]]
+        time_s = 0.0
+        action = "ice"
+        {ice}
+        "#
+    )
+}
+
+#[test]
+fn radial_ice_with_wind_settles_on_the_catenary_of_the_hand_resultant() {
+    // Hand calculation (docs/loads.md): 20 mm of glaze (900 kg/m^3) on d = 28.14 mm weighs
+    // 900 pi t (d + t) g; the wind q C (d + 2 t) with q = 1.225 * 20^2 / 2 acts on the iced diameter. The
+    // exact elastic catenary under the resultant (F, 0, -(w_c + w_ice)) per unstretched length is the
+    // independent expectation. Tolerance 0.5 % on the blow-out tangent, the sag and H: the wind law acts
+    // normal to the wire per deformed length, the hand load is a fixed vector per unstretched length; they
+    // differ by the strain (H/EA = 0.1 %) and by the wind's projection on the sloping wire (up to 0.6 % at
+    // the supports, slope 4 f / l = 0.15 here), as in the examples' blow-out check (app/tests/examples.rs);
+    // the grid's O(ds^2) sag error at N = 80 is 7e-5 (docs/examples.md).
+    let (d, t, rho_ice, g) = (0.02814, 0.02, 900.0, 9.81);
+    let w = (1.628 + rho_ice * std::f64::consts::PI * t * (d + t)) * g;
+    let f = 0.5 * 1.225 * 20.0_f64.powi(2) * (d + 2.0 * t);
+    let exact = ElasticCatenary::solve([0.0; 3], [0.0, 400.0, 0.0], 401.0, [f, 0.0, -w], 3.607e7).expect("catenary");
+    let sag = exact.midspan_displacement_m();
+    let text = iced_drake("radial_thickness_m = 0.02\ndensity_kg_per_m3 = 900.0", 80);
+    let mut plan = scenario::plan(&common::scenario(&text), "<test>").expect("valid");
+    assert!(plan.initial_equilibrium.is_some());
+    let mid = plan.solver.wire().midspan();
+    let dm = [mid[0], mid[1] - 200.0, mid[2]];
+    let s = &mut plan.solver;
+    s.evaluate_forces();
+    let mut forces = Vec::new();
+    s.support_forces(&mut forces);
+    let h = forces[0].1[1].abs();
+    let rel = |a: f64, b: f64| (a - b) / b;
+    let norm = |v: [f64; 3]| v.iter().map(|x| x * x).sum::<f64>().sqrt();
+    println!(
+        "iced + wind: tan(blow-out) {:.6} vs hand {:.6} ({:+.3e}); sag {:.5} m vs {:.5} m ({:+.3e}); H {:.2} N vs {:.2} N ({:+.3e})",
+        dm[0] / -dm[2],
+        f / w,
+        rel(dm[0] / -dm[2], f / w),
+        norm(dm),
+        norm(sag),
+        rel(norm(dm), norm(sag)),
+        h,
+        exact.horizontal_tension_n(),
+        rel(h, exact.horizontal_tension_n())
+    );
+    assert!(rel(dm[0] / -dm[2], f / w).abs() < 5e-3);
+    assert!(rel(norm(dm), norm(sag)).abs() < 5e-3);
+    assert!(rel(h, exact.horizontal_tension_n()).abs() < 5e-3);
+
+    // The same mass as kg/m enlarges no diameter: the blow-out tangent is the bare diameter's, smaller by
+    // d / (d + 2 t) (the same 0.5 % tolerance).
+    let kg = rho_ice * std::f64::consts::PI * t * (d + t);
+    let text = iced_drake(&format!("linear_density_kg_per_m = {kg}"), 80);
+    let plan = scenario::plan(&common::scenario(&text), "<test>").expect("valid");
+    let mid = plan.solver.wire().midspan();
+    let bare = f * d / (d + 2.0 * t) / w;
+    println!("kg/m ice + wind: tan(blow-out) {:.6} vs hand {bare:.6}", mid[0] / -mid[2]);
+    assert!(rel(mid[0] / -mid[2], bare).abs() < 5e-3);
+}

@@ -66,7 +66,8 @@ section = {}
 time_s = 0.7
 action = "ice"
 span = 0
-linear_density_kg_per_m = 0.3
+radial_thickness_m = 0.005
+density_kg_per_m3 = 900.0
 {GLOBAL}
 [[events]]
 time_s = 0.5
@@ -81,9 +82,13 @@ scale = 1.0
     let out = run_line(plan, None).unwrap();
     // The line steps all its conductors together and lands every one on every event time: each conductor
     // here has an event at 0.7 s, so each single run lands there too.
-    for (k, (x1, (span, ice))) in [(-4.0, (1, 0.8)), (4.0, (0, 0.3))].into_iter().enumerate() {
-        let ice_event =
-            format!("[[events]]\ntime_s = 0.7\naction = \"ice\"\nspan = {span}\nlinear_density_kg_per_m = {ice}\n");
+    // A's ice is a change of linear density, B's a radial shell (5 mm glaze, the wind on d + 2 t).
+    let forms = [
+        (-4.0, (1, "linear_density_kg_per_m = 0.8")),
+        (4.0, (0, "radial_thickness_m = 0.005\ndensity_kg_per_m3 = 900.0")),
+    ];
+    for (k, (x1, (span, ice))) in forms.into_iter().enumerate() {
+        let ice_event = format!("[[events]]\ntime_s = 0.7\naction = \"ice\"\nspan = {span}\n{ice}\n");
         // The same conductor as a single-conductor scenario: its tables as top-level inline tables.
         let single = format!(
             "conductor = {CONDUCTOR}\nsection = {}\n{GLOBAL}\n{ice_event}[[events]]\ntime_s = 0.5\naction = \"wind\"\nscale = 1.0\n",
@@ -101,8 +106,12 @@ scale = 1.0
             }
         }
     }
-    // The wind moved them, and more ice went on A.
+    // The wind moved them, and more ice went on A (0.8 kg/m on span 1; B: 900 pi t (d + t) = 0.468 kg/m
+    // on span 0, whose segments alone have the iced wind diameter).
     let (a, b) = (out.line.conductors()[0].wire(), out.line.conductors()[1].wire());
+    assert_eq!(b.wind_diameter_factor[0], (0.0281 + 0.01) / 0.0281);
+    assert_eq!(b.wind_diameter_factor[b.segments() - 1], 1.0);
+    assert!(a.wind_diameter_factor.iter().all(|&k| k == 1.0));
     assert!(a.x[0][12] > -4.0 + 0.1 && b.x[0][12] > 4.0 + 0.1);
     assert!(a.total_mass() > b.total_mass());
 }

@@ -8,6 +8,8 @@
 //! - `ohl thermal CASE.toml` evaluates a conductor's heat balance (steady temperature, ampacity, transient,
 //!   de-icing);
 //! - `ohl rating SCENARIO.toml` rates a span or section by clearance or sag (steady, and after a step);
+//! - `ohl load-case NAME` prints a code's combined ice-and-wind load case (NESC 250B districts, IEC 60826,
+//!   EN 50341-1) as scenario TOML for a catalogue conductor (`ohl load-case list` names them);
 //! - `ohl plot RUN_DIR` draws a run's time series, support forces and shapes to PNG and SVG;
 //! - `ohl sweep BASE.toml --vary FIELD=VALUES` runs a parameter sweep in parallel into one table
 //!   (`ohl sweep merge` joins the tables of its shards).
@@ -45,6 +47,8 @@ enum Command {
     /// Thermal rating of a span or section by ground clearance or sag, steady and after a current step;
     /// writes rating.json.
     Rating(cli::rating::RatingArgs),
+    /// Print a code's combined ice-and-wind load case as scenario TOML (`list`: the cases).
+    LoadCase(cli::load_case::LoadCaseArgs),
     /// Draw a run's time series, support forces and shapes (RUN_DIR/plots/*.png and *.svg).
     Plot(cli::plot::PlotArgs),
     /// Run a parameter sweep of a base scenario in parallel into one table (sweep.csv); `sweep merge` joins shards.
@@ -59,6 +63,7 @@ fn main() -> ExitCode {
         Command::Bench(a) => cli::bench::main(a),
         Command::Thermal(a) => cli::thermal::main(a),
         Command::Rating(a) => cli::rating::main(a),
+        Command::LoadCase(a) => cli::load_case::main(a),
         Command::Plot(a) => cli::plot::main(a),
         Command::Sweep(a) => cli::sweep::main(a),
     }

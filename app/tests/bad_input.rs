@@ -91,6 +91,13 @@ const CASES: &[(&str, &[&str])] = &[
         ],
     ),
     ("ice_dropped_twice", &["field `events[2].linear_density_kg_per_m` = -0.3", "at 0.7", "kg/m"]),
+    // Issue 23, wind on ice: radial ice in exactly one form, in range, on a conductor with a diameter.
+    ("ice_in_two_forms", &["field `events[0].linear_density_kg_per_m` = 0.5", "in one form", "not both"]),
+    ("ice_thickness_negative", &["field `events[0].radial_thickness_m` = -0.01", "[0, 0.2] m"]),
+    ("ice_density_out_of_range", &["field `events[0].density_kg_per_m3` = 1500", "[100, 1e3] kg/m^3", "glaze 900"]),
+    ("ice_thickness_without_density", &["field `events[0].density_kg_per_m3` = (missing)", "radial_thickness_m"]),
+    ("ice_without_amount", &["field `events[0].action` = \"ice\"", "needs linear_density_kg_per_m [kg/m], or"]),
+    ("ice_thickness_without_diameter", &["field `conductor.diameter_m` = (missing)", "radial_thickness_m"]),
     ("ice_change_too_large", &["field `events[0].linear_density_kg_per_m` = 10000000", "[-1e3, 1e3] kg/m"]),
     ("support_with_four_components", &["line 7", "invalid length 4, expected exactly 3 components"]),
     ("uniform_load_with_two_components", &["line 18", "invalid length 2, expected exactly 3 components"]),
@@ -417,4 +424,32 @@ fn a_heat_case_is_refused_by_run_with_a_pointer_to_paper() {
     assert_eq!(code, 2, "stderr:\n{err}");
     assert!(err.contains("heat_two_halves.toml") && err.contains("`ohl paper heat_two_halves`"), "{err}");
     assert!(!out.exists(), "nothing is written for a refused case");
+}
+
+#[test]
+fn a_load_case_refuses_to_guess_and_prints_a_valid_scenario_when_complete() {
+    // IEC 60826 leaves the ice, the coincident wind, the drag coefficient and the temperature to the
+    // designer: without them the command names the missing option and exits 2.
+    let (code, _, err) = ohl(&["load-case", "iec60826_ice_wind", "--radial-ice-m", "0.015"]);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("--wind-pressure-pa or --wind-speed-m-per-s") && err.contains("return period"), "{err}");
+    let (code, _, err) = ohl(&["load-case", "nesc_extreme"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("nesc_heavy, nesc_medium, nesc_light"), "{err}");
+    // NESC heavy on Drake: the fragment, put under a one-span scenario, validates and holds the district's
+    // numbers (12.5 mm, 913 kg/m^3, 190 Pa -> 17.6126 m/s).
+    let (code, out, err) = ohl(&["load-case", "nesc_heavy", "--conductor", "ACSR Drake"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("radial_thickness_m = 0.0125") && out.contains("density_kg_per_m3 = 913.0"), "{out}");
+    assert!(out.contains("speed_m_per_s = 17.612611") && out.contains("K = 4.4 N/m"), "{out}");
+    let scenario = format!(
+        "[conductor]\ncatalog = \"ACSR Drake\"\n[geometry]\nleft_support_m = [0.0, 0.0, 0.0]\n\
+         right_support_m = [0.0, 400.0, 0.0]\nunstretched_length_m = 401.0\nsegments = 40\n\
+         [initial]\nshape = \"equilibrium\"\n[duration]\nend_time_s = 0.01\n{out}"
+    );
+    let s = ohl::scenario::parse(&scenario, "<load-case>").expect("the fragment parses");
+    let plan = ohl::scenario::plan(&s, "<load-case>").expect("the fragment validates and builds");
+    // The shell is on the wire at the static start: the wind acts on d + 2 t.
+    let k = plan.solver.wire().wind_diameter_factor[0];
+    assert_eq!(k, (0.02814 + 0.025) / 0.02814);
 }

@@ -18,6 +18,13 @@
 //! [N/m] and has no tangential part. The segment's total load `F l` is shared equally by its two nodes,
 //! which is the averaging of the two half-point loads in (3.1).
 //!
+//! Radial ice enlarges the diameter the wind acts on: a segment carrying a shell of radial thickness `t`
+//! [m] on a conductor of diameter `d` has the aerodynamic load of diameter `d + 2 t`, i.e. (2.5), and with
+//! it the damping correction (2.6) that multiplies it, scaled by the segment's diameter factor
+//! `k = (d + 2 t) / d` [-] ([`SegmentLoad::force_with_diameter_factor`]; `k = 1` bare, where the product
+//! `q d c_n * 1` is exactly `q d c_n`, so bare runs keep their bits). The uniform-pressure law is a given
+//! line load [N/m] and ignores it.
+//!
 //! Each law is a type implementing [`SegmentLoad`], so the time step is monomorphised per law and the
 //! node loop carries no branch on the scenario's options. Each is written once over a [`Scalar`]: the
 //! kernel evaluates it on `f64`, the static solver's Jacobian on dual numbers ([`super::segment`]).
@@ -69,6 +76,14 @@ impl SegmentLoad for WindLoad {
             WindLoad::Aerodynamic(a) => a.force(t, len, v),
         }
     }
+
+    #[inline(always)]
+    fn force_with_diameter_factor<S: Scalar>(&self, t: [S; 3], len: S, v: [S; 3], k: f64) -> [S; 3] {
+        match self {
+            WindLoad::UniformNormal(u) => u.force_with_diameter_factor(t, len, v, k),
+            WindLoad::Aerodynamic(a) => a.force_with_diameter_factor(t, len, v, k),
+        }
+    }
 }
 
 /// No load where there is no law.
@@ -80,6 +95,14 @@ impl<W: SegmentLoad> SegmentLoad for Option<W> {
             None => [S::c(0.0); 3],
         }
     }
+
+    #[inline(always)]
+    fn force_with_diameter_factor<S: Scalar>(&self, t: [S; 3], len: S, v: [S; 3], k: f64) -> [S; 3] {
+        match self {
+            Some(w) => w.force_with_diameter_factor(t, len, v, k),
+            None => [S::c(0.0); 3],
+        }
+    }
 }
 
 /// A load distributed along each segment, evaluated once per segment per step.
@@ -87,6 +110,14 @@ pub trait SegmentLoad {
     /// Total force [N] on a segment with unit tangent `t`, deformed length `len` [m] and velocity `v`
     /// [m/s] (mean of the end nodes).
     fn force<S: Scalar>(&self, t: [S; 3], len: S, v: [S; 3]) -> [S; 3];
+
+    /// The same on a segment whose diameter is `k` [-] times the conductor's (radial ice: `k = (d + 2 t) /
+    /// d`). Laws that do not depend on the diameter (a given line pressure, no wind) ignore `k`: the default.
+    #[inline(always)]
+    fn force_with_diameter_factor<S: Scalar>(&self, t: [S; 3], len: S, v: [S; 3], k: f64) -> [S; 3] {
+        let _ = k;
+        self.force(t, len, v)
+    }
 }
 
 /// Below this `sin(alpha)` the normal direction is undefined and the normal load is taken as zero; the
@@ -166,6 +197,12 @@ impl SegmentLoad for Aerodynamic {
         let kt = wt * self.qd_ct * wt.abs() * len;
         [kn * wp[0] + kt * t[0], kn * wp[1] + kt * t[1], kn * wp[2] + kt * t[2]]
     }
+
+    /// (2.5)-(2.6) on the diameter `k d`: both coefficients `q d c` scale with `d` (`k = 1`: the same bits).
+    #[inline(always)]
+    fn force_with_diameter_factor<S: Scalar>(&self, t: [S; 3], len: S, v: [S; 3], k: f64) -> [S; 3] {
+        Aerodynamic { qd_cn: self.qd_cn * k, qd_ct: self.qd_ct * k, ..*self }.force(t, len, v)
+    }
 }
 
 /// A wind load that acts only on segments moving downwind, `v . w >= 0`, and is zero on segments moving
@@ -182,7 +219,12 @@ pub struct Downwind<W> {
 impl<W: SegmentLoad> SegmentLoad for Downwind<W> {
     #[inline(always)]
     fn force<S: Scalar>(&self, t: [S; 3], len: S, v: [S; 3]) -> [S; 3] {
-        let f = self.load.force(t, len, v);
+        self.force_with_diameter_factor(t, len, v, 1.0)
+    }
+
+    #[inline(always)]
+    fn force_with_diameter_factor<S: Scalar>(&self, t: [S; 3], len: S, v: [S; 3], k: f64) -> [S; 3] {
+        let f = self.load.force_with_diameter_factor(t, len, v, k);
         let w = self.direction;
         let on = if (v[0] * w[0] + v[1] * w[1] + v[2] * w[2]).value() >= 0.0 { 1.0 } else { 0.0 };
         [f[0] * on, f[1] * on, f[2] * on]
@@ -220,6 +262,30 @@ mod tests {
             let e = fn_ * n[k] + ft * t[k];
             assert!((f[k] - e).abs() < 1e-13, "component {k}: {} vs {e}", f[k]);
         }
+    }
+
+    #[test]
+    fn iced_diameter_scales_the_aerodynamic_load_and_not_a_given_pressure() {
+        // 15 mm radial ice on the paper's 15.53 mm wire: k = (d + 2 t) / d; (2.5) is linear in d, so the
+        // oblique load, damping included, is k times the bare one (to rounding: 1e-14 relative).
+        let k = (0.01553 + 2.0 * 0.015) / 0.01553;
+        let a = Aerodynamic { direction: [1.0, 0.0, 0.0], qd_cn: Q_D * 1.8446, qd_ct: Q_D * 0.0554, mu_over_u: 0.01 };
+        let t = [0.6, 0.8, 0.0];
+        let v = [0.3, -0.1, 0.2];
+        let bare = a.force(t, 1.5, v);
+        let iced = a.force_with_diameter_factor(t, 1.5, v, k);
+        for c in 0..3 {
+            assert!(
+                (iced[c] - k * bare[c]).abs() < 1e-14 * bare[c].abs().max(1.0),
+                "{c}: {} vs {}",
+                iced[c],
+                k * bare[c]
+            );
+        }
+        // k = 1 is the bare law bit for bit, and a given line pressure ignores the diameter.
+        assert_eq!(a.force_with_diameter_factor(t, 1.5, v, 1.0), bare);
+        let u = UniformNormal { direction: [1.0, 0.0, 0.0], pressure_n_per_m: 3.8, mu_over_u: 0.0 };
+        assert_eq!(u.force_with_diameter_factor(t, 1.5, v, k), u.force(t, 1.5, v));
     }
 
     #[test]

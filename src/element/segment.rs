@@ -5,11 +5,12 @@
 //! ```text
 //! d = r_b - r_a,  len = |d|,  t = d (1 / len),  e = len (1 / l0) - 1,  edot = ((v_b - v_a) . t) (1 / l0)
 //! T = intact L(EA, eta, e, edot)                     (the law L: tension-only or linear, (3.4))
-//! E = intact / 2 (P(t, len, (v_a + v_b) / 2) + q lref)     (wind law P (2.5)-(2.6), uniform load q)
+//! E = intact / 2 (P(t, len, (v_a + v_b) / 2; k) + q lref)  (wind law P (2.5)-(2.6), uniform load q)
 //! force on a:  +T t + exposed_a E,      force on b:  -T t + exposed_b E                     (3.1)
 //! ```
 //!
-//! `l0` [m] is the stress-free length (thermal strain scales it), `lref` [m] the reference length the
+//! `k` [-] is the segment's wind diameter factor (radial ice: `(d + 2 t) / d`, 1 bare; see
+//! [`super::aero`]), `l0` [m] is the stress-free length (thermal strain scales it), `lref` [m] the reference length the
 //! uniform load `q` [N/m] is given per, `intact` 1 or 0 (a broken segment carries nothing) and the
 //! velocities the half-step `v^{n-1/2}` of (3.1). The reciprocals are formed once and multiplied, as the
 //! vectorised kernel needs.
@@ -38,6 +39,8 @@ pub struct SegmentProps {
     pub reference_length_m: f64,
     /// 1 for an intact segment, 0 for a broken one [-]
     pub intact: f64,
+    /// the diameter the wind acts on over the conductor's [-] (radial ice `t`: `(d + 2 t) / d`; 1 bare)
+    pub wind_diameter_factor: f64,
 }
 
 /// The geometry and strain of a segment.
@@ -89,9 +92,11 @@ pub fn stretch<S: Scalar>(xa: [S; 3], xb: [S; 3], va: [S; 3], vb: [S; 3], rest_l
 }
 
 /// One end's share of the distributed load `intact (P + q lref) / 2` [N] of a segment of the given
-/// stretch (tangent `t`, length `len` [m]), end velocities `va, vb` [m/s], reference length `lref` [m] and `intact` (1 or 0). `UNIFORM = false` (all of `q` zero) skips `q lref`:
+/// stretch (tangent `t`, length `len` [m]), end velocities `va, vb` [m/s], reference length `lref` [m],
+/// `intact` (1 or 0) and wind diameter factor `k` [-]. `UNIFORM = false` (all of `q` zero) skips `q lref`:
 /// `P + 0` can differ from `P` only in the sign of a zero.
 #[inline(always)]
+#[allow(clippy::too_many_arguments)]
 pub fn share<S: Scalar, W: SegmentLoad, const UNIFORM: bool>(
     load: &W,
     stretch: &Stretch<S>,
@@ -100,9 +105,10 @@ pub fn share<S: Scalar, W: SegmentLoad, const UNIFORM: bool>(
     q: [f64; 3],
     reference_length_m: f64,
     intact: f64,
+    wind_diameter_factor: f64,
 ) -> [S; 3] {
     let vm = [(va[0] + vb[0]) * 0.5, (va[1] + vb[1]) * 0.5, (va[2] + vb[2]) * 0.5];
-    let p = load.force(stretch.t, stretch.len, vm);
+    let p = load.force_with_diameter_factor(stretch.t, stretch.len, vm, wind_diameter_factor);
     let h = 0.5 * intact;
     if UNIFORM {
         let lref = reference_length_m;
@@ -131,7 +137,16 @@ pub fn evaluate<S: Scalar, L: TensionLaw, W: SegmentLoad, const UNIFORM: bool, c
     } else {
         L::tension(props.axial_stiffness_n, 0.0, st.e, S::c(0.0)) * props.intact
     };
-    let share = share::<S, W, UNIFORM>(load, &st, va, vb, q, props.reference_length_m, props.intact);
+    let share = share::<S, W, UNIFORM>(
+        load,
+        &st,
+        va,
+        vb,
+        q,
+        props.reference_length_m,
+        props.intact,
+        props.wind_diameter_factor,
+    );
     SegmentForce { stretch: st, tension, share }
 }
 
@@ -148,6 +163,7 @@ mod tests {
         rest_length_m: 2.0,
         reference_length_m: 2.0,
         intact: 1.0,
+        wind_diameter_factor: 1.0,
     };
     const WIND: Aerodynamic = Aerodynamic { direction: [1.0, 0.0, 0.0], qd_cn: 8.1, qd_ct: 0.24, mu_over_u: 0.01 };
 

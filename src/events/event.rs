@@ -23,6 +23,17 @@ pub enum Action {
         /// change of linear density `delta rho0` [kg/m]
         delta_kg_per_m: f64,
     },
+    /// Set the radial ice shell of `segments` (replacing theirs): its mass `rho_ice pi t (d + t)` [kg/m]
+    /// per unit unstretched length and the wind diameter factor `(d + 2 t) / d` [-] (thickness `t` = 0:
+    /// the shell is shed).
+    RadialIce {
+        /// the segments
+        segments: Range<usize>,
+        /// shell mass per unit length [kg/m]
+        kg_per_m: f64,
+        /// iced over bare diameter [-]
+        diameter_factor: f64,
+    },
     /// Set the wind multiplier to `scale` [-] (at once, `ramp_s = 0`, or as a linear ramp from its current
     /// value over `ramp_s` [s], [`super::WindRamp`]) and its gate; ends a gust or an earlier ramp.
     Wind {
@@ -86,6 +97,28 @@ pub enum Action {
         /// true: contact on
         on: bool,
     },
+}
+
+impl Action {
+    /// Whether the action changes the ice (either form): at `t = 0` with a static start it is part of the
+    /// initial state.
+    pub fn is_ice(&self) -> bool {
+        matches!(self, Action::Ice { .. } | Action::RadialIce { .. })
+    }
+
+    /// Apply an ice action to `wire`: `Some(true)` done, `Some(false)` refused (the wire unchanged: a
+    /// segment mass would become non-positive), `None` not an ice action.
+    pub fn apply_ice(&self, wire: &mut crate::wire::Wire) -> Option<bool> {
+        match self {
+            Action::Ice { segments, delta_kg_per_m } => {
+                Some(wire.add_linear_density(segments.clone(), *delta_kg_per_m))
+            }
+            Action::RadialIce { segments, kg_per_m, diameter_factor } => {
+                Some(wire.set_radial_ice(segments.clone(), *kg_per_m, *diameter_factor))
+            }
+            _ => None,
+        }
+    }
 }
 
 /// An action at a time.

@@ -96,6 +96,15 @@ impl EventState {
                 solver.wire_mut().break_segment(j);
                 format!("break of segment {j} (between nodes {j} and {})", j + 1)
             }
+            Action::RadialIce { segments: r, kg_per_m, diameter_factor } => {
+                let text =
+                    format!("radial ice {kg_per_m} kg/m, wind diameter factor {diameter_factor} on segments {r:?}");
+                if solver.wire_mut().set_radial_ice(r, kg_per_m, diameter_factor) {
+                    text
+                } else {
+                    format!("{text} refused: not a valid shell (the wire is unchanged)")
+                }
+            }
             Action::Ice { segments: r, delta_kg_per_m } => {
                 let text = format!("linear density {delta_kg_per_m:+} kg/m on segments {r:?}");
                 if solver.wire_mut().add_linear_density(r, delta_kg_per_m) {

@@ -189,16 +189,39 @@ fn gate(g: GateSpec) -> WindGate {
     }
 }
 
+/// The action of an ice event on `segments`: a change of linear density, or a radial shell of thickness
+/// `t` and density `rho_ice` on the conductor's diameter `d` ([`crate::loads::radial_ice`]).
+fn ice_action(e: &EventSpec, segments: std::ops::Range<usize>, diameter_m: Option<f64>) -> Action {
+    match *e {
+        EventSpec::Ice { radial_thickness_m: Some(t), density_kg_per_m3, .. } => {
+            let shell = crate::loads::RadialIce { thickness_m: t, density_kg_per_m3: density_kg_per_m3.unwrap_or(0.0) };
+            let d = diameter_m.unwrap_or(0.0);
+            Action::RadialIce { segments, kg_per_m: shell.kg_per_m(d), diameter_factor: shell.diameter_factor(d) }
+        }
+        EventSpec::Ice { linear_density_kg_per_m, .. } => {
+            Action::Ice { segments, delta_kg_per_m: linear_density_kg_per_m.unwrap_or(0.0) }
+        }
+        _ => unreachable!("ice_action is called on ice events"),
+    }
+}
+
 /// The events of an `[[events]]` table on an `n`-segment wire: span fractions resolved to indices, a
 /// break or ice event in the span (first segment, segments) it names (`spans[0]` by default), a failing
 /// string by its support's node. A progressive ice change (a shedding front moving at `v` [m/s]) becomes
 /// one change per segment, at the time the front reaches the segment's middle.
-fn events_of(e: &EventSpec, n: usize, spans: &[(usize, usize)], wire: &Wire, support_node: &[usize]) -> Vec<Event> {
+fn events_of(
+    e: &EventSpec,
+    n: usize,
+    spans: &[(usize, usize)],
+    wire: &Wire,
+    support_node: &[usize],
+    diameter_m: Option<f64>,
+) -> Vec<Event> {
     let (first, n_span) = spans[e.span().unwrap_or(0)];
     let shift = |r: std::ops::Range<usize>| first + r.start..first + r.end;
     let action = match *e {
         EventSpec::Break { at_fraction, .. } => Action::Break { segment: first + break_segment(at_fraction, n_span) },
-        EventSpec::Ice { linear_density_kg_per_m, range, front_speed_m_per_s: Some(v), time_s, .. } => {
+        EventSpec::Ice { range, front_speed_m_per_s: Some(v), time_s, .. } => {
             // The front starts at the range's first end (a < b) and moves toward its second.
             let mut s_m = 0.0;
             return shift(segment_range(range, n_span))
@@ -206,16 +229,11 @@ fn events_of(e: &EventSpec, n: usize, spans: &[(usize, usize)], wire: &Wire, sup
                     let l = wire.reference_length[j];
                     let middle = s_m + 0.5 * l;
                     s_m += l;
-                    Event {
-                        time_s: time_s + middle / v,
-                        action: Action::Ice { segments: j..j + 1, delta_kg_per_m: linear_density_kg_per_m },
-                    }
+                    Event { time_s: time_s + middle / v, action: ice_action(e, j..j + 1, diameter_m) }
                 })
                 .collect();
         }
-        EventSpec::Ice { linear_density_kg_per_m, range, .. } => {
-            Action::Ice { segments: shift(segment_range(range, n_span)), delta_kg_per_m: linear_density_kg_per_m }
-        }
+        EventSpec::Ice { range, .. } => ice_action(e, shift(segment_range(range, n_span)), diameter_m),
         EventSpec::InsulatorFailure { support, .. } | EventSpec::ClampSlip { support, .. } => {
             let node = support_node.get(support).copied().unwrap_or(usize::MAX);
             let insulator = wire.insulators.iter().position(|i| i.node == node).unwrap_or(usize::MAX);
@@ -352,7 +370,8 @@ pub fn build(s: &Scenario) -> Result<Plan, Vec<Problem>> {
     snaps.sort_by(f64::total_cmp);
     snaps.dedup();
     let (a, b) = (wire.position(0), wire.position(n));
-    let mut events: Vec<Event> = s.events.iter().flat_map(|e| events_of(e, n, &spans, &wire, &support_node)).collect();
+    let mut events: Vec<Event> =
+        s.events.iter().flat_map(|e| events_of(e, n, &spans, &wire, &support_node, cd.diameter_m)).collect();
     events.sort_by(|p, q| p.time_s.total_cmp(&q.time_s));
     if let Some(w) = s.loads.wind.as_ref().filter(|w| w.ramp_s > 0.0 && w.initial_scale > 0.0) {
         let ramp = Action::Wind { scale: w.initial_scale, gate: WindGate::Always, ramp_s: w.ramp_s };
@@ -407,12 +426,10 @@ pub fn build(s: &Scenario) -> Result<Plan, Vec<Problem>> {
             // Ice present from the start (events at t = 0) is part of the state whose equilibrium is
             // solved: applied to the wire here and taken off the timeline.
             let (now, later): (Vec<Event>, Vec<Event>) =
-                events.into_iter().partition(|e| e.time_s == 0.0 && matches!(e.action, Action::Ice { .. }));
+                events.into_iter().partition(|e| e.time_s == 0.0 && e.action.is_ice());
             events = later;
             for e in now {
-                if let Action::Ice { segments, delta_kg_per_m } = e.action
-                    && !solver.wire_mut().add_linear_density(segments, delta_kg_per_m)
-                {
+                if e.action.apply_ice(solver.wire_mut()) == Some(false) {
                     return Err(vec![missing("events (ice at t = 0)")]);
                 }
             }

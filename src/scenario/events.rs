@@ -104,14 +104,29 @@ pub enum EventSpec {
         #[serde(default)]
         span: Option<usize>,
     },
-    /// Add ice (or drop it, with a negative value): a change of linear density over a span range.
+    /// Ice over a span range, in one of two forms (exactly one per event): a change of linear density
+    /// (`linear_density_kg_per_m`, added or dropped; it does not enlarge the diameter the wind acts on), or
+    /// a radial shell (`radial_thickness_m` with `density_kg_per_m3`) that replaces the range's shell: mass
+    /// `rho_ice pi t (d + t)` per metre and the wind on the iced diameter `d + 2 t` (docs/loads.md).
     Ice {
         /// event time [s]
         time_s: f64,
         /// change of linear density `delta rho0` [kg/m] per unit unstretched length (negative drops ice), in
         /// [-1e3, 1e3]; applied in time order, no segment may become lighter than the bare wire
         /// (`conductor.linear_density_kg_per_m`, for which the time step is set)
-        linear_density_kg_per_m: f64,
+        #[serde(default)]
+        linear_density_kg_per_m: Option<f64>,
+        /// radial ice thickness `t` [m] of the shell the range carries from now on, in [0, 0.2] (0 sheds
+        /// it; 0.2 m is four times the thickest design glaze of the codes, about 50 mm, and the size of
+        /// the largest rime and wet-snow sleeves; a thicker deposit is no longer a concentric shell);
+        /// needs `conductor.diameter_m` and `density_kg_per_m3`
+        #[serde(default)]
+        radial_thickness_m: Option<f64>,
+        /// density of the ice `rho_ice` [kg/m^3], in [100, 1000]: glaze 900 to 917 (solid ice), hard rime
+        /// 600 to 900, soft rime 300 to 600, wet snow 100 to 850 (IEC 60826 and EN 50341-1 ice types;
+        /// docs/loads.md); with `radial_thickness_m`
+        #[serde(default)]
+        density_kg_per_m3: Option<f64>,
         /// span range `[a, b]` as fractions of the unstretched length [-], selecting at least one segment;
         /// default the whole span
         #[serde(default = "whole_span", deserialize_with = "super::schema::two")]
@@ -346,7 +361,7 @@ mod tests {
         .unwrap();
         assert_eq!(d.events.len(), 2);
         assert!(matches!(d.events[0], EventSpec::Gust { amplitude, gate: GateSpec::Downwind, .. } if amplitude == 1.0));
-        assert!(matches!(d.events[1], EventSpec::Ice { range: [0.0, 1.0], .. }));
+        assert!(matches!(d.events[1], EventSpec::Ice { range: [0.0, 1.0], linear_density_kg_per_m: Some(-0.5), .. }));
         let bad = toml::from_str::<Doc>("[[events]]\ntime_s = 1.0\naction = \"break\"\nat_fractoin = 0.5\n");
         assert!(bad.is_err());
     }

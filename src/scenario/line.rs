@@ -780,14 +780,11 @@ fn assemble(s: &LineScenario, plans: Vec<Plan>, global_only: Vec<Option<Plan>>) 
                 }
             }
             if s.initial.shape == LineShapeSpec::Equilibrium {
-                let (now, later): (Vec<_>, Vec<_>) = std::mem::take(&mut own.events)
-                    .into_iter()
-                    .partition(|e| e.time_s == 0.0 && matches!(e.action, Action::Ice { .. }));
+                let (now, later): (Vec<_>, Vec<_>) =
+                    std::mem::take(&mut own.events).into_iter().partition(|e| e.time_s == 0.0 && e.action.is_ice());
                 own.events = later;
                 for e in now {
-                    if let Action::Ice { segments, delta_kg_per_m } = e.action
-                        && !wire.add_linear_density(segments, delta_kg_per_m)
-                    {
+                    if e.action.apply_ice(&mut wire) == Some(false) {
                         return Err(problem(
                             f("events"),
                             "ice at t = 0".into(),

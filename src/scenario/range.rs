@@ -182,6 +182,11 @@ pub const HEAT_STEP_S: Range = Range::closed(1.0e-3, 600.0, "s");
 /// Radial thickness of an ice shell [m] (0.1 mm to 10 cm).
 pub const ICE_THICKNESS_M: Range = Range::closed(1.0e-4, 0.1, "m");
 
+/// Radial ice thickness of an `ice` event [m]: 0 (shed) to 0.2 m, four times the thickest design glaze of
+/// the codes (about 50 mm) and the size of the largest rime and wet-snow sleeves; thicker deposits are no
+/// longer concentric shells.
+pub const RADIAL_ICE_M: Range = Range::closed(0.0, 0.2, "m");
+
 /// Ice density [kg/m^3]: rime about 100 to 600, glaze 900 (pure ice 917).
 pub const ICE_DENSITY_KG_PER_M3: Range = Range::closed(100.0, 1000.0, "kg/m^3");
 

@@ -7,8 +7,8 @@ use std::ops::Range;
 
 use super::events::{EventSpec, GroundSpec, HeatBoundarySpec, break_segment, node_range, segment_range};
 use super::range::{
-    AXIAL_STIFFNESS_N, EVENT_TEMPERATURE_K, LINEAR_DENSITY_KG_PER_M, RATED_TENSILE_STRENGTH_N, REFERENCE_TEMPERATURE_K,
-    Range as Allowed, THERMAL_EXPANSION_PER_K,
+    AXIAL_STIFFNESS_N, EVENT_TEMPERATURE_K, ICE_DENSITY_KG_PER_M3, LINEAR_DENSITY_KG_PER_M, RADIAL_ICE_M,
+    RATED_TENSILE_STRENGTH_N, REFERENCE_TEMPERATURE_K, Range as Allowed, THERMAL_EXPANSION_PER_K,
 };
 use super::schema::{Scenario, ShapeSpec, SupportSpec, TensionLawSpec, WindLawSpec};
 use super::section::SectionGrid;
@@ -847,6 +847,9 @@ fn check_ground(c: &mut Check, s: &Scenario, gr: &GroundSpec, initial: Option<&[
     }
 }
 
+/// The ice types behind the density range of a radial shell (docs/loads.md).
+const ICE_DENSITY_NOTE: &str = " (glaze 900 to 917, hard rime 600 to 900, soft rime 300 to 600, wet snow 100 to 850)";
+
 /// `[ground]` and `[[events]]`.
 fn check_ground_and_events(
     c: &mut Check,
@@ -925,17 +928,68 @@ fn check_ground_and_events(
                     }
                 }
             }
-            EventSpec::Ice { linear_density_kg_per_m: d, range, front_speed_m_per_s, .. } => {
+            EventSpec::Ice {
+                linear_density_kg_per_m,
+                radial_thickness_m,
+                density_kg_per_m3,
+                range,
+                front_speed_m_per_s,
+                ..
+            } => {
+                // Exactly one form: a change of linear density, or a radial shell (thickness and density).
                 let change =
                     Allowed::closed(-1.0e3, 1.0e3, "kg/m").words("must be a finite change of linear density in");
-                let d_ok = c.range(&f("linear_density_kg_per_m"), d, &change);
+                let d_ok = match (linear_density_kg_per_m, radial_thickness_m, density_kg_per_m3) {
+                    (Some(d), None, None) => c.range(&f("linear_density_kg_per_m"), d, &change),
+                    (None, Some(t), Some(rho)) => {
+                        c.range(&f("radial_thickness_m"), t, &RADIAL_ICE_M);
+                        c.range(&f("density_kg_per_m3"), rho, &ICE_DENSITY_KG_PER_M3.note(ICE_DENSITY_NOTE));
+                        if cd.diameter_m.is_none() {
+                            c.fail(
+                                "conductor.diameter_m",
+                                "(missing)",
+                                "required with an ice event's radial_thickness_m",
+                            );
+                        }
+                        false
+                    }
+                    (None, Some(_), None) => {
+                        c.fail(&f("density_kg_per_m3"), "(missing)", "required with radial_thickness_m");
+                        false
+                    }
+                    (None, None, Some(_)) => {
+                        c.fail(&f("radial_thickness_m"), "(missing)", "required with density_kg_per_m3");
+                        false
+                    }
+                    (Some(d), ..) => {
+                        c.fail(
+                            &f("linear_density_kg_per_m"),
+                            number(d),
+                            "give the ice in one form: linear_density_kg_per_m [kg/m], or radial_thickness_m [m] \
+                             with density_kg_per_m3 [kg/m^3], not both",
+                        );
+                        false
+                    }
+                    (None, None, None) => {
+                        c.fail(
+                            &f("action"),
+                            "\"ice\"",
+                            "needs linear_density_kg_per_m [kg/m], or radial_thickness_m [m] with density_kg_per_m3 \
+                             [kg/m^3]",
+                        );
+                        false
+                    }
+                };
                 if let Some(v) = front_speed_m_per_s {
                     c.range(&f("front_speed_m_per_s"), v, &Allowed::closed(0.1, 1.0e4, "m/s"));
                 }
+                // A shell never takes a segment below the bare wire (it replaces a shell, never the wire's
+                // mass): only the changes of linear density are followed for that.
                 if range_ok(c, &f("range"), range)
                     && let Some((sp, gd)) = span
                     && let Some(seg) = segments_of(c, &f("range"), range, Some(Grid { n: gd.n }))
                     && d_ok
+                    && let Some(d) = linear_density_kg_per_m
                 {
                     ice[sp].push((k, seg, d));
                 }
@@ -1042,7 +1096,7 @@ fn check_ground_and_events(
         let rho = sg.rho;
         for (k, seg, least) in ice_shortfalls(sg.n, ds, rho, ice) {
             let d = match s.events[k] {
-                EventSpec::Ice { linear_density_kg_per_m, .. } => linear_density_kg_per_m,
+                EventSpec::Ice { linear_density_kg_per_m: Some(d), .. } => d,
                 _ => f64::NAN,
             };
             c.fail(

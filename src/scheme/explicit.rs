@@ -579,6 +579,7 @@ impl Explicit {
         let l0 = &w.rest_length[..n];
         let lref = &w.reference_length[..n];
         let intact = &w.intact[..n];
+        let dfac = &w.wind_diameter_factor[..n];
         let [fs1, fs2, fs3] = &mut self.fs;
         let [es1, es2, es3] = &mut self.es;
         let (fs1, fs2, fs3) = (&mut fs1[1..n + 1], &mut fs2[1..n + 1], &mut fs3[1..n + 1]);
@@ -600,7 +601,7 @@ impl Explicit {
             fs1[j] = tension * t[0];
             fs2[j] = tension * t[1];
             fs3[j] = tension * t[2];
-            let e = segment::share::<f64, W, UNIFORM>(load, &st, va, vb, q, lref[j], intact[j]);
+            let e = segment::share::<f64, W, UNIFORM>(load, &st, va, vb, q, lref[j], intact[j], dfac[j]);
             es1[j] = e[0];
             es2[j] = e[1];
             es3[j] = e[2];

@@ -124,7 +124,16 @@ pub fn nodal_loads(s: &Explicit) -> [Vec<f64>; 3] {
         // The segment element's load share at rest (the tension is not a load).
         let props = w.segment_props(j);
         let st = segment::stretch(w.position(j), w.position(j + 1), zero, zero, props.rest_length_m);
-        let e = segment::share::<f64, _, true>(&load, &st, zero, zero, q, props.reference_length_m, props.intact);
+        let e = segment::share::<f64, _, true>(
+            &load,
+            &st,
+            zero,
+            zero,
+            q,
+            props.reference_length_m,
+            props.intact,
+            props.wind_diameter_factor,
+        );
         for k in 0..3 {
             out[k][j] += e[k] * w.exposed[j];
             out[k][j + 1] += e[k] * w.exposed[j + 1];

@@ -76,6 +76,12 @@ pub struct Wire {
     pub segment_mass: Vec<f64>,
     /// 1.0 for an intact segment, 0.0 for a broken one [-], length `N` (the break (3.5))
     pub intact: Vec<f64>,
+    /// the diameter the wind acts on over the conductor's `k = (d + 2 t) / d` [-], length `N`: 1.0 bare,
+    /// radial ice `t` enlarges it ([`Wire::set_radial_ice`]; the aerodynamic law (2.5)-(2.6) scales by it)
+    pub wind_diameter_factor: Vec<f64>,
+    /// mass of the radial ice shell of each segment per unit reference length `rho_ice pi t (d + t)`
+    /// [kg/m], length `N` (0 bare; ice given in kg/m is not in it: it enlarges no diameter)
+    pub radial_ice_kg_per_m: Vec<f64>,
     /// 1.0 while distributed loads (wind, uniform load) act on the node, 0.0 once it has touched the
     /// ground (section 4.4, assumption b) [-], length `N + 1`
     pub exposed: Vec<f64>,
@@ -128,6 +134,8 @@ impl Wire {
             rest_length,
             segment_mass,
             intact: vec![1.0; n_nodes - 1],
+            wind_diameter_factor: vec![1.0; n_nodes - 1],
+            radial_ice_kg_per_m: vec![0.0; n_nodes - 1],
             exposed: vec![1.0; n_nodes],
             temperature_k: vec![REFERENCE_TEMPERATURE_K; n_nodes - 1],
             reference_temperature_k: REFERENCE_TEMPERATURE_K,
@@ -220,6 +228,7 @@ impl Wire {
             rest_length_m: self.rest_length[j],
             reference_length_m: self.reference_length[j],
             intact: self.intact[j],
+            wind_diameter_factor: self.wind_diameter_factor[j],
         }
     }
 
@@ -291,6 +300,31 @@ impl Wire {
         true
     }
 
+    /// Set the radial ice shell of segments `range`: `kg_per_m` [kg/m] per unit reference length (its mass
+    /// `rho_ice pi t (d + t)`) and the wind diameter factor `(d + 2 t) / d` [-]. The shell replaces the one
+    /// the segments had (the segment mass changes by the difference; ice given in kg/m stays). A shell
+    /// that is negative, not finite, or a factor below 1 is refused: the wire is left unchanged and `false`
+    /// returned (validation refuses such events up front).
+    #[must_use = "a refused change leaves the wire unchanged"]
+    pub fn set_radial_ice(&mut self, range: std::ops::Range<usize>, kg_per_m: f64, diameter_factor: f64) -> bool {
+        if range.end > self.segments()
+            || range.start > range.end
+            || !(kg_per_m.is_finite() && kg_per_m >= 0.0)
+            || !(diameter_factor.is_finite() && diameter_factor >= 1.0)
+        {
+            return false;
+        }
+        for j in range {
+            let m = self.segment_mass[j] + (kg_per_m - self.radial_ice_kg_per_m[j]) * self.reference_length[j];
+            // The shell's own mass is what leaves, so the mass stays positive; the bound only guards it.
+            self.segment_mass[j] = m.max(f64::MIN_POSITIVE);
+            self.radial_ice_kg_per_m[j] = kg_per_m;
+            self.wind_diameter_factor[j] = diameter_factor;
+        }
+        self.update_node_masses();
+        true
+    }
+
     /// Set the temperature [K] of segments `range` and rescale their stress-free lengths by thermal
     /// strain: `l0 = L (1 + alpha_t (u - u_ref))`, eqs. (5.5)-(5.6).
     pub fn set_temperature(&mut self, range: std::ops::Range<usize>, temperature_k: f64) {
@@ -306,5 +340,41 @@ impl Wire {
         for j in 0..self.segments() {
             self.rest_length[j] = self.reference_length[j] * (1.0 + a * (self.temperature_k[j] - u0));
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_radial_shell_replaces_the_previous_one_and_sheds_to_the_mass_without_it() {
+        // 20 segments of 8 m at 1 kg/m, 0.5 kg/m of kg/m ice on all, then shells on 5..15.
+        let conductor =
+            Conductor { axial_stiffness_n: 1.0, internal_friction_n_s: 0.0, law: tension::LawKind::TensionOnly };
+        let n = 20;
+        let x = [vec![0.0; n + 1], (0..=n).map(|i| i as f64 * 8.0).collect(), vec![0.0; n + 1]];
+        let mut w = Wire::new(conductor, x, vec![8.0; n], 1.0);
+        assert!(w.add_linear_density(0..n, 0.5));
+        // Masses are exact binary fractions here (1.5, 2.25, 1.75 kg/m on 8 m), so equality is exact.
+        assert!(w.set_radial_ice(5..15, 0.75, 3.0));
+        assert_eq!((w.segment_mass[4], w.segment_mass[5], w.segment_mass[14]), (12.0, 18.0, 18.0));
+        assert_eq!((w.wind_diameter_factor[4], w.wind_diameter_factor[5]), (1.0, 3.0));
+        // A new shell replaces the old (not added to it); the kg/m ice stays.
+        assert!(w.set_radial_ice(10..15, 0.25, 2.0));
+        assert_eq!((w.segment_mass[9], w.segment_mass[10]), (18.0, 14.0));
+        assert_eq!((w.wind_diameter_factor[9], w.wind_diameter_factor[10]), (3.0, 2.0));
+        // Shedding (t = 0: no mass, factor 1) leaves the wire with its kg/m ice only.
+        assert!(w.set_radial_ice(0..n, 0.0, 1.0));
+        assert!(w.segment_mass.iter().all(|&m| m == 12.0));
+        assert!(w.wind_diameter_factor.iter().all(|&k| k == 1.0));
+        assert_eq!(w.mass[10], 12.0);
+        // Invalid shells are refused and change nothing.
+        let before = w.segment_mass.clone();
+        assert!(!w.set_radial_ice(0..n, -0.1, 1.0));
+        assert!(!w.set_radial_ice(0..n, 0.1, 0.5));
+        assert!(!w.set_radial_ice(0..n + 1, 0.1, 1.5));
+        assert!(!w.set_radial_ice(0..n, f64::NAN, 1.5));
+        assert_eq!(w.segment_mass, before);
     }
 }
