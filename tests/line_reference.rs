@@ -10,9 +10,7 @@
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::Path;
 
-#[path = "common/doc_ranges.rs"]
-mod doc_ranges;
-use doc_ranges::{leading_interval, message_interval};
+use crate::common::doc_ranges::{leading_interval, message_interval};
 
 /// A line scenario with every table of the page present (the probe goes into each in turn).
 const FULL: &str = r#"

@@ -39,9 +39,7 @@ use std::path::Path;
 
 use ohl::scenario::Scenario;
 
-#[path = "common/doc_ranges.rs"]
-mod doc_ranges;
-use doc_ranges::{leading_interval, message_interval};
+use crate::common::doc_ranges::{leading_interval, message_interval};
 use ohl::scenario::thermal::ThermalCase;
 
 /// The key and the word no table or choice has.

@@ -1,6 +1,8 @@
 //! Shared helpers of the integration tests.
 #![allow(dead_code)]
 
+pub mod doc_ranges;
+
 use ohl::run::{Outcome, RunOptions, run};
 use ohl::scenario;
 
