@@ -211,20 +211,8 @@ pub fn rate(s: &Scenario, file: &str) -> Result<Rating, RatingError> {
     }
     let top = r.max_temperature_k.unwrap_or(600.0).max(air);
     let (m_top, _) = margin(top)?;
-    let limit_temperature_k = if m_top >= 0.0 {
-        None
-    } else {
-        let (mut lo, mut hi) = (air, top);
-        while hi - lo > 1e-3 {
-            let mid = 0.5 * (lo + hi);
-            if margin(mid)?.0 >= 0.0 {
-                lo = mid;
-            } else {
-                hi = mid;
-            }
-        }
-        Some(lo)
-    };
+    let limit_temperature_k =
+        if m_top >= 0.0 { None } else { Some(last_within(air, top, |t| Ok(margin(t)?.0 >= 0.0))?) };
     // Each limit's ampacity, or why it has none (kept for the message if neither has one).
     let mut reasons = Vec::new();
     let mut ampacity = |limit: String, temp: Option<f64>| match temp.map(|t| (t, steady::ampacity(&model, t))) {
@@ -273,16 +261,7 @@ pub fn rate(s: &Scenario, file: &str) -> Result<Rating, RatingError> {
                 if margin(top)?.0 >= 0.0 {
                     return Ok(None);
                 }
-                let (mut lo, mut hi) = (from, top);
-                while hi - lo > 1e-3 {
-                    let mid = 0.5 * (lo + hi);
-                    if margin(mid)?.0 >= 0.0 {
-                        lo = mid;
-                    } else {
-                        hi = mid;
-                    }
-                }
-                Ok(Some(lo))
+                Ok(Some(last_within(from, top, |t| Ok(margin(t)?.0 >= 0.0))?))
             };
             // A failed static solve beyond T_max leaves the rating as it is; the margin says why it is missing.
             let (found, failed) = match search() {
@@ -320,4 +299,23 @@ pub fn rate(s: &Scenario, file: &str) -> Result<Rating, RatingError> {
         solves: rating_solves,
         other,
     })
+}
+
+/// The last temperature [K] in `[lo, hi]` at which `within` holds, by bisection to 1e-3 K: `within(lo)`
+/// holds and `within(hi)` does not (the caller checked both ends), and the limit's margin decreases
+/// monotonically with temperature (the sag grows with the thermal strain).
+fn last_within(
+    mut lo: f64,
+    mut hi: f64,
+    mut within: impl FnMut(f64) -> Result<bool, RatingError>,
+) -> Result<f64, RatingError> {
+    while hi - lo > 1e-3 {
+        let mid = 0.5 * (lo + hi);
+        if within(mid)? {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    Ok(lo)
 }
