@@ -345,3 +345,37 @@ fn check_mechanical(f: &Path, out: &Path) {
         other => println!("  {other}: no hand check (runs only)"),
     }
 }
+
+/// `ohl rating` with a step whose first current is above the rating already: the step starts above the
+/// limit, and the output says so rather than "does not reach the limit within 24 h" (the temperature never
+/// comes down to it). The start is the first current's steady temperature, the same number the example's
+/// own step line prints (80.20 C at 800 A); the limit 67 C lies below it.
+#[test]
+fn a_step_that_starts_above_the_limit_says_so() {
+    let repo = Path::new(env!("CARGO_MANIFEST_DIR")).parent().unwrap().to_path_buf();
+    let example = repo.join("examples/thermal/drake_span_rating.toml");
+    let text = std::fs::read_to_string(&example).unwrap();
+    assert!(text.contains("max_temperature_k = 373.15"), "the example's limit changed");
+    let dir = std::env::temp_dir().join(format!("ohl-example-step-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    // The example names no other file, so its copy can live in the temporary directory.
+    let low = dir.join("step_above_limit.toml");
+    std::fs::write(&low, text.replace("max_temperature_k = 373.15", "max_temperature_c = 67.0")).unwrap();
+    let rating = |f: &Path| {
+        let o = Command::new(env!("CARGO_BIN_EXE_ohl")).arg("rating").arg(f).arg("--out").arg(&dir).output().unwrap();
+        assert!(o.status.success(), "{}: {}", f.display(), String::from_utf8_lossy(&o.stderr));
+        String::from_utf8_lossy(&o.stdout).into_owned()
+    };
+    let moot = rating(&low);
+    let normal = rating(&example);
+    let start_c = |s: &str, before: &str| -> f64 {
+        let i = s.find(before).unwrap_or_else(|| panic!("no `{before}` in:\n{s}")) + before.len();
+        s[i..].split(" C").next().unwrap().trim().parse().unwrap()
+    };
+    let from_normal = start_c(&normal, "(from ");
+    let from_moot = start_c(&moot, "starts at ");
+    assert_eq!(from_moot, from_normal, "{moot}");
+    assert!(from_moot > 67.0, "{moot}");
+    assert!(moot.contains("already above the limit 67.00 C"), "{moot}");
+    assert!(!moot.contains("does not reach the limit"), "{moot}");
+}

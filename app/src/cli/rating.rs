@@ -88,6 +88,12 @@ pub fn main(args: RatingArgs) -> ExitCode {
                 r.governing_temperature_k - C,
                 t / 60.0
             ),
+            // The first current's steady temperature is above the limit already: the question is moot.
+            None if start > r.governing_temperature_k => out!(
+                "  after a step {from} A -> {to} A: starts at {:.2} C, already above the limit {:.2} C ({from} A exceeds the rating)",
+                start - C,
+                r.governing_temperature_k - C
+            ),
             None => out!("  after a step {from} A -> {to} A: does not reach the limit within 24 h"),
         }
     }
