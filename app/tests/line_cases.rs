@@ -126,3 +126,30 @@ fn g_spacers_start_unloaded_and_the_broken_sub_conductor_reaches_the_ground() {
     let spacer = c.summary.attachments.iter().find(|a| a.kind == "spacer").unwrap();
     assert!(spacer.peak_tension_n.abs() > 1e4, "the spacers carry the broken sub-conductor's tension");
 }
+
+/// `ohl run --quiet` on a line prints no summary but still warns, per conductor, of a peak that comes
+/// from the start (case e: the wind switched on at once at 1 s). The percentage it states is the
+/// conductor's peak over its final tension in `summary.json`, minus one (printed to 0.1 %).
+#[test]
+fn a_quiet_line_run_still_warns_of_start_up_peaks() {
+    let out = std::env::temp_dir().join(format!("ohl-line-quiet-{}", std::process::id()));
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_ohl"))
+        .args(["run", "--quiet", "--out"])
+        .arg(&out)
+        .arg(repo().join("cases/e_three_phases_wind.toml"))
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(o.stdout.is_empty(), "--quiet printed: {}", String::from_utf8_lossy(&o.stdout));
+    let stderr = String::from_utf8_lossy(&o.stderr);
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    let a = &summary["conductors"][0];
+    assert_eq!(a["name"], "A");
+    let percent =
+        100.0 * (a["peak_max_tension_n"].as_f64().unwrap() / a["final_max_tension_n"].as_f64().unwrap() - 1.0);
+    let expected =
+        format!("e_three_phases_wind.toml: A: max_tension peak {:.1} N", a["peak_max_tension_n"].as_f64().unwrap());
+    assert!(stderr.contains(&expected), "no `{expected}` in:\n{stderr}");
+    assert!(stderr.contains(&format!("{percent:.1} % above its end value")), "{percent:.1} % not in:\n{stderr}");
+}

@@ -356,6 +356,13 @@ fn run_line(path: &std::path::Path, out: &std::path::Path, quiet: bool, dry_run:
             if !quiet {
                 print_line_summary(&o.summary, out);
             }
+            // A peak that comes from the start (ohl::output::start_up) is no design value: said on stderr,
+            // with --quiet too (as for a single conductor).
+            for c in &o.summary.conductors {
+                for w in c.start_up.as_ref().map(|u| u.describe()).unwrap_or_default() {
+                    err!("warning: {file}: {}: {w}", c.name);
+                }
+            }
             ExitCode::SUCCESS
         }
         Err(LineRunError::Unstable { instability, .. }) => {
@@ -385,10 +392,6 @@ fn print_line_summary(s: &ohl::run::line::LineSummary, out: &std::path::Path) {
                 _ => "",
             }
         );
-        // A peak that comes from the start (ohl::output::start_up) is no design value: said on stderr.
-        for w in c.start_up.as_ref().map(|u| u.describe()).unwrap_or_default() {
-            err!("warning: {}: {w}", c.name);
-        }
     }
     // A distance, or why there is none (a conductor broken in every segment).
     let metres = |x: Option<f64>| x.map_or_else(|| "none (no segment left)".to_string(), |x| format!("{x:.3} m"));
