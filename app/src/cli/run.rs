@@ -202,30 +202,23 @@ fn print_summary(s: &ohl::output::Summary) {
             p.components[1].time_s,
             kn(p.components[2].value_n),
             p.components[2].time_s,
-            kn((f[0] * f[0] + f[1] * f[1] + f[2] * f[2]).sqrt()),
+            magnitude_kn(f),
             kn(f[1]),
             kn(f[2])
         );
     }
     out!("  spans at the end (sag: chord to conductor at the horizontal middle; H: horizontal tension):");
-    out!(
-        "    {:>7} {:>9} {:>14} {:>9} {:>11} | {:>12} {:>8}",
-        "span",
-        "sag [m]",
-        "clearance [m]",
-        "H [kN]",
-        "max T [kN]",
-        "peak T [kN]",
-        "at [s]"
-    );
+    out!("{} | {:>12} {:>8}", SPAN_HEADER, "peak T [kN]", "at [s]");
     for sp in &s.spans {
         out!(
-            "    {:>7} {:>9} {:>14} {:>9} {:>11.2} | {:>12.2} {:>8.3}",
-            sp.span,
-            or_broken(sp.final_sag_m, 3, 1.0),
-            sp.final_least_clearance_m.map_or("-".into(), |c| format!("{c:.3}")),
-            or_broken(sp.final_horizontal_tension_n, 2, 1e-3),
-            kn(sp.final_max_tension_n),
+            "{} | {:>12.2} {:>8.3}",
+            span_row(
+                sp.span,
+                sp.final_sag_m,
+                sp.final_least_clearance_m,
+                sp.final_horizontal_tension_n,
+                sp.final_max_tension_n
+            ),
             kn(sp.peaks.max_tension.value_n),
             sp.peaks.max_tension.time_s
         );
@@ -233,9 +226,31 @@ fn print_summary(s: &ohl::output::Summary) {
     out!("  max tension: {:.2} kN; throughput {:.3e} node-steps/s", kn(s.final_max_tension_n), s.node_steps_per_second);
 }
 
+/// The magnitude of a force `[F1, F2, F3]` [N] in kN.
+fn magnitude_kn(f: [f64; 3]) -> f64 {
+    kn((f[0] * f[0] + f[1] * f[1] + f[2] * f[2]).sqrt())
+}
+
 /// A span quantity scaled by `scale` with `digits` decimals, or "broken" where the span has none.
 fn or_broken(x: Option<f64>, digits: usize, scale: f64) -> String {
     x.map_or("broken".into(), |v| format!("{:.*}", digits, v * scale))
+}
+
+/// The columns of a span's state, the same at the end of the run and in the residual static state
+/// ([`span_row`]).
+const SPAN_HEADER: &str = "       span   sag [m]  clearance [m]    H [kN]  max T [kN]";
+
+/// One span's row under [`SPAN_HEADER`]: sag [m], least clearance [m] (`-` without a ground), horizontal
+/// and largest tension [kN]; "broken" where a broken span has no sag or horizontal tension.
+fn span_row(span: usize, sag_m: Option<f64>, clearance_m: Option<f64>, h_n: Option<f64>, max_t_n: f64) -> String {
+    format!(
+        "    {:>7} {:>9} {:>14} {:>9} {:>11.2}",
+        span,
+        or_broken(sag_m, 3, 1.0),
+        clearance_m.map_or("-".into(), |c| format!("{c:.3}")),
+        or_broken(h_n, 2, 1e-3),
+        kn(max_t_n)
+    )
 }
 
 /// The residual static state of `--static-after`, beside the run's peaks.
@@ -267,23 +282,16 @@ fn print_residual(r: &ohl::statics::residual::Residual, s: &ohl::output::Summary
             "    {:>7} {:>9.1} | {:>9.2} {:>9.2} {:>9.2} | {:>13}",
             k,
             sup.position_m[1],
-            kn((f[0] * f[0] + f[1] * f[1] + f[2] * f[2]).sqrt()),
+            magnitude_kn(f),
             kn(f[1]),
             kn(f[2]),
             ratio
         );
     }
-    out!("    {:>7} {:>9} {:>14} {:>9} {:>11}", "span", "sag [m]", "clearance [m]", "H [kN]", "max T [kN]");
+    out!("{SPAN_HEADER}");
     for sp in &r.spans {
         let st = &sp.state;
-        out!(
-            "    {:>7} {:>9} {:>14} {:>9} {:>11.2}",
-            sp.span,
-            or_broken(st.sag_m, 3, 1.0),
-            st.least_clearance_m.map_or("-".into(), |c| format!("{c:.3}")),
-            or_broken(st.horizontal_tension_n, 2, 1e-3),
-            kn(st.max_tension_n)
-        );
+        out!("{}", span_row(sp.span, st.sag_m, st.least_clearance_m, st.horizontal_tension_n, st.max_tension_n));
     }
 }
 
@@ -436,7 +444,7 @@ fn print_line_summary(s: &ohl::run::line::LineSummary, out: &std::path::Path) {
             kn(p[0]),
             kn(p[1]),
             kn(p[2]),
-            kn((f[0] * f[0] + f[1] * f[1] + f[2] * f[2]).sqrt()),
+            magnitude_kn(f),
             kn(f[0]),
             kn(f[1]),
             kn(f[2])
