@@ -102,7 +102,8 @@ pub fn main(args: RatingArgs) -> ExitCode {
         "limit_temperature_k": r.limit_temperature_k, "at_air_temperature_m": r.at_air_m,
         "clearance_ampacity_a": r.clearance_ampacity_a, "temperature_ampacity_a": r.temperature_ampacity_a,
         "rating_a": r.rating_a, "governing_temperature_k": r.governing_temperature_k, "at_rating_m": r.at_rating_m,
-        "step": r.step.map(|(from, to, start, when)| json!({"from_a": from, "to_a": to, "initial_temperature_k": start, "time_to_limit_s": when})),
+        "step": r.step.map(|(from, to, start, when)| json!({"from_a": from, "to_a": to, "initial_temperature_k": start,
+            "initial_temperature_c": start - C, "time_to_limit_s": when})),
         "static_solves": r.solves,
         "limit_temperature_c": r.limit_temperature_k.map(|t| t - C),
         "governing_temperature_c": r.governing_temperature_k - C,
@@ -110,10 +111,6 @@ pub fn main(args: RatingArgs) -> ExitCode {
             "temperature_c": o.temperature_k.map(|t| t - C), "current_a": o.current_a, "static_solves": o.solves,
             "failed": o.failed})),
     });
-    let mut doc = doc;
-    if let (Some(step), Some((_, _, start, _))) = (doc.get_mut("step").and_then(|s| s.as_object_mut()), r.step) {
-        step.insert("initial_temperature_c".into(), json!(start - C));
-    }
     if let Err(e) = std::fs::create_dir_all(&args.out).and_then(|_| {
         std::fs::write(args.out.join("rating.json"), serde_json::to_string_pretty(&doc).unwrap_or_default())
     }) {
