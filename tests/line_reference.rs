@@ -36,27 +36,25 @@ shape = "strung"
 end_time_s = 1.0
 "#;
 
-/// The documented field paths: the first column of the page's table (backticked), e.g.
-/// `line.conductors[].bundle.diameter_m`.
-fn documented() -> BTreeSet<String> {
+/// The table rows of the page's scenario section (lines starting with ``| ` ``): what [`documented`]
+/// and [`documented_rows`] read their columns from.
+fn table_rows() -> Vec<String> {
     let page = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/line.md")).unwrap();
     let start = page.find("## Scenario format").expect("the page has its scenario section");
     let end = page[start..].find("\n## ").map_or(page.len(), |e| start + e);
-    page[start..end]
-        .lines()
-        .filter(|l| l.starts_with("| `"))
-        .filter_map(|l| l.split('`').nth(1).map(String::from))
-        .collect()
+    page[start..end].lines().filter(|l| l.starts_with("| `")).map(String::from).collect()
+}
+
+/// The documented field paths: the first column of the page's table (backticked), e.g.
+/// `line.conductors[].bundle.diameter_m`.
+fn documented() -> BTreeSet<String> {
+    table_rows().iter().filter_map(|l| l.split('`').nth(1).map(String::from)).collect()
 }
 
 /// The rows of the page's table: (field path, the *unit, range* cell).
 fn documented_rows() -> Vec<(String, String)> {
-    let page = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/line.md")).unwrap();
-    let start = page.find("## Scenario format").expect("the page has its scenario section");
-    let end = page[start..].find("\n## ").map_or(page.len(), |e| start + e);
-    page[start..end]
-        .lines()
-        .filter(|l| l.starts_with("| `"))
+    table_rows()
+        .iter()
         .filter_map(|l| {
             let cells: Vec<&str> = l.split('|').map(str::trim).collect();
             Some((cells.get(1)?.trim_matches('`').to_string(), cells.get(2)?.to_string()))
