@@ -9,6 +9,7 @@
 //!   constitutive law, distributed loads;
 //! - [`line`]: a line of several conductors (phases, earth wires, bundles) on shared supports, joined by
 //!   attachments named by handle; [`element`]: the force elements written once over `f64` and dual numbers;
+//! - [`conductor`]: real conductors (two materials, stress-strain polynomials, permanent set, creep);
 //! - [`heat`]: heat conduction along the wire (5.1)-(5.4) and thermal expansion (5.5)-(5.6);
 //! - [`scheme`]: the numerical schemes (explicit leapfrog, smoothing, Courant step);
 //! - [`statics`]: the static equilibrium of the same discrete equations (Newton, faer);
@@ -24,6 +25,7 @@
 //! The library holds the model only: the command line `ohl`, the paper cases, the plots, the benchmark
 //! and the progress bar are the applications of the `ohl-app` crate (`app/`).
 
+pub mod conductor;
 pub mod element;
 pub mod events;
 pub mod exact;
