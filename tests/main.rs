@@ -27,4 +27,5 @@ mod statics;
 mod terrain;
 mod thermal_conductor;
 mod thermal_linerate;
+mod two_material;
 mod wind_arc;

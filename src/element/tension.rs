@@ -89,6 +89,9 @@ pub enum LawKind {
     TensionOnly,
     /// [`Linear`]: compression allowed.
     Linear,
+    /// the two-material law of a real conductor with each segment's history
+    /// ([`crate::wire::material`]; the wire holds it, [`crate::wire::Wire::set_two_material`])
+    TwoMaterial,
 }
 
 #[cfg(test)]

@@ -267,6 +267,10 @@ impl Explicit {
             self.compute_segment_forces();
         }
         self.fresh = false;
+        if let Some(m) = self.wire.material.as_mut() {
+            // The level n the step advances is reached: the materials remember its strains.
+            m.advance(&self.wire.temperature_k);
+        }
         let kick = 0.5 * (self.dt_prev + dt);
         let damp = self.params.mass_damping_per_s != 0.0;
         let smooth = self.params.smoothing > 0.0;
@@ -544,7 +548,53 @@ impl Explicit {
             (LawKind::TensionOnly, false, false) => self.segment_pass::<TensionOnly, W, false, false>(load, q),
             (LawKind::Linear, true, false) => self.segment_pass::<Linear, W, true, false>(load, q),
             (LawKind::Linear, false, false) => self.segment_pass::<Linear, W, false, false>(load, q),
+            (LawKind::TwoMaterial, true, true) => self.two_material_pass::<W, true, true>(load, q),
+            (LawKind::TwoMaterial, false, true) => self.two_material_pass::<W, false, true>(load, q),
+            (LawKind::TwoMaterial, true, false) => self.two_material_pass::<W, true, false>(load, q),
+            (LawKind::TwoMaterial, false, false) => self.two_material_pass::<W, false, false>(load, q),
         }
+    }
+
+    /// The segment pass of a two-material wire ([`crate::wire::material`]): the segment element with each
+    /// segment's tension from the conductor's law at the segment's temperature and history; the strain of
+    /// each segment is recorded for [`Explicit::step`] to fold into the history. A pass of its own (the
+    /// law's branches keep it scalar), so the paper's law's passes are untouched.
+    fn two_material_pass<W: SegmentLoad, const UNIFORM: bool, const VISCOUS: bool>(&mut self, load: &W, q: [f64; 3]) {
+        let w = &mut self.wire;
+        let n = w.rest_length.len();
+        let Some(mat) = w.material.as_mut() else { unreachable!("LawKind::TwoMaterial without its material") };
+        let mut kmax = order_key(0.0);
+        for j in 0..n {
+            let (va, vb) = ([w.v[0][j], w.v[1][j], w.v[2][j]], [w.v[0][j + 1], w.v[1][j + 1], w.v[2][j + 1]]);
+            let (xa, xb) = ([w.x[0][j], w.x[1][j], w.x[2][j]], [w.x[0][j + 1], w.x[1][j + 1], w.x[2][j + 1]]);
+            let st = segment::stretch(xa, xb, va, vb, w.rest_length[j]);
+            let theta = w.temperature_k[j];
+            let tension = if VISCOUS {
+                mat.tension(j, st.e, st.edot, w.internal_friction_n_s[j], theta) * w.intact[j]
+            } else {
+                mat.tension(j, st.e, 0.0, 0.0, theta) * w.intact[j]
+            };
+            mat.last_strain[j] = if w.intact[j] > 0.0 { st.e } else { f64::NEG_INFINITY };
+            kmax = kmax.max(order_key(tension));
+            let t = st.t;
+            self.fs[0][j + 1] = tension * t[0];
+            self.fs[1][j + 1] = tension * t[1];
+            self.fs[2][j + 1] = tension * t[2];
+            let e = segment::share::<f64, W, UNIFORM>(
+                load,
+                &st,
+                va,
+                vb,
+                q,
+                w.reference_length[j],
+                w.intact[j],
+                w.wind_diameter_factor[j],
+            );
+            for k in 0..3 {
+                self.es[k][j + 1] = e[k];
+            }
+        }
+        self.max_tension_n = from_order_key(kmax);
     }
 
     isa_dispatch! {
@@ -829,9 +879,10 @@ impl Explicit {
         }
         for j in 0..n {
             let (ea, e) = (w.axial_stiffness_n[j], w.strain(j));
-            let energy = match w.law {
-                LawKind::TensionOnly => TensionOnly::energy_density(ea, e),
-                LawKind::Linear => Linear::energy_density(ea, e),
+            let energy = match (w.law, &w.material) {
+                (LawKind::TwoMaterial, Some(m)) => m.energy_density(j, e, w.temperature_k[j]),
+                (LawKind::Linear, _) => Linear::energy_density(ea, e),
+                _ => TensionOnly::energy_density(ea, e),
             };
             d.elastic_j += energy * w.rest_length[j] * w.intact[j];
             let tension = self.segment_tension(j);
@@ -898,9 +949,10 @@ impl Explicit {
         let w = &self.wire;
         let (ea, eta) = (w.axial_stiffness_n[j], w.internal_friction_n_s[j]);
         let st = segment::stretch(w.position(j), w.position(j + 1), w.velocity(j), w.velocity(j + 1), w.rest_length[j]);
-        let t = match w.law {
-            LawKind::TensionOnly => TensionOnly::tension(ea, eta, st.e, st.edot),
-            LawKind::Linear => Linear::tension(ea, eta, st.e, st.edot),
+        let t = match (w.law, &w.material) {
+            (LawKind::TwoMaterial, Some(m)) => m.tension(j, st.e, st.edot, eta, w.temperature_k[j]),
+            (LawKind::Linear, _) => Linear::tension(ea, eta, st.e, st.edot),
+            _ => TensionOnly::tension(ea, eta, st.e, st.edot),
         };
         t * w.intact[j]
     }

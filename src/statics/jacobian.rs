@@ -69,12 +69,25 @@ pub fn segment_forces<const S: usize>(s: &Explicit, j: usize, floor_n: Option<f6
     let mut f = match w.law {
         LawKind::Linear => evaluate::<Dual<S>, Linear, _, true, true>(xa, xb, va, vb, &props, &load, q),
         LawKind::TensionOnly => evaluate::<Dual<S>, TensionOnly, _, true, true>(xa, xb, va, vb, &props, &load, q),
+        LawKind::TwoMaterial => {
+            // The segment element with the conductor's law in place of (3.4), its history held fixed
+            // (the same `Material::tension` the kernel evaluates on f64).
+            let mut f = evaluate::<Dual<S>, Linear, _, true, true>(xa, xb, va, vb, &props, &load, q);
+            let m = w.material.as_ref().expect("LawKind::TwoMaterial without its material");
+            let theta = w.temperature_k[j];
+            f.tension = m.tension(j, f.stretch.e, f.stretch.edot, props.internal_friction_n_s, theta) * props.intact;
+            f
+        }
     };
-    if floor_n.is_some() && w.law == LawKind::TensionOnly {
+    if floor_n.is_some() && w.law != LawKind::Linear {
         // Regularised: a slack segment is linearised with the linear law (axial stiffness EA / l0).
         let raw = Linear::tension(props.axial_stiffness_n, props.internal_friction_n_s, f.stretch.e, f.stretch.edot);
-        if raw.v <= 0.0 || f.stretch.e.v <= 0.0 {
+        if w.law == LawKind::TensionOnly && (raw.v <= 0.0 || f.stretch.e.v <= 0.0) {
             f.tension = raw * props.intact;
+        } else if w.law == LawKind::TwoMaterial && f.tension.v <= 0.0 {
+            // Slack two-material segment (its strain below both materials' slack strains): the linear
+            // law's derivative at the value zero.
+            f.tension = (raw - raw.v) * props.intact;
         }
     }
     // Geometric stiffness with at least the floor: `T t` gains `(T_min - T) t`, a constant times `t`,

@@ -11,9 +11,11 @@
 //! components zero.
 
 pub mod insulator;
+pub mod material;
 pub mod section;
 
 pub use insulator::{Crossarm, Insulator};
+pub use material::Material;
 
 use crate::element::tension;
 
@@ -103,6 +105,9 @@ pub struct Wire {
     /// whether every free node has both weights equal to 1 (a uniform wire, no point masses), where the
     /// weighted smoothing is exactly the paper's (3.3) and the kernel takes the unweighted path
     pub uniform_smoothing: bool,
+    /// the two-material law and each segment's history when `law` is [`tension::LawKind::TwoMaterial`]
+    /// ([`material`]; set with [`Wire::set_two_material`]), `None` otherwise
+    pub material: Option<Material>,
 }
 
 impl Wire {
@@ -144,6 +149,7 @@ impl Wire {
             insulators: Vec::new(),
             smoothing_weight: [vec![0.0; n_nodes], vec![0.0; n_nodes]],
             uniform_smoothing: true,
+            material: None,
         };
         wire.update_node_masses();
         wire
@@ -325,8 +331,35 @@ impl Wire {
         true
     }
 
+    /// Let every segment follow the two-material law `law` ([`material`]), virgin on the curve `curve`:
+    /// the law becomes [`tension::LawKind::TwoMaterial`], the reference lengths `L` are read as the
+    /// conductor's lengths at the law's reference temperature, the stress-free lengths stay at `L` (the
+    /// law takes each segment's temperature), and the axial stiffness `EA` of every segment becomes the
+    /// law's stiffness bound [`Material::max_stiffness`] (the time step's and the static scales' `EA`).
+    pub fn set_two_material(&mut self, law: crate::conductor::TwoMaterial, curve: crate::conductor::CurveKind) {
+        let m = Material::virgin(law, curve, self.segments());
+        self.axial_stiffness_n.fill(m.max_stiffness());
+        self.law = tension::LawKind::TwoMaterial;
+        self.material = Some(m);
+        self.update_rest_lengths();
+    }
+
+    /// Moves each two-material segment's history up to its present strain (a static "stretch": after a
+    /// static solve under a heavy load, the conductor keeps its permanent set). Nothing for other laws.
+    pub fn load_history(&mut self) {
+        let strains: Vec<f64> = (0..self.segments()).map(|j| self.strain(j)).collect();
+        if let Some(m) = self.material.as_mut() {
+            for (j, &e) in strains.iter().enumerate() {
+                if self.intact[j] > 0.0 {
+                    m.load(j, e, self.temperature_k[j]);
+                }
+            }
+        }
+    }
+
     /// Set the temperature [K] of segments `range` and rescale their stress-free lengths by thermal
-    /// strain: `l0 = L (1 + alpha_t (u - u_ref))`, eqs. (5.5)-(5.6).
+    /// strain: `l0 = L (1 + alpha_t (u - u_ref))`, eqs. (5.5)-(5.6) (a two-material segment keeps `l0 = L`:
+    /// its law takes the temperature, [`material`]).
     pub fn set_temperature(&mut self, range: std::ops::Range<usize>, temperature_k: f64) {
         for j in range {
             self.temperature_k[j] = temperature_k;
@@ -336,6 +369,10 @@ impl Wire {
 
     /// Recompute every stress-free length from `temperature_k` (after a heat-equation step wrote it).
     pub fn update_rest_lengths(&mut self) {
+        if self.material.is_some() {
+            self.rest_length.copy_from_slice(&self.reference_length);
+            return;
+        }
         let (a, u0) = (self.thermal_expansion_per_k, self.reference_temperature_k);
         for j in 0..self.segments() {
             self.rest_length[j] = self.reference_length[j] * (1.0 + a * (self.temperature_k[j] - u0));
