@@ -91,6 +91,21 @@ const CASES: &[(&str, &[&str])] = &[
         ],
     ),
     ("ice_dropped_twice", &["field `events[2].linear_density_kg_per_m` = -0.3", "at 0.7", "kg/m"]),
+    // Issue 24, the two-material law: it needs a catalogue conductor with stress-strain data (and a creep
+    // curve for curve = "creep"); a curve belongs to it only.
+    (
+        "two_material_without_catalog",
+        &["field `conductor.tension_law` = \"two_material\"", "needs conductor.catalog", "\"ACSR Drake\""],
+    ),
+    (
+        "two_material_creep_without_creep_curve",
+        &["field `conductor.curve` = \"creep\"", "\"ACSR Linnet\" has no creep curve", "use \"initial\""],
+    ),
+    (
+        "curve_without_two_material",
+        &["field `conductor.curve` = \"initial\"", "only with conductor.tension_law = \"two_material\""],
+    ),
+    ("curve_unknown", &["unknown variant `final`", "initial", "creep"]),
     // Issue 23, wind on ice: radial ice in exactly one form, in range, on a conductor with a diameter.
     ("ice_in_two_forms", &["field `events[0].linear_density_kg_per_m` = 0.5", "in one form", "not both"]),
     ("ice_thickness_negative", &["field `events[0].radial_thickness_m` = -0.01", "[0, 0.2] m"]),

@@ -297,7 +297,7 @@ pub fn build(s: &Scenario) -> Result<Plan, Vec<Problem>> {
             let n = g.segments;
             let (x, _) = initial_nodes(s, g);
             let law = match cd.tension_law {
-                TensionLawSpec::TensionOnly => LawKind::TensionOnly,
+                TensionLawSpec::TensionOnly | TensionLawSpec::TwoMaterial => LawKind::TensionOnly,
                 TensionLawSpec::Linear => LawKind::Linear,
             };
             let conductor = Conductor { axial_stiffness_n: ea, internal_friction_n_s: s.numerics.eta_n_s, law };
@@ -309,6 +309,9 @@ pub fn build(s: &Scenario) -> Result<Plan, Vec<Problem>> {
     wire.thermal_expansion_per_k = cd.thermal_expansion_per_k;
     wire.reference_temperature_k = cd.reference_temperature_k;
     wire.temperature_k.fill(cd.reference_temperature_k);
+    if let Some((law, curve)) = d.material {
+        wire.set_two_material(law, curve);
+    }
 
     let wind = s.loads.wind.as_ref().map(|w| {
         let norm: f64 = w.direction.iter().map(|v| v * v).sum::<f64>().sqrt();

@@ -16,6 +16,7 @@ pub mod section;
 pub mod temperature;
 pub mod thermal;
 pub mod thermal_conductor;
+pub mod two_material;
 pub mod validate;
 pub mod warnings;
 pub mod work;

@@ -71,6 +71,20 @@ pub enum TensionLawSpec {
     TensionOnly,
     /// `T = EA e + eta de/dt`, compression allowed (analytic tests)
     Linear,
+    /// the two-material law of the catalogue conductor `conductor.catalog` (aluminium on a steel core,
+    /// each material's stress-strain polynomial, permanent set, own thermal strain: the knee point;
+    /// [`crate::wire::material`]), with `eta de/dt` clamped like the tension-only law
+    TwoMaterial,
+}
+
+/// The curve a two-material conductor's materials follow when loaded beyond their history.
+#[derive(Clone, Copy, Debug, Deserialize, PartialEq, Eq)]
+#[serde(rename_all = "snake_case")]
+pub enum CurveSpec {
+    /// the virgin curve: the conductor as strung (default)
+    Initial,
+    /// the curve after long-term creep (the published 10-year creep curve)
+    Creep,
 }
 
 /// The conductor. Give the axial stiffness either directly (`axial_stiffness_n`) or as Young's modulus
@@ -105,6 +119,10 @@ pub struct ConductorSpec {
     /// constitutive law; default `"tension_only"`
     #[serde(default)]
     pub tension_law: TensionLawSpec,
+    /// with `tension_law = "two_material"`: the curve its materials follow, `"initial"` (default, as
+    /// strung) or `"creep"` (after the long-term creep); not allowed with the other laws
+    #[serde(default)]
+    pub curve: Option<CurveSpec>,
     /// linear thermal expansion coefficient `alpha_t` [1/K], in [0, 1e-3], eq. (5.5); default 0 (section
     /// 5.4 gives 23.8e-6 for aluminium; metals are 1e-5 to 3e-5)
     #[serde(default)]

@@ -149,6 +149,8 @@ pub(crate) struct Derived {
     pub dt_s: Option<f64>,
     /// the built line of a `[section]`
     pub section: Option<SectionGrid>,
+    /// the two-material law and its curve (`conductor.tension_law = "two_material"`)
+    pub material: Option<(crate::conductor::TwoMaterial, crate::conductor::CurveKind)>,
 }
 
 /// Every problem of a scenario, and what was derived from its valid parts.
@@ -318,7 +320,9 @@ pub(crate) fn check(s: &Scenario) -> (Vec<Problem>, Derived) {
         }
         (None, Some(sec)) => {
             let law = match cd.tension_law {
-                TensionLawSpec::TensionOnly => LawKind::TensionOnly,
+                // A section is strung with the conductor's EA (tension-only) also for a two-material law,
+                // which the builder then installs (docs/scenario.md, "two_material").
+                TensionLawSpec::TensionOnly | TensionLawSpec::TwoMaterial => LawKind::TensionOnly,
                 TensionLawSpec::Linear => LawKind::Linear,
             };
             let conductor = ea.filter(|_| rho_ok).map(|ea| {
@@ -417,7 +421,14 @@ pub(crate) fn check(s: &Scenario) -> (Vec<Problem>, Derived) {
     if let Some(v) = nm.max_speed_m_per_s {
         c.range("numerics.max_speed_m_per_s", v, &Allowed::open_closed(0.0, 1.0e7, "m/s").at_most());
     }
-    // Stability limits need EA, rho0, the segment length: check them only when those are valid.
+    // Stability limits need EA, rho0, the segment length: check them only when those are valid. A
+    // two-material conductor's EA is its law's stiffness bound (wire::material), not the catalogue's EA.
+    let material = super::two_material::check(&mut c, cd);
+    let ea = match &material {
+        Some((law, curve)) => ea.map(|_| crate::wire::Material::virgin(*law, *curve, 0).max_stiffness()),
+        None => ea,
+    };
+    derived.material = material;
     derived.ea_n = ea;
     derived.chord_m = chord;
     derived.length_m = length.filter(|l| l.is_finite() && *l > 0.0);

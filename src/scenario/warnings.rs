@@ -65,7 +65,7 @@ pub fn warnings(s: &Scenario) -> Vec<Warning> {
         w.push(Warning { field: field.into(), value: number(x), reason: reason.into() })
     };
     let n = &s.numerics;
-    if s.conductor.tension_law == TensionLawSpec::TensionOnly
+    if matches!(s.conductor.tension_law, TensionLawSpec::TensionOnly | TensionLawSpec::TwoMaterial)
         && n.smoothing == 0.0
         && n.eta_n_s == 0.0
         && n.mass_damping_per_s == 0.0
