@@ -365,3 +365,97 @@ fn a_span_stretched_by_ice_hangs_lower_as_the_elastic_catenary_of_its_permanent_
     // node, a displacement of that over the transverse stiffness; bounded here by 1e-6 m.
     assert!(v_end < 1e-9 && dist < 1e-6, "{v_end} {dist}");
 }
+
+#[test]
+fn a_section_with_suspension_strings_stretched_by_ice_hangs_as_its_permanent_set_says() {
+    // Three spans of 250, 350 and 300 m of Drake (dead-ends at 30 m, two suspension strings of 2.5 m,
+    // 60 kg, EA 3e7 N, from pivots at 32.5 m), strung at 25 kN with the strings plumb (lengths from the
+    // catalogue-like EA 3.6e7 N), 30 segments per span, then run with Drake's two-material law at 15 C:
+    // static solve bare (virgin), 3 kg/m of ice, static stretch (Wire::load_history), ice removed, static
+    // solve; then the same with the ice applied and removed in the explicit kernel with damping. The
+    // result must be the equilibrium of the linear equivalent (unloaded_equivalent) solved from the
+    // virgin shape, strings included.
+    use ohl::wire::section::{Section, Span, Stringing, Support, build};
+    let theta = 288.15;
+    let suspension = |y: f64| Support::Suspension {
+        pivot_m: [0.0, y, 32.5],
+        length_m: 2.5,
+        mass_kg: 60.0,
+        stiffness_n: 3.0e7,
+        crossarm: None,
+    };
+    let c = Conductor { axial_stiffness_n: 3.6e7, internal_friction_n_s: 0.0, law: LawKind::TensionOnly };
+    let span = |_| Span { conductor: c, linear_density_kg_per_m: RHO, segments: 30, stringing: Stringing::HorizontalTension(25e3) };
+    let sec = Section {
+        supports: vec![
+            Support::DeadEnd { point_m: [0.0, 0.0, 30.0] },
+            suspension(250.0),
+            suspension(600.0),
+            Support::DeadEnd { point_m: [0.0, 900.0, 30.0] },
+        ],
+        spans: (0..3).map(span).collect(),
+        gravity_m_per_s2: G,
+    };
+    let (mut virgin, layout) = build(&sec).unwrap();
+    let n = virgin.segments();
+    virgin.set_two_material(drake(), CurveKind::Initial);
+    virgin.set_temperature(0..n, theta);
+    let mids: Vec<usize> = (0..3).map(|k| (layout.first_node[k] + layout.first_node[k + 1]) / 2).collect();
+    let heights = |w: &Wire| mids.iter().map(|&i| w.x[2][i]).collect::<Vec<_>>();
+    let opts = StaticOptions::default();
+    let linear_check = |two: &Wire, label: &str| {
+        let (eq, range) = unloaded_equivalent(two, &virgin, theta);
+        for j in 0..n {
+            let e = two.strain(j);
+            assert!(e > range[j].0 && e < range[j].1, "{label}: segment {j}: strain {e} outside {:?}", range[j]);
+        }
+        // Keep the strings: the equivalent is the two-material wire with the linear law per segment.
+        let mut w = two.clone();
+        w.law = LawKind::Linear;
+        w.material = None;
+        w.rest_length.copy_from_slice(&eq.rest_length);
+        w.axial_stiffness_n.copy_from_slice(&eq.axial_stiffness_n);
+        for k in 0..3 {
+            w.x[k].copy_from_slice(&virgin.x[k]);
+        }
+        let mut lin = solver(w, 1e-4, 0.0);
+        statics::solve(&mut lin, &opts).unwrap();
+        let dist = distance(two, lin.wire());
+        eprintln!("{label}: mid-span heights {:?} m, equivalent {:?} m; largest node distance {dist:.3e} m", heights(two), heights(lin.wire()));
+        dist
+    };
+    let mut s = solver(virgin.clone(), 1e-4, 0.0);
+    statics::solve(&mut s, &opts).unwrap();
+    let before = heights(s.wire());
+    assert!(s.wire_mut().add_linear_density(0..n, 3.0));
+    statics::solve(&mut s, &opts).unwrap();
+    s.wire_mut().load_history();
+    assert!(s.wire_mut().add_linear_density(0..n, -3.0));
+    statics::solve(&mut s, &opts).unwrap();
+    let after = heights(s.wire());
+    eprintln!("static: mid-span heights bare virgin {before:?} m, after the ice {after:?} m");
+    assert!(before.iter().zip(&after).all(|(b, a)| a < &(b - 0.05)), "every span hangs lower");
+    // Both solves converge to the default tolerance: nodes within ~1e-9 m of the same equilibrium.
+    let d_static = linear_check(s.wire(), "static");
+    assert!(d_static < 1e-7, "{d_static}");
+
+    // Explicit: from the virgin equilibrium, ice on suddenly, settle, ice off, settle (damping 1/s).
+    let mut d = solver(virgin.clone(), 1.0, 1.0);
+    statics::solve(&mut d, &opts).unwrap();
+    // The clamps' stable step with the strings (3e7 N over 2.5 m on 60 kg plus the conductor) is below
+    // the conductor's Courant step: take half of both bounds' smaller.
+    let ds = 250.0 / 30.0;
+    let dt = 0.4 * ds / (d.wire().axial_stiffness_n[0] / RHO).sqrt();
+    d.params_mut().dt_s = dt;
+    let settle = |d: &mut Explicit| {
+        for _ in 0..(120.0 / dt) as usize {
+            d.step(dt).unwrap();
+        }
+    };
+    assert!(d.wire_mut().add_linear_density(0..n, 3.0));
+    settle(&mut d);
+    assert!(d.wire_mut().add_linear_density(0..n, -3.0));
+    settle(&mut d);
+    let d_dyn = linear_check(d.wire(), "dynamic");
+    assert!(d_dyn < 1e-6, "{d_dyn}");
+}
