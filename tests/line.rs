@@ -640,3 +640,70 @@ fn tension_strings_at_the_dead_ends_balance_the_weight() {
         (0..a.nodes()).map(|i| (0..3).map(|k| (a.x[k][i] - b.x[k][i]).abs()).fold(0.0, f64::max)).fold(0.0, f64::max);
     assert!(worst < 1e-6, "Newton vs settled: {worst:e} m");
 }
+
+#[test]
+fn a_line_of_two_material_conductors_steps_and_stretches_as_its_single_conductors() {
+    // The horizontal configuration without wind, the three Drake phases with Drake's two-material law
+    // (tests/two_material.rs) at 15 C, the earth wire as it is: the line's kernel and static solver carry
+    // each conductor's history like the single-conductor runs. Dynamics: 3 kg/m of ice added suddenly,
+    // 600 steps, bitwise the single runs (history included). Statics: the line's stretch (solve_line,
+    // Wire::load_history, ice off, solve_line) against the single conductors' (statics::solve), each solve
+    // converged to its default tolerance: nodes within ~1e-9 m of the same equilibrium.
+    let n = 24;
+    let sections = horizontal(n);
+    let dt = common_step(&sections, n);
+    let p = params(dt, 0.0, 0.5);
+    let law = crate::two_material::drake();
+    let mut line = LineExplicit::new(&line_of(&sections, 0.0, false), p).unwrap();
+    let mut singles: Vec<Explicit> =
+        sections.iter().map(|(m, sec)| Explicit::new(section::build(sec).unwrap().0, loads(*m, 0.0), p)).collect();
+    let segs = singles[0].wire().segments();
+    for (i, s) in singles.iter_mut().enumerate().take(3) {
+        for w in [s.wire_mut(), line.conductor_mut(i).wire_mut()] {
+            w.set_two_material(law, ohl::conductor::CurveKind::Initial);
+            w.set_temperature(0..segs, 288.15);
+            assert!(w.add_linear_density(0..segs, 3.0));
+        }
+    }
+    let virgin = singles[0].wire().material.as_ref().unwrap().max_strain[0][0];
+    for _ in 0..600 {
+        line.step(dt).unwrap();
+        for s in &mut singles {
+            s.step(dt).unwrap();
+        }
+    }
+    for (i, s) in singles.iter().enumerate() {
+        let (a, b) = (line.conductors()[i].wire(), s.wire());
+        assert_eq!(a.material, b.material, "conductor {i}: history");
+        for k in 0..3 {
+            for j in 0..a.nodes() {
+                assert_eq!(a.x[k][j].to_bits(), b.x[k][j].to_bits(), "conductor {i} x{k}[{j}]");
+            }
+        }
+    }
+    let moved = line.conductors()[0].wire().material.as_ref().unwrap().max_strain[0][0];
+    assert!(moved > virgin + 1e-4, "the iced phase was stretched: {virgin} -> {moved}");
+
+    let opts = StaticOptions::default();
+    statics::solve_line(&mut line, &opts).unwrap();
+    for s in &mut singles {
+        statics::solve(s, &opts).unwrap();
+    }
+    for i in 0..3 {
+        line.conductor_mut(i).wire_mut().load_history();
+        singles[i].wire_mut().load_history();
+        assert!(line.conductor_mut(i).wire_mut().add_linear_density(0..segs, -3.0));
+        assert!(singles[i].wire_mut().add_linear_density(0..segs, -3.0));
+    }
+    statics::solve_line(&mut line, &opts).unwrap();
+    let mut worst = 0.0_f64;
+    for (i, s) in singles.iter_mut().enumerate() {
+        statics::solve(s, &opts).unwrap();
+        let (a, b) = (line.conductors()[i].wire(), s.wire());
+        for j in 0..a.nodes() {
+            worst = worst.max((0..3).map(|k| (a.x[k][j] - b.x[k][j]).powi(2)).sum::<f64>().sqrt());
+        }
+    }
+    eprintln!("line vs single conductors after the stretch: largest node distance {worst:.3e} m");
+    assert!(worst < 1e-7, "{worst}");
+}

@@ -62,7 +62,7 @@ fn drake_component(p: ([f64; 5], f64), k: f64, alpha: f64, area: f64) -> Compone
 }
 
 /// Drake (ACSR 26/7) with its published initial curves and final moduli.
-fn drake() -> TwoMaterial {
+pub(crate) fn drake() -> TwoMaterial {
     let k = k_final();
     TwoMaterial {
         outer: drake_component(AL_INITIAL, k[0], ALPHA[0], 4.0283e-4),
@@ -385,7 +385,12 @@ fn a_section_with_suspension_strings_stretched_by_ice_hangs_as_its_permanent_set
         crossarm: None,
     };
     let c = Conductor { axial_stiffness_n: 3.6e7, internal_friction_n_s: 0.0, law: LawKind::TensionOnly };
-    let span = |_| Span { conductor: c, linear_density_kg_per_m: RHO, segments: 30, stringing: Stringing::HorizontalTension(25e3) };
+    let span = |_| Span {
+        conductor: c,
+        linear_density_kg_per_m: RHO,
+        segments: 30,
+        stringing: Stringing::HorizontalTension(25e3),
+    };
     let sec = Section {
         supports: vec![
             Support::DeadEnd { point_m: [0.0, 0.0, 30.0] },
@@ -421,7 +426,11 @@ fn a_section_with_suspension_strings_stretched_by_ice_hangs_as_its_permanent_set
         let mut lin = solver(w, 1e-4, 0.0);
         statics::solve(&mut lin, &opts).unwrap();
         let dist = distance(two, lin.wire());
-        eprintln!("{label}: mid-span heights {:?} m, equivalent {:?} m; largest node distance {dist:.3e} m", heights(two), heights(lin.wire()));
+        eprintln!(
+            "{label}: mid-span heights {:?} m, equivalent {:?} m; largest node distance {dist:.3e} m",
+            heights(two),
+            heights(lin.wire())
+        );
         dist
     };
     let mut s = solver(virgin.clone(), 1e-4, 0.0);

@@ -89,12 +89,15 @@ impl Material {
         }
     }
 
-    /// Elastic energy per unit reference length [J/m] of segment `j` at strain `e` [-] and `theta` [K]:
-    /// `int T de'` from the strain below which the materials carry nothing (composite Simpson, 64 panels:
-    /// the diagnostics' energy, exact for the linear pieces and to `O(h^4)` on the quartics; a kink inside
-    /// a panel costs `O(h^2)` of it). Compression of a material with `K_c > 0` is not counted.
+    /// Recoverable elastic energy per unit reference length [J/m] of segment `j` at strain `e` [-] and
+    /// `theta` [K]: `int T de'` along the unloading path from `e` (the history moved up to `e` first, so
+    /// the work spent in permanent set is not counted) down to the strain below which the materials carry
+    /// nothing (composite Simpson, 64 panels: the diagnostics' energy, exact for the linear pieces and to
+    /// `O(h^4)` on curved ones; a kink inside a panel costs `O(h^2)` of it). Compression of a material with
+    /// `K_c > 0` is not counted.
     pub fn energy_density(&self, j: usize, e: f64, temperature_k: f64) -> f64 {
-        let h = self.history(j);
+        let mut h = self.history(j);
+        self.law.load(e, temperature_k, &mut h);
         let law = &self.law;
         let d = temperature_k - law.reference_temperature_k;
         let mut lo = law.outer.permanent_set(h.curve, h.max_strain[0]) + law.outer.expansion_per_k * d;
