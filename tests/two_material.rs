@@ -468,3 +468,86 @@ fn a_section_with_suspension_strings_stretched_by_ice_hangs_as_its_permanent_set
     let d_dyn = linear_check(d.wire(), "dynamic");
     assert!(d_dyn < 1e-6, "{d_dyn}");
 }
+
+#[test]
+fn a_scenario_with_the_two_material_law_iced_and_de_iced_hangs_as_its_permanent_set_says() {
+    // The scenario path: conductor.catalog = "ACSR Drake" with tension_law = "two_material" (the
+    // catalogue's stress-strain data), a 300 m level span at 15 C from its static equilibrium, 2 kg/m of
+    // ice on at 1 s (the `ice` event), off at 40 s, mass damping 1/s, to 80 s. The end state against the
+    // linear law of the closed-form permanent sets (each material's `m - C(m) / K_u`, from the
+    // catalogue's curve `C` and final stiffness `K_u` and the history the run reached), solved statically
+    // from the virgin equilibrium. Settled to about 1e-8 m per 10 s at the end: tolerance 1e-6 m.
+    use ohl::run::{RunOptions, run};
+    use ohl::scenario;
+    let text = r#"
+name = "two_material_ice"
+[conductor]
+catalog = "ACSR Drake"
+tension_law = "two_material"
+reference_temperature_k = 288.15
+[geometry]
+left_support_m = [0.0, 0.0, 30.0]
+right_support_m = [0.0, 300.0, 30.0]
+segments = 40
+unstretched_length_m = 300.25
+[initial]
+shape = "equilibrium"
+[numerics]
+courant = 0.5
+smoothing = 0.0
+mass_damping_per_s = 1.0
+[[events]]
+time_s = 1.0
+action = "ice"
+linear_density_kg_per_m = 2.0
+[[events]]
+time_s = 40.0
+action = "ice"
+linear_density_kg_per_m = -2.0
+[duration]
+end_time_s = 80.0
+"#;
+    let sc = scenario::parse(text, "two_material_ice").unwrap();
+    let plan = scenario::plan(&sc, "two_material_ice").unwrap();
+    assert_eq!(plan.solver.wire().law, LawKind::TwoMaterial);
+    let start = plan.solver.wire().clone();
+    let o = run(plan, &RunOptions { out_dir: None, record: false }).unwrap();
+    let two = o.solver.wire();
+    let mat = two.material.as_ref().unwrap();
+    let (law, theta) = (mat.law, two.temperature_k[0]);
+    assert_eq!(theta, 288.15);
+    let core = law.core.unwrap();
+    let (ko, kc) = (law.outer.unloading_stiffness_n, core.unloading_stiffness_n);
+    let d = theta - law.reference_temperature_k;
+    let mut w = two.clone();
+    w.law = LawKind::Linear;
+    w.material = None;
+    for j in 0..two.segments() {
+        let (mo, mc) = (mat.max_strain[0][j], mat.max_strain[1][j]);
+        let ep = [mo - law.outer.initial.force(mo) / ko, mc - core.initial.force(mc) / kc];
+        let (lo, hi) = (
+            (ep[0] + law.outer.expansion_per_k * d).max(ep[1] + core.expansion_per_k * d),
+            (mo + law.outer.expansion_per_k * d).min(mc + core.expansion_per_k * d),
+        );
+        let e = two.strain(j);
+        assert!(e > lo && e < hi, "segment {j}: strain {e} outside ({lo}, {hi})");
+        let e0 = (ko * (ep[0] + law.outer.expansion_per_k * d) + kc * (ep[1] + core.expansion_per_k * d)) / (ko + kc);
+        w.rest_length[j] = two.reference_length[j] * (1.0 + e0);
+        w.axial_stiffness_n[j] = (ko + kc) * (1.0 + e0);
+    }
+    for k in 0..3 {
+        w.x[k].copy_from_slice(&start.x[k]);
+        w.v[k].fill(0.0);
+    }
+    let mut lin = solver(w, 1e-4, 0.0);
+    lin.loads_mut().gravity_m_per_s2 = o.solver.loads().gravity_m_per_s2;
+    statics::solve(&mut lin, &StaticOptions::default()).unwrap();
+    let dist = distance(two, lin.wire());
+    let (before, after) = (start.x[2][20], two.x[2][20]);
+    eprintln!(
+        "scenario: mid-span height {before:.4} m virgin, {after:.4} m after the ice; equivalent {:.4} m; largest node distance {dist:.3e} m",
+        lin.wire().x[2][20]
+    );
+    assert!(after < before - 0.3, "the stretched span hangs lower");
+    assert!(dist < 1e-6, "{dist}");
+}
