@@ -8,7 +8,8 @@
 //!
 //! with `F` [N] the force the component carries and `e` [-] its mechanical strain (a fraction, not
 //! percent). `e_z` is the curve's first zero at or above zero strain: a published curve has `a0 < 0` (the
-//! strands settle before they carry load), so the force is zero up to `e_z`. Beyond the fitted range
+//! strands settle before they carry load), so the force is zero up to `e_z`. A curve with `a0 > 0` (some
+//! published creep curves of steel cores) has its zero just below zero strain, the first one scanning down. Beyond the fitted range
 //! `e_lim` the curve continues along its tangent (the published polynomials are not meant to be used
 //! there, and a quartic can turn down). A linear material is the curve `a1 = EA`, the rest zero.
 //!
@@ -62,7 +63,7 @@ impl Curve {
         let probe = Curve { coefficients_n: a, limit_strain: f64::INFINITY, zero_strain: 0.0 };
         let limit_strain = match limit_pa {
             None => f64::INFINITY,
-            Some(s) => probe.raw_inverse(s * total_area_m2, 0.0, 0.05)?,
+            Some(s) => probe.first_crossing(s * total_area_m2, 0.05)?,
         };
         Curve::polynomial(a, limit_strain)
     }
@@ -136,9 +137,39 @@ impl Curve {
         Some(if g(lo).abs() <= g(hi).abs() { lo } else { hi })
     }
 
+    /// The first strain in `(0, hi]` at which the polynomial reaches `f` (scanning up in 1000 steps, then
+    /// bisection): the fitted limit of a curve that turns down beyond it (a published aluminium creep curve
+    /// reaches its 7535 psi limit at 1.00 % strain, dips from 1.06 % to 1.22 %, and rises again).
+    fn first_crossing(&self, f: f64, hi: f64) -> Option<f64> {
+        let n = 1000;
+        let mut prev = 0.0;
+        for k in 1..=n {
+            let e = hi * k as f64 / n as f64;
+            if self.raw(e) >= f {
+                return self.raw_inverse(f, prev, e);
+            }
+            prev = e;
+        }
+        None
+    }
+
     fn find_zero(&self) -> Option<f64> {
-        if self.coefficients_n[0] >= 0.0 {
-            return (self.coefficients_n[0] == 0.0).then_some(0.0);
+        if self.coefficients_n[0] == 0.0 {
+            return Some(0.0);
+        }
+        if self.coefficients_n[0] > 0.0 {
+            // a0 > 0 (e.g. a published steel creep curve, +47.1 psi): the curve's zero lies just below zero
+            // strain; the first sign change scanning down to -1 % strain.
+            let n = 1000;
+            let mut prev = 0.0;
+            for k in 1..=n {
+                let e = -0.01 * k as f64 / n as f64;
+                if self.raw(e) <= 0.0 {
+                    return self.raw_inverse(0.0, e, prev);
+                }
+                prev = e;
+            }
+            return None;
         }
         // a0 < 0: the first sign change above 0, scanning up to the limit (or 5 % strain).
         let hi = if self.limit_strain.is_finite() { self.limit_strain } else { 0.05 };
@@ -152,5 +183,36 @@ impl Curve {
             prev = e;
         }
         None
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const PSI: f64 = 6894.757293168;
+    /// Drake's total area 0.7264 in^2 [m^2].
+    const AREA: f64 = 0.7264 * 0.0254 * 0.0254;
+
+    #[test]
+    fn a_curve_with_positive_a0_has_its_zero_just_below_zero_strain() {
+        // Drake's steel 10-year creep curve (OTLS-Models test/factory.cc): a0 = +47.1 psi. Its zero is
+        // near -a0/a1 = -47.1 / 36211.3 % (the quadratic terms change that by 1e-9 relative).
+        let a = [47.1, 36211.3, 12201.4, -72392.0, 46338.0].map(|x| x * PSI);
+        let c = Curve::from_percent(a, AREA, Some(22406.0 * PSI)).expect("an increasing curve");
+        let linear = -47.1 / 36211.3 / 100.0;
+        assert!((c.zero_strain() - linear).abs() < 1e-3 * linear.abs(), "{} vs {linear}", c.zero_strain());
+        assert!(c.force(c.zero_strain()).abs() < 1e-9 * 47.1 * PSI * AREA);
+    }
+
+    #[test]
+    fn the_fitted_limit_is_the_first_strain_reaching_the_limit_stress() {
+        // Drake's aluminium 10-year creep curve reaches its 7535 psi limit just above 1.00 % strain
+        // (Y(1 %) = 7534.8 psi by hand), turns down at 1.06 % and rises again past 1.22 %: the limit is the
+        // first crossing, and the curve is increasing up to it.
+        let a = [-544.8, 21426.8, -18842.2, 5495.0, 0.0].map(|x| x * PSI);
+        let c = Curve::from_percent(a, AREA, Some(7535.0 * PSI)).expect("increasing up to its first crossing");
+        assert!(c.limit_strain > 0.0100 && c.limit_strain < 0.0101, "{}", c.limit_strain);
+        assert!((c.force(c.limit_strain) - 7535.0 * PSI * AREA).abs() < 1e-6 * 7535.0 * PSI * AREA);
     }
 }
