@@ -580,3 +580,24 @@ fn reference_a_alcoa_sample_side_by_side() {
     println!("largest differences: tension {:.4}, sag {:.3} ft", worst[0], worst[1]);
     assert!(worst[0] < 0.01 && worst[1] < 0.3, "{worst:?}");
 }
+
+/// The catalogue's Drake (data/conductors.toml, the same OTLS polynomials converted to Pa with 7
+/// significant digits) gives reference B's tensions of this file's Drake to 2e-6: the conversion's
+/// rounding (5e-7 relative per coefficient) moves `H` by about as much.
+#[test]
+fn the_catalogues_drake_is_this_files_drake() {
+    let catalogue = ohl::thermal::catalog::find("drake").unwrap();
+    let law = SagConductor::from_catalog(catalogue).expect("Drake has stress-strain data").law;
+    let mine = drake(0.0);
+    let b = |c: SagConductor| Problem {
+        creep: Some(weather_us(60.0, 0.0, 0.0, 0.0, 0.0)),
+        heavy_load: Some(weather_us(0.0, 0.5, 57.0, 4.0, 0.30)),
+        ..problem(c, Span::level(700.0 * FT), 6300.0 * LBF, weather_us(60.0, 0.0, 0.0, 0.0, 0.0))
+    };
+    let rows_of =
+        |c| solve_table(&b(c), &[weather_us(212.0, 0.0, 0.0, 0.0, 0.0), weather_us(0.0, 0.5, 57.0, 4.0, 0.3)]).unwrap();
+    for (x, y) in rows_of(SagConductor { law, ..mine }).iter().zip(rows_of(mine)) {
+        let d = (x.horizontal_tension_n - y.horizontal_tension_n).abs() / y.horizontal_tension_n;
+        assert!(d < 2e-6, "{:?}: {} vs {} ({d:e})", x.state, x.horizontal_tension_n, y.horizontal_tension_n);
+    }
+}
