@@ -21,6 +21,10 @@ const INCH: f64 = 0.0254;
 const LB_PER_FT3: f64 = 0.45359237 / (FT * FT * FT);
 const PSF: f64 = LBF / (FT * FT);
 
+/// A published table row: temperature [F], ice [in], wind [psf], K [lb/ft], final sag [ft], final tension
+/// [lb], initial sag [ft], initial tension [lb].
+type PublishedRow = (f64, f64, f64, f64, f64, f64, f64, f64);
+
 fn kelvin_of_f(f: f64) -> f64 {
     (f - 32.0) / 1.8 + 273.15
 }
@@ -435,7 +439,7 @@ fn reference_d_otls_fixture_is_reproduced_and_every_difference_is_a_stated_conve
 /// 0.03 ft.
 #[test]
 fn reference_b_handbook_table_side_by_side() {
-    let rows: [(f64, f64, f64, f64, f64, f64, f64, f64); 10] = [
+    let rows: [PublishedRow; 10] = [
         (0.0, 0.50, 4.0, 0.30, 13.61, 11318.0, 13.55, 11361.0),
         (32.0, 0.50, 0.0, 0.0, 13.93, 9224.0, 13.33, 9643.0),
         (-20.0, 0.0, 0.0, 0.0, 8.22, 8161.0, 7.60, 8824.0),
@@ -535,7 +539,7 @@ fn bad_inputs_and_impossible_loads_are_errors() {
 /// The published final tensions match the length-averaged tension to 0-5 lb.
 #[test]
 fn reference_a_alcoa_sample_side_by_side() {
-    let rows: [(f64, f64, f64, f64, f64, f64, f64, f64); 11] = [
+    let rows: [PublishedRow; 11] = [
         (0.0, 1.50, 0.0, 0.0, 41.11, 18287.0, 41.11, 18287.0),
         (0.0, 0.50, 4.0, 0.30, 34.86, 9054.0, 31.53, 10000.0),
         (32.0, 0.50, 0.0, 0.0, 35.47, 7429.0, 31.49, 8358.0),
