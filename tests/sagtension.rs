@@ -512,6 +512,12 @@ fn bad_inputs_and_impossible_loads_are_errors() {
     assert!(matches!(bad_span.string(), Err(SagTensionError::Invalid { what: "span length [m]", .. })));
     let bad_ice = Problem { heavy_load: Some(Weather { ice_thickness_m: f64::NAN, ..Weather::bare(273.0) }), ..p };
     assert!(matches!(bad_ice.string(), Err(SagTensionError::Invalid { .. })));
+    let mut bad_law = p;
+    bad_law.conductor.law.outer.unloading_stiffness_n = f64::NAN;
+    assert!(matches!(
+        bad_law.string(),
+        Err(SagTensionError::Invalid { what: "outer layers' unloading stiffness [N]", .. })
+    ));
     let no_creep = Problem { creep: None, ..p };
     assert!(matches!(
         no_creep.string().unwrap().solve(&Weather::bare(300.0), State::AfterCreep),
