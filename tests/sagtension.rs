@@ -752,3 +752,50 @@ fn drakes_knee_temperatures_for_references_d_and_b() {
         }
     }
 }
+
+/// A section's spans at the ruling span's H (linear law): each span's unstressed length and sag against
+/// Irvine's closed form at that H, `l = H L0' / EA' + (2 H / w') asinh(w' L0' / (2 H))` solved for `L0'`
+/// (bisection to round-off; `'`: the thermal-strain scaling of (a)). Sag to 1e-9 m and `L0` to 1e-12
+/// relative, as (a); and the span equal to the ruling span returns the ruling span's own row.
+#[test]
+fn the_spans_of_a_section_carry_the_ruling_spans_h() {
+    let c = linear_conductor(false);
+    let k = c.law.outer.initial.coefficients_n[1];
+    let alpha = c.law.outer.expansion_per_k;
+    let lengths = [200.0, 350.0, 500.0];
+    let ruling = Span::ruling(&lengths).unwrap();
+    let p = problem(c, ruling, 20e3, Weather::bare(288.15));
+    let strung = p.string().unwrap();
+    let weather = Weather::bare(333.15);
+    let r = strung.solve(&weather, State::Initial).unwrap();
+    let same = strung.section_span(&weather, State::Initial, ruling).unwrap();
+    assert!((same.unstressed_length_m - strung.unstressed_length_m).abs() < 1e-12 * same.unstressed_length_m);
+    let h = r.horizontal_tension_n;
+    let cth = alpha * (333.15 - 293.15);
+    let w = weather.load_n_per_m(&c, p.gravity_m_per_s2) / (1.0 + cth);
+    let ea = k * (1.0 + cth);
+    for l in lengths {
+        let row = strung.section_span(&weather, State::Initial, Span::level(l)).unwrap();
+        let x = |l0: f64| h * l0 / ea + 2.0 * h / w * (w * l0 / (2.0 * h)).asinh() - l;
+        let (mut a, mut b) = (0.9 * l, 1.1 * l);
+        for _ in 0..200 {
+            let m = 0.5 * (a + b);
+            if x(m) < 0.0 { a = m } else { b = m }
+        }
+        let l0 = 0.5 * (a + b);
+        let cat = ElasticCatenary::level(l, l0, w, ea).unwrap();
+        let sag = -cat.midspan_displacement_m()[2];
+        println!(
+            "span {l} m: H {} N (ruling {h}), sag {} m (Irvine {sag})",
+            row.horizontal_tension_n, row.sag_midspan_m
+        );
+        assert!((row.horizontal_tension_n - h).abs() < 1e-10 * h);
+        assert!(
+            (row.unstressed_length_m - l0 / (1.0 + cth)).abs() < 1e-12 * l0,
+            "{} vs {}",
+            row.unstressed_length_m,
+            l0 / (1.0 + cth)
+        );
+        assert!((row.sag_midspan_m - sag).abs() < 1e-9, "{} vs {sag}", row.sag_midspan_m);
+    }
+}
