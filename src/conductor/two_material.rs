@@ -118,6 +118,20 @@ impl TwoMaterial {
         hi
     }
 
+    /// A creep-stretched history moved onto the initial curves (each component's
+    /// [`Component::creep_stretch_on_initial`]): the same unloading lines, and short-term loads beyond
+    /// them follow the initial curves. A history already on the initial curves is returned as it is.
+    pub fn creep_history_on_initial(&self, h: &History) -> History {
+        if h.curve == CurveKind::Initial {
+            return *h;
+        }
+        let mut out = History { curve: CurveKind::Initial, max_strain: h.max_strain };
+        for (k, c) in self.components() {
+            out.max_strain[k] = c.creep_stretch_on_initial(h.max_strain[k]);
+        }
+        out
+    }
+
     /// The conductor strain [-] below which the outer layers carry no tension at `theta` [K] (their
     /// permanent set plus their thermal strain): the knee point's strain.
     pub fn outer_slack_strain(&self, temperature_k: f64, h: &History) -> f64 {
@@ -180,6 +194,33 @@ mod tests {
         // Reloading follows the line back up and rejoins the virgin curve at m.
         let f_again = c.force(peak, CurveKind::Initial, m);
         assert!((f_again - f_peak).abs() <= 1e-9 * f_peak);
+    }
+
+    #[test]
+    fn a_creep_stretch_moved_onto_the_initial_curve_unloads_along_the_same_line() {
+        // Drake's aluminium with its 10-year creep curve (OTLS-Models test/factory.cc), stretched to
+        // 0.2 % on the creep curve.
+        let psi = 6894.757;
+        let area = 0.7264 * 6.4516e-4;
+        let creep = [-544.8, 21426.8, -18842.2, 5495.0, 0.0].map(|x| x * psi);
+        let mut c = drake().outer;
+        c.creep = Some(Curve::from_percent(creep, area, Some(7535.0 * psi)).unwrap());
+        let mc = 0.002;
+        let mi = c.creep_stretch_on_initial(mc);
+        // The closed form it solves: C_i(m_i) = C_c(m_c) + K_u (m_i - m_c), the unloading line meeting the
+        // initial curve above m_c (the creep curve lies below the initial one at the same strain).
+        let fc = c.creep.unwrap().force(mc);
+        assert!(mi > mc);
+        assert!((c.initial.force(mi) - fc - c.unloading_stiffness_n * (mi - mc)).abs() < 1e-9 * fc);
+        // Below m_c both histories give the same force (the same line), to round-off of the line.
+        for k in 0..20 {
+            let e = mc - 1e-4 * k as f64;
+            let on_creep = c.force(e, CurveKind::Creep, mc);
+            let on_initial = c.force(e, CurveKind::Initial, mi);
+            assert!((on_creep - on_initial).abs() < 1e-9 * fc, "{e}: {on_creep} vs {on_initial}");
+        }
+        // Beyond m_i the initial history follows the initial curve.
+        assert_eq!(c.force(mi + 1e-4, CurveKind::Initial, mi), c.initial.force(mi + 1e-4));
     }
 
     #[test]
