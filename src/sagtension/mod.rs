@@ -11,6 +11,7 @@
 //! - [`problem`]: the stringing condition, the states and the change of state;
 //! - [`row`]: what one table row reports;
 //! - [`search`]: the knee-point temperature and the temperature of a given sag;
+//! - [`stringing`]: the unstressed length of one span strung to a tension or a sag, with any history;
 //! - [`error`]: the typed errors.
 //!
 //! The public entry points are [`solve_table`], [`knee_temperature_k`] and [`temperature_at_sag_k`]
@@ -25,6 +26,7 @@ pub mod problem;
 pub mod row;
 pub mod search;
 pub mod span;
+pub mod stringing;
 pub mod weather;
 
 pub use error::SagTensionError;

@@ -290,7 +290,7 @@ impl Problem {
 
 /// The root of `f(L0)`, increasing in `L0`, bracketed from `chord (1 -+ 0.002)` outwards (down to half the
 /// chord, up to three times it), to `1e-14` of the chord.
-fn root_on_length<F>(chord: f64, mut f: F, what: &'static str) -> Result<f64, SagTensionError>
+pub(crate) fn root_on_length<F>(chord: f64, mut f: F, what: &'static str) -> Result<f64, SagTensionError>
 where
     F: FnMut(f64) -> Result<f64, SagTensionError>,
 {

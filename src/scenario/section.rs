@@ -15,8 +15,12 @@ use super::range::{
     AXIAL_STIFFNESS_N, INSULATOR_DAMPING_N_S, INSULATOR_LENGTH_M, INSULATOR_MASS_KG, INSULATOR_STIFFNESS_N,
     LINEAR_DENSITY_KG_PER_M, RATED_TENSILE_STRENGTH_N, Range as Allowed,
 };
-use super::schema::{Scenario, SectionSpec, ShapeSpec, SupportSpec};
+use super::schema::{CurveSpec, Scenario, SectionSpec, ShapeSpec, SupportSpec, TensionLawSpec};
 use super::validate::{Check, MAX_SEGMENTS, MAX_SPAN_M, number};
+use crate::conductor::{CurveKind, TwoMaterial};
+use crate::sagtension::StringingTarget;
+use crate::sagtension::catenary::{DEFAULT_PANELS, SpanLaw};
+use crate::sagtension::stringing::unstressed_length_m;
 use crate::wire::insulator::{damped_clamp_stable_step_s, pivot_stable_step_s};
 use crate::wire::section::{self, CrossarmSpec, Layout, Section, Span, Stringing, Support, plumb_clamp};
 use crate::wire::{Conductor, Wire};
@@ -358,12 +362,25 @@ pub(crate) fn check(
     }
     // The stringing temperature: where it is not the initial one, the strung shape is not at rest.
     let t_ref = s.conductor.reference_temperature_k;
+    let two_material = two_material_law(s);
+    if two_material.is_some() && s.initial.shape != ShapeSpec::Equilibrium {
+        c.fail(
+            "initial.shape",
+            format!("{:?}", format!("{:?}", s.initial.shape).to_lowercase()),
+            "a section of a two-material conductor (conductor.tension_law = \"two_material\") starts at \
+             \"equilibrium\": its strung catenaries are those of the linear law, at rest only in the equilibrium \
+             of the real one",
+        );
+        return None;
+    }
     let stringing_factor = match sec.stringing_temperature_k {
         Some(t0) => {
             if !c.range("section.stringing_temperature_k", t0, &super::range::STRINGING_TEMPERATURE_K) {
                 return None;
             }
-            let factor = 1.0 + s.conductor.thermal_expansion_per_k * (t0 - t_ref);
+            // A two-material conductor is strung at t0 by its own law below: no rescaling.
+            let alpha = if two_material.is_some() { 0.0 } else { s.conductor.thermal_expansion_per_k };
+            let factor = 1.0 + alpha * (t0 - t_ref);
             if factor != 1.0 && s.initial.shape != ShapeSpec::Equilibrium {
                 c.fail(
                     "section.stringing_temperature_k",
@@ -382,14 +399,57 @@ pub(crate) fn check(
         }
         None => 1.0,
     };
-    let built = section::build(&Section { supports, spans, gravity_m_per_s2: s.loads.gravity_m_per_s2 });
-    let (mut wire, layout) = match built {
+    let mut sect = Section { supports, spans, gravity_m_per_s2: s.loads.gravity_m_per_s2 };
+    let built = section::build(&sect);
+    let (mut wire, mut layout) = match built {
         Ok(b) => b,
         Err(e) => {
             c.fail("section", "(as given)", &format!("cannot be strung: {e}"));
             return None;
         }
     };
+    if let Some((law, curve)) = two_material {
+        // Strung by the real law: each span strung by tension or sag gets the unstressed length (at the law's
+        // reference temperature) that gives it that tension or sag at the stringing temperature, between the
+        // clamps of the linear stringing (the strings' stretch differs by micrometres), virgin on `curve`.
+        let t0 = sec.stringing_temperature_k.unwrap_or(t_ref);
+        for k in 0..sect.spans.len() {
+            let target = match sect.spans[k].stringing {
+                Stringing::UnstretchedLength(_) => continue,
+                Stringing::HorizontalTension(h) => StringingTarget::HorizontalTension(h),
+                Stringing::Sag(f) => StringingTarget::Sag(f),
+            };
+            let (a, b) = (wire.position(layout.support_node[k]), wire.position(layout.support_node[k + 1]));
+            let span = SpanLaw {
+                law: &law,
+                history: law.virgin(curve),
+                temperature_k: t0,
+                load_n_per_m: sect.spans[k].linear_density_kg_per_m * s.loads.gravity_m_per_s2,
+                span_m: (b[0] - a[0]).hypot(b[1] - a[1]),
+                rise_m: b[2] - a[2],
+                unstressed_length_m: 0.0,
+                panels: DEFAULT_PANELS,
+            };
+            match unstressed_length_m(&span, target) {
+                Ok(l) => sect.spans[k].stringing = Stringing::UnstretchedLength(l),
+                Err(e) => {
+                    c.fail(
+                        &format!("section.spans[{k}]"),
+                        "(as strung)",
+                        &format!("cannot be strung with the two-material law of conductor.catalog: {e}"),
+                    );
+                    return None;
+                }
+            }
+        }
+        match section::build(&sect) {
+            Ok((w, l)) => (wire, layout) = (w, l),
+            Err(e) => {
+                c.fail("section", "(as given)", &format!("cannot be strung: {e}"));
+                return None;
+            }
+        }
+    }
     // The strings' axial damping (not part of the stringing): the string of support k is the wire's
     // string at that support's node.
     for (k, sp) in sec.supports.iter().enumerate() {
@@ -513,4 +573,18 @@ mod tests {
         let e = scenario::plan(&sc2, "section").unwrap_err().to_string();
         assert!(e.contains("section.spans[0].horizontal_tension_n` = (missing)"), "{e}");
     }
+}
+
+/// The catalogue conductor's two-material law and curve where `conductor.tension_law = "two_material"`
+/// names one with stress-strain data (`None` otherwise: [`super::two_material::check`] reports why).
+fn two_material_law(s: &Scenario) -> Option<(TwoMaterial, CurveKind)> {
+    if s.conductor.tension_law != TensionLawSpec::TwoMaterial {
+        return None;
+    }
+    let law = crate::thermal::catalog::find(s.conductor.catalog.as_deref()?).ok()?.two_material()?;
+    let curve = match s.conductor.curve {
+        Some(CurveSpec::Creep) => CurveKind::Creep,
+        _ => CurveKind::Initial,
+    };
+    Some((law, curve))
 }
