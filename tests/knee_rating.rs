@@ -61,7 +61,7 @@ fn rated_limit_k(segments: usize, clearance_m: f64) -> f64 {
     r.limit_temperature_k.expect("the clearance limit is reached below 250 C")
 }
 
-fn exact_limit_k(clearance_m: f64) -> f64 {
+fn strung() -> ohl::sagtension::Strung {
     let drake = ohl::thermal::catalog::find("ACSR Drake").unwrap();
     let conductor = SagConductor { mass_kg_per_m: 1.628, ..SagConductor::from_catalog(drake).unwrap() };
     let p = Problem {
@@ -77,11 +77,17 @@ fn exact_limit_k(clearance_m: f64) -> f64 {
         gravity_m_per_s2: G,
         stretch_point: StretchPoint::MostStrained,
     };
-    p.string().unwrap().temperature_at_sag_k(State::Initial, 25.0 - clearance_m).unwrap()
+    p.string().unwrap()
+}
+
+fn exact_limit_k(clearance_m: f64) -> f64 {
+    strung().temperature_at_sag_k(State::Initial, 25.0 - clearance_m).unwrap()
 }
 
 #[test]
 fn the_rating_s_limiting_temperature_with_the_knee_converges_at_second_order_to_the_exact_catenary() {
+    let knee = strung().knee_temperature_k(State::Initial).unwrap();
+    println!("knee point of the span, initial state: {:.2} C", knee - 273.15);
     for clearance in [10.0, 9.0] {
         let exact = exact_limit_k(clearance);
         let grids = [10, 20, 40, 80];
