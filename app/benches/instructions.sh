@@ -12,7 +12,7 @@ csv=${3:-/dev/stdout}
 command -v valgrind > /dev/null || { echo "valgrind is not installed (apt-get install valgrind)" >&2; exit 2; }
 [ -s "$csv" ] || [ "$csv" = /dev/stdout ] || echo "label,config,n,instructions_per_node_step" > "$csv"
 ir() { valgrind --tool=callgrind --callgrind-out-file=/dev/null "$bin" bench --fixed "$1:$2:$3" 2>&1 | awk '/Collected/ {print $4}'; }
-for c in plane_weight wind_3d kv_smoothing_3d; do
+for c in plane_weight wind_3d kv_smoothing_3d two_material_plane; do
   for n in 50 200 1000 5000; do
     # at most 3100 steps: 10 s simulated at N = 50, inside the stable transient of the undamped release
     d=$(( 1000000 / (n + 1) )); [ "$d" -le 3000 ] || d=3000

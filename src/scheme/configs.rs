@@ -7,7 +7,12 @@
 //!   span: a 3D motion;
 //! - [`Config::ViscousSmoothed`]: weight, the uniform normal pressure of section 4.1 (3.805 N/m), Kelvin-Voigt
 //!   friction `eta = 2` N s (3.4) and velocity smoothing `b = 0.02` (3.3); Courant 0.8, below the
-//!   internal-friction limit `sqrt(1 + z^2) - z` (> 0.93 for N <= 5000, see [`super::courant`]).
+//!   internal-friction limit `sqrt(1 + z^2) - z` (> 0.93 for N <= 5000, see [`super::courant`]);
+//! - [`Config::TwoMaterialPlane`]: weight only, in the vertical plane, with the real conductor's law:
+//!   ACSR Drake's two materials from the catalogue (stress-strain polynomials, per-segment history,
+//!   [`crate::conductor`]) and Drake's 1.628 kg/m; the wave speed and the step from the law's largest
+//!   stiffness. The same span, released from the chord (at the curves' reference temperature the
+//!   aluminium is slack until 0.028 %).
 
 use super::courant;
 use super::{Explicit, Loads, StepParams, WindGate, WindLoad};
@@ -33,11 +38,14 @@ pub enum Config {
     Wind3d,
     /// weight plus uniform normal pressure, Kelvin-Voigt friction and velocity smoothing, 3D
     ViscousSmoothed,
+    /// weight only, in the plane, with ACSR Drake's two-material law
+    TwoMaterialPlane,
 }
 
 impl Config {
     /// All configurations, in table order.
-    pub const ALL: [Config; 3] = [Config::PlaneWeight, Config::Wind3d, Config::ViscousSmoothed];
+    pub const ALL: [Config; 4] =
+        [Config::PlaneWeight, Config::Wind3d, Config::ViscousSmoothed, Config::TwoMaterialPlane];
 
     /// Short name used in tables and files.
     pub fn name(self) -> &'static str {
@@ -45,6 +53,7 @@ impl Config {
             Config::PlaneWeight => "plane_weight",
             Config::Wind3d => "wind_3d",
             Config::ViscousSmoothed => "kv_smoothing_3d",
+            Config::TwoMaterialPlane => "two_material_plane",
         }
     }
 
@@ -59,11 +68,24 @@ impl Config {
         let conductor = Conductor { axial_stiffness_n: EA_N, internal_friction_n_s: eta, law: LawKind::TensionOnly };
         let x = [vec![0.0; n + 1], (0..=n).map(|i| SPAN_M * i as f64 / n as f64).collect(), vec![0.0; n + 1]];
         let ds = SPAN_M / n as f64;
-        let wire = Wire::new(conductor, x, vec![ds; n], RHO_KG_PER_M);
-        let c = courant::wave_speed(EA_N, RHO_KG_PER_M);
+        let (rho, mut wire) = if self == Config::TwoMaterialPlane {
+            let drake = crate::thermal::catalog::find("ACSR Drake").expect("Drake is in the catalogue");
+            let law = drake.two_material().expect("Drake has stress-strain data");
+            let mut w = Wire::new(conductor, x, vec![ds; n], drake.linear_density_kg_per_m);
+            w.set_two_material(law, crate::conductor::CurveKind::Initial);
+            (drake.linear_density_kg_per_m, w)
+        } else {
+            (RHO_KG_PER_M, Wire::new(conductor, x, vec![ds; n], RHO_KG_PER_M))
+        };
+        if self == Config::TwoMaterialPlane {
+            // At the curves' reference temperature (the strains are measured from there).
+            let t = wire.material.as_ref().map_or(wire.reference_temperature_k, |m| m.law.reference_temperature_k);
+            wire.temperature_k.fill(t);
+        }
+        let c = courant::wave_speed(wire.axial_stiffness_n[0], rho);
         let q = 0.5 * 1.225 * 20.0 * 20.0 * DIAMETER_M;
         let (wind, cfl, smoothing) = match self {
-            Config::PlaneWeight => (None, 0.9, 0.0),
+            Config::PlaneWeight | Config::TwoMaterialPlane => (None, 0.9, 0.0),
             Config::Wind3d => (
                 Some(WindLoad::Aerodynamic(Aerodynamic {
                     direction: [1.0, 0.0, 0.0],

@@ -967,6 +967,9 @@ mod tests {
     /// that the fused kernel must reproduce bit for bit.
     fn reference_step(s: &mut Explicit, dt: f64) -> bool {
         s.compute_segment_forces();
+        if let Some(m) = s.wire.material.as_mut() {
+            m.advance(&s.wire.temperature_k);
+        }
         let kick = 0.5 * (s.dt_prev + dt);
         let w = &mut s.wire;
         let n1 = w.nodes();
