@@ -11,6 +11,7 @@ pub mod line;
 pub mod locate;
 pub mod range;
 pub mod rating;
+pub mod sagtension;
 pub mod schema;
 pub mod section;
 pub mod temperature;
