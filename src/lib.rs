@@ -21,6 +21,7 @@
 //! - [`exact`]: exact static solutions the scheme is verified against;
 //! - [`loads`]: ice and wind as the design codes give them (radial ice, the codes' load cases);
 //! - [`thermal`]: conductor temperature from current and weather (IEEE 738, CIGRE TB 601).
+//! - [`sagtension`]: sag-tension tables of a span or a ruling span (stringing, creep, heavy load, knee).
 //!
 //! The library holds the model only: the command line `ohl`, the paper cases, the plots, the benchmark
 //! and the progress bar are the applications of the `ohl-app` crate (`app/`).
@@ -35,6 +36,7 @@ pub mod loads;
 pub mod observer;
 pub mod output;
 pub mod run;
+pub mod sagtension;
 pub mod scenario;
 pub mod scheme;
 pub mod statics;
