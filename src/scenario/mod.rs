@@ -12,6 +12,7 @@ pub mod locate;
 pub mod range;
 pub mod rating;
 pub mod sagtension;
+pub mod sagtension_table;
 pub mod schema;
 pub mod section;
 pub mod temperature;

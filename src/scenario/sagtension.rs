@@ -42,7 +42,9 @@ use serde::Deserialize;
 use super::range::{ICE_DENSITY_KG_PER_M3, RADIAL_ICE_M, Range as Allowed, SAG_TEMPERATURE_K};
 use super::validate::{Check, MAX_SPAN_M, number};
 use super::{InputError, Problem};
+use crate::conductor::{Component, TwoMaterial};
 use crate::loads::codes;
+use crate::sagtension as sag;
 use crate::thermal::catalog::{self, CatalogConductor};
 
 /// Wind pressure on the projected (iced) diameter [Pa]: 5 kPa is the dynamic pressure of a 90 m/s wind,
@@ -349,6 +351,12 @@ pub struct Resolved {
     pub rise_m: f64,
     /// the stringing weather
     pub stringing: Weather,
+    /// the stringing horizontal tension [N] (from `tension_n` or `tension_fraction_of_rts`)
+    pub stringing_target: Option<f64>,
+    /// the stringing mid-span sag [m]
+    pub stringing_sag_m: Option<f64>,
+    /// the state the stringing holds in
+    pub stringing_state: sag::State,
     /// the creep weather
     pub creep: Weather,
     /// the heavy-load weather
@@ -699,16 +707,110 @@ fn check(c: &mut Check, case: &SagTensionCase, user: Option<&[CatalogConductor]>
     if !c.0.is_empty() {
         return None;
     }
+    let rts = conductor.as_ref()?.rated_tensile_strength_n;
     Some(Resolved {
         conductor: conductor?,
         lengths_m,
         rise_m,
         stringing: stringing?,
+        stringing_target: s.tension_n.or(s.tension_fraction_of_rts.map(|f| f * rts)),
+        stringing_sag_m: s.sag_m,
+        stringing_state: match s.state {
+            StateSpec::Initial => sag::State::Initial,
+            StateSpec::Final => sag::State::Final,
+        },
         creep: creep?,
         heavy_load: heavy_load.flatten(),
         conditions,
         sag_limit_m,
     })
+}
+
+impl Weather {
+    /// The solver's weather ([`crate::sagtension::Weather`]): the drag coefficient folded into the pressure,
+    /// as the codes state a pressure on the projected diameter.
+    pub fn to_solver(&self) -> sag::Weather {
+        sag::Weather {
+            temperature_k: self.temperature_k,
+            ice_thickness_m: self.ice_thickness_m,
+            ice_density_kg_per_m3: self.ice_density_kg_per_m3,
+            wind_pressure_pa: self.wind_pressure_pa * self.drag_coefficient,
+            constant_n_per_m: self.constant_n_per_m,
+        }
+    }
+}
+
+/// Which axial law a case's conductor has.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum LawKind {
+    /// the catalogue's stress-strain data: two materials, polynomials, creep, permanent set
+    TwoMaterial,
+    /// one material of the catalogue's `axial_stiffness_n` and `thermal_expansion_per_k` (no stress-strain
+    /// data in the catalogue entry)
+    SingleModulus,
+}
+
+impl Resolved {
+    /// The span the solver sees: the single span, or the ruling span of the section
+    /// ([`sag::Span::ruling`]).
+    pub fn span(&self) -> Result<sag::Span, sag::SagTensionError> {
+        if self.lengths_m.len() == 1 {
+            Ok(sag::Span { length_m: self.lengths_m[0], rise_m: self.rise_m })
+        } else {
+            sag::Span::ruling(&self.lengths_m)
+        }
+    }
+
+    /// The single-modulus law of the catalogue entry: one material of area `A` (the entry's total area),
+    /// `E = EA / A` and the entry's expansion, unstressed at the stringing temperature.
+    pub fn single_modulus_law(&self) -> TwoMaterial {
+        let k = &self.conductor;
+        let area = k.total_area_m2();
+        TwoMaterial {
+            outer: Component::linear(area, k.axial_stiffness_n / area, k.thermal_expansion_per_k),
+            core: None,
+            reference_temperature_k: self.stringing.temperature_k,
+        }
+    }
+
+    /// The conductor's law: the catalogue's two-material law where the entry has stress-strain data, else
+    /// the single-modulus one ([`Resolved::single_modulus_law`]).
+    pub fn law(&self) -> (TwoMaterial, LawKind) {
+        (self.single_modulus_law(), LawKind::SingleModulus)
+    }
+
+    /// The solver's problem with the axial law `law` (the case's or the single-modulus comparison).
+    pub fn problem(&self, law: TwoMaterial) -> Result<sag::Problem, sag::SagTensionError> {
+        let k = &self.conductor;
+        let target = match (self.stringing_target, self.stringing_sag_m) {
+            (_, Some(d)) => sag::StringingTarget::Sag(d),
+            (Some(h), None) => sag::StringingTarget::HorizontalTension(h),
+            (None, None) => unreachable!("validated: one of tension and sag"),
+        };
+        Ok(sag::Problem {
+            conductor: sag::SagConductor {
+                law,
+                diameter_m: k.diameter_m,
+                mass_kg_per_m: k.linear_density_kg_per_m,
+                rated_tensile_strength_n: k.rated_tensile_strength_n,
+            },
+            span: self.span()?,
+            stringing: sag::Stringing { target, weather: self.stringing.to_solver(), state: self.stringing_state },
+            creep: Some(self.creep.to_solver()),
+            heavy_load: self.heavy_load.as_ref().map(Weather::to_solver),
+            gravity_m_per_s2: sag::STANDARD_GRAVITY_M_PER_S2,
+        })
+    }
+
+    /// The sag limit of the span the solver sees [m]: for a ruling span, the limit of the longest span
+    /// scaled by `(l_r / l_max)^2`, the parabolic sag ratio of spans at one horizontal tension.
+    pub fn solver_sag_limit_m(&self) -> Option<f64> {
+        let limit = self.sag_limit_m?;
+        let longest = self.lengths_m.iter().fold(0.0_f64, |m, l| m.max(*l));
+        let ruling = self.span().ok()?.length_m;
+        Some(limit * (ruling / longest).powi(2))
+    }
 }
 
 /// A problem of the case file `file` as an [`InputError`] (for the checks after parsing).

@@ -1,0 +1,73 @@
+//! The table of a sag-tension case (`ohl sagtension`, `ohl.sagtension`): the case's conductor strung once
+//! ([`crate::sagtension::Problem::string`]), then every condition solved in every state of the strung
+//! conductor (initial, after creep, after load, final), the knee-point temperature of each state and the
+//! temperature at which each state reaches the case's sag limit. The same problem with the single-modulus
+//! law of the catalogue entry gives the comparison curve of the figure. The model and its equations are
+//! the solver's ([`crate::sagtension`], docs/sagtension.md); this module only orders its answers.
+
+use super::sagtension::{LawKind, Resolved};
+use crate::sagtension::{Row, SagTensionError, State, Strung, Weather};
+
+/// A value the solver may not find (a knee outside the searched temperatures): the value, or why not.
+pub type Found = Result<f64, String>;
+
+/// The table of a case.
+#[derive(Clone, Debug)]
+pub struct Table {
+    /// the conductor's law
+    pub law: LawKind,
+    /// the length of the span the solver sees [m] (the ruling span of a section)
+    pub span_m: f64,
+    /// the states of the table, in order
+    pub states: Vec<State>,
+    /// the state the final one stands for
+    pub final_is: State,
+    /// the rows: for each condition (in the case's order) one row per state of [`Table::states`]
+    pub rows: Vec<Row>,
+    /// the knee-point temperature of each state [K]
+    pub knee_k: Vec<(State, Found)>,
+    /// the temperature at which each state reaches the sag limit [K] (empty without a limit)
+    pub limit_k: Vec<(State, Found)>,
+    /// the sag limit of the span the solver sees [m]
+    pub sag_limit_m: Option<f64>,
+}
+
+/// The strung conductor of the case with the law `law`.
+pub fn strung(r: &Resolved, law: crate::conductor::TwoMaterial) -> Result<Strung, SagTensionError> {
+    r.problem(law)?.string()
+}
+
+/// Solve the case's table.
+pub fn solve(r: &Resolved) -> Result<Table, SagTensionError> {
+    let (law, kind) = r.law();
+    let s = strung(r, law)?;
+    let states = s.states();
+    let mut rows = Vec::with_capacity(r.conditions.len() * states.len());
+    for w in &r.conditions {
+        let w = w.to_solver();
+        for &state in &states {
+            rows.push(s.solve(&w, state)?);
+        }
+    }
+    let knee_k = states.iter().map(|&st| (st, s.knee_temperature_k(st).map_err(|e| e.to_string()))).collect();
+    let sag_limit_m = r.solver_sag_limit_m();
+    let limit_k = match sag_limit_m {
+        Some(d) => states.iter().map(|&st| (st, s.temperature_at_sag_k(st, d).map_err(|e| e.to_string()))).collect(),
+        None => Vec::new(),
+    };
+    Ok(Table {
+        law: kind,
+        span_m: s.problem.span.length_m,
+        final_is: s.histories.final_is,
+        states,
+        rows,
+        knee_k,
+        limit_k,
+        sag_limit_m,
+    })
+}
+
+/// The mid-span sag [m] of the bare span in `state` at each temperature of `temperatures_k` [K].
+pub fn sag_curve(s: &Strung, state: State, temperatures_k: &[f64]) -> Result<Vec<(f64, f64)>, SagTensionError> {
+    temperatures_k.iter().map(|&t| Ok((t, s.solve(&Weather::bare(t), state)?.sag_midspan_m))).collect()
+}
