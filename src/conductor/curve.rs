@@ -8,7 +8,8 @@
 //!
 //! with `F` [N] the force the component carries and `e` [-] its mechanical strain (a fraction, not
 //! percent). `e_z` is the curve's first zero at or above zero strain: a published curve has `a0 < 0` (the
-//! strands settle before they carry load), so the force is zero up to `e_z`. Beyond the fitted range
+//! strands settle before they carry load), so the force is zero up to `e_z` (a curve with a small
+//! `a0 > 0`, as steel creep curves have, has its zero within 0.1 % below zero strain). Beyond the fitted range
 //! `e_lim` the curve continues along its tangent (the published polynomials are not meant to be used
 //! there, and a quartic can turn down). A linear material is the curve `a1 = EA`, the rest zero.
 //!
@@ -16,6 +17,10 @@
 //! the strain in percent; [`Curve::from_percent`] converts them: `a_k [N] = A_total a_k[Pa] 100^k`.
 
 use crate::element::scalar::Scalar;
+
+/// The largest strain [-] at which a loading curve may start to carry load: 0.5 %. Published curves do
+/// at a few hundredths of a percent (Drake's aluminium: 0.028 %); a later start is a mistyped coefficient.
+pub const MAX_ZERO_STRAIN: f64 = 0.005;
 
 /// A virgin loading curve `F(e)` (module doc).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -35,11 +40,15 @@ impl Curve {
     }
 
     /// A polynomial curve from coefficients `a_k` [N] (strain as a fraction) and its fitted range's upper
-    /// end `limit_strain` [-]. Returns `None` when the curve has no zero in `[0, limit)` or is not
+    /// end `limit_strain` [-]. Returns `None` when the curve has no zero in `[-0.001, 0.005]` below the limit
+    /// ([`MAX_ZERO_STRAIN`]) or is not
     /// increasing on `[e_z, limit]` (checked at 200 points: a loading curve must be).
     pub fn polynomial(coefficients_n: [f64; 5], limit_strain: f64) -> Option<Curve> {
         let mut c = Curve { coefficients_n, limit_strain, zero_strain: 0.0 };
         c.zero_strain = c.find_zero()?;
+        if c.zero_strain > MAX_ZERO_STRAIN {
+            return None;
+        }
         let hi = if limit_strain.is_finite() { limit_strain } else { c.zero_strain + 0.02 };
         let n = 200;
         for k in 0..=n {
@@ -62,7 +71,7 @@ impl Curve {
         let probe = Curve { coefficients_n: a, limit_strain: f64::INFINITY, zero_strain: 0.0 };
         let limit_strain = match limit_pa {
             None => f64::INFINITY,
-            Some(s) => probe.raw_inverse(s * total_area_m2, 0.0, 0.05)?,
+            Some(s) => probe.first_crossing(s * total_area_m2, 0.05)?,
         };
         Curve::polynomial(a, limit_strain)
     }
@@ -137,17 +146,29 @@ impl Curve {
     }
 
     fn find_zero(&self) -> Option<f64> {
-        if self.coefficients_n[0] >= 0.0 {
-            return (self.coefficients_n[0] == 0.0).then_some(0.0);
+        if self.coefficients_n[0] == 0.0 {
+            return Some(0.0);
+        }
+        if self.coefficients_n[0] > 0.0 {
+            // A curve that starts above zero (a small positive a0, as steel creep curves have) has its zero
+            // just below zero strain: within 0.1 % of it.
+            return (self.raw(-1.0e-3) < 0.0).then(|| self.raw_inverse(0.0, -1.0e-3, 0.0)).flatten();
         }
         // a0 < 0: the first sign change above 0, scanning up to the limit (or 5 % strain).
         let hi = if self.limit_strain.is_finite() { self.limit_strain } else { 0.05 };
-        let n = 1000;
+        self.first_crossing(0.0, hi)
+    }
+
+    /// The smallest strain in `(0, hi]` where the polynomial reaches `f` (from below), scanning 2000 steps
+    /// and then bisecting the first step that crosses: a fitted quartic may turn down and up again beyond
+    /// its range, so a plain bisection over `[0, hi]` could find a later root.
+    fn first_crossing(&self, f: f64, hi: f64) -> Option<f64> {
+        let n = 2000;
         let mut prev = 0.0;
         for k in 1..=n {
             let e = hi * k as f64 / n as f64;
-            if self.raw(e) >= 0.0 {
-                return self.raw_inverse(0.0, prev, e);
+            if self.raw(e) >= f {
+                return self.raw_inverse(f, prev, e);
             }
             prev = e;
         }

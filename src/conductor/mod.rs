@@ -4,13 +4,15 @@
 //!
 //! - [`curve`]: a material's virgin loading curve `F(e)` (a quartic in the strain, or a line);
 //! - [`component`]: one material and its loading/unloading path with the largest strain it has reached;
-//! - [`two_material`]: the conductor, its components strained together, `T(e, theta)`.
+//! - [`two_material`]: the conductor, its components strained together, `T(e, theta)`;
+//! - [`data`]: the stress-strain data of a catalogue entry (`[conductor.stress_strain]`) and their checks.
 //!
 //! The paper's conductor (one axial stiffness `EA`, one expansion coefficient, section 2 and (5.5)) is the
 //! special case of one linear material; runs that give no material keep the paper's law, bit for bit.
 
 pub mod component;
 pub mod curve;
+pub mod data;
 pub mod two_material;
 
 pub use component::{Component, CurveKind};

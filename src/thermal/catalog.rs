@@ -38,6 +38,8 @@ use std::sync::OnceLock;
 use serde::Deserialize;
 
 use super::ThermalConductor;
+use crate::conductor::TwoMaterial;
+use crate::conductor::data::{StressStrainData, StressStrainError};
 
 /// The catalogue file, compiled in.
 const CATALOG_TOML: &str = include_str!("../../data/conductors.toml");
@@ -109,6 +111,10 @@ pub struct CatalogConductor {
     pub core_specific_heat_coefficient_per_k: f64,
     /// where each number comes from, and which numbers are computed \[-\]
     pub source: String,
+    /// the materials' stress-strain data (`[conductor.stress_strain]`, [`crate::conductor::data`]) for
+    /// the two-material law and sag-tension; absent: the entry has only its linear `EA` and expansion
+    #[serde(default)]
+    pub stress_strain: Option<StressStrainData>,
 }
 
 impl CatalogConductor {
@@ -140,6 +146,19 @@ impl CatalogConductor {
         }
     }
 
+    /// The conductor's axial law from its stress-strain data (`None` where the entry has none): aluminium
+    /// outer layers of `aluminium_area_m2` on a core of `steel_area_m2`.
+    ///
+    /// # Panics
+    /// If the data are invalid: [`parse`] has checked them (a value of this type built by hand is the
+    /// caller's to check with [`StressStrainData::two_material`]).
+    pub fn two_material(&self) -> Option<TwoMaterial> {
+        self.stress_strain.as_ref().map(|d| {
+            d.two_material(self.aluminium_area_m2, self.steel_area_m2)
+                .unwrap_or_else(|e| panic!("{}: {e} (parse checks this)", self.name))
+        })
+    }
+
     /// Whether `key` (already trimmed and lower-cased) is this conductor's name or one of its aliases.
     fn answers_to(&self, key: &str) -> bool {
         std::iter::once(&self.name).chain(&self.aliases).any(|n| normalise(n) == key)
@@ -164,6 +183,14 @@ pub enum CatalogError {
     /// around them).
     #[error("conductor catalogue: the name \"{0}\" is used by more than one entry")]
     Duplicate(String),
+    /// An entry's stress-strain data are out of range or a curve is not a loading curve.
+    #[error("conductor catalogue: \"{conductor}\": {error}")]
+    StressStrain {
+        /// the entry's name
+        conductor: String,
+        /// the field, its value and what is allowed
+        error: StressStrainError,
+    },
 }
 
 /// The file's top level: a list of `[[conductor]]` tables.
@@ -191,6 +218,10 @@ pub fn parse(text: &str) -> Result<Vec<CatalogConductor>, CatalogError> {
                 return Err(CatalogError::Duplicate(n.trim().to_string()));
             }
             seen.push((key, k));
+        }
+        if let Some(d) = &c.stress_strain {
+            d.two_material(c.aluminium_area_m2, c.steel_area_m2)
+                .map_err(|error| CatalogError::StressStrain { conductor: c.name.clone(), error })?;
         }
     }
     Ok(file.conductor)
@@ -440,5 +471,68 @@ mod tests {
         assert!(matches!(parse(&missing), Err(CatalogError::Parse(m)) if m.contains("emissivity")));
 
         assert!(matches!(parse("[[conductor]]\nkind = \"ACSS\""), Err(CatalogError::Parse(_))));
+    }
+
+    #[test]
+    fn linear_stress_strain_data_reproduce_the_entry_s_ea_and_expansion_below_the_knee() {
+        // The split moduli (header of data/conductors.toml) are rounded to 5 digits: K_o + K_c = EA and the
+        // K-weighted expansion = alpha within 1e-4 relative.
+        use crate::conductor::CurveKind;
+        for c in catalog() {
+            let (Some(law), Some(d)) = (c.two_material(), &c.stress_strain) else { continue };
+            if d.outer.initial_pa_percent.is_some() {
+                continue;
+            }
+            let h = law.virgin(CurveKind::Initial);
+            let k: f64 = law.stiffness(1e-3, law.reference_temperature_k, &h);
+            assert!(rel(k, c.axial_stiffness_n) < 1e-4, "{}: K = {k:e}, EA = {:e}", c.name, c.axial_stiffness_n);
+            let ko = law.outer.unloading_stiffness_n;
+            let kc = law.core.map_or(0.0, |m| m.unloading_stiffness_n);
+            let alpha = (ko * law.outer.expansion_per_k + kc * law.core.map_or(0.0, |m| m.expansion_per_k)) / (ko + kc);
+            assert!(rel(alpha, c.thermal_expansion_per_k) < 1e-4, "{}: alpha = {alpha:e}", c.name);
+            // And the tension 30 K above the reference at a strain 1e-3 is the linear law's.
+            let theta = law.reference_temperature_k + 30.0;
+            let t = law.tension(1e-3, theta, &h);
+            let linear = c.axial_stiffness_n * (1e-3 - c.thermal_expansion_per_k * 30.0);
+            assert!(rel(t, linear) < 1e-3, "{}: {t} vs {linear}", c.name);
+        }
+    }
+
+    #[test]
+    fn drake_s_curves_are_the_published_polynomials_in_psi_on_0_7264_square_inches() {
+        // Evaluate the published coefficients (psi, strain in %; OTLS-Models test/factory.cc) directly and
+        // compare with the law's forces: the conversion to SI is then checked to the 7 digits the file keeps.
+        use crate::conductor::CurveKind;
+        let law = find("drake").unwrap().two_material().expect("Drake has stress-strain data");
+        let area_in2 = 0.7264;
+        let lbf = 4.4482216;
+        let poly = |a: [f64; 5], x: f64| a[0] + a[1] * x + a[2] * x * x + a[3] * x.powi(3) + a[4] * x.powi(4);
+        let al = [-1213.0, 44308.1, -14004.4, -37618.0, 30676.0];
+        let st = [-69.3, 38629.0, 3998.1, -45713.0, 27892.0];
+        let h = law.virgin(CurveKind::Initial);
+        for x in [0.1, 0.2, 0.3, 0.5] {
+            let f = law.forces(x / 100.0, law.reference_temperature_k, &h);
+            let want = [poly(al, x) * area_in2 * lbf, poly(st, x) * area_in2 * lbf];
+            for k in 0..2 {
+                assert!((f[k] - want[k]).abs() < 1e-6 * want[k].abs().max(1e3), "x = {x} %: {:?} vs {want:?}", f);
+            }
+        }
+        // The final moduli add up to 101000 psi/% on 0.7264 in^2: 69.64 GPa.
+        let k = law.outer.unloading_stiffness_n + law.core.unwrap().unloading_stiffness_n;
+        assert!(rel(k / 4.68644e-4, 101000.0 * 100.0 * 6894.757) < 1e-6);
+    }
+
+    #[test]
+    fn a_user_catalogue_with_a_curve_that_is_not_a_loading_curve_names_the_field() {
+        let drake = CATALOG_TOML.split("\n[[conductor]]\n").nth(1).unwrap();
+        // The aluminium's initial curve turned down (a4 negative): it peaks near 0.5 % at 75 MPa and never
+        // reaches its stated limit of 140 MPa.
+        let bad = format!("[[conductor]]\n{}", drake.replacen("2.115036e8", "-2.115036e8", 1));
+        let err = parse(&bad).unwrap_err().to_string();
+        assert!(err.contains("\"ACSR Drake\"") && err.contains("stress_strain.outer.initial_pa_percent"), "{err}");
+        let bad =
+            format!("[[conductor]]\n{}", drake.replacen("expansion_per_k = 23.04e-6", "expansion_per_k = 2.3e-3", 1));
+        let err = parse(&bad).unwrap_err().to_string();
+        assert!(err.contains("stress_strain.outer.expansion_per_k = 0.0023") && err.contains("[0e0, 5e-5]"), "{err}");
     }
 }
