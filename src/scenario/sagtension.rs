@@ -777,7 +777,10 @@ impl Resolved {
     /// The conductor's law: the catalogue's two-material law where the entry has stress-strain data, else
     /// the single-modulus one ([`Resolved::single_modulus_law`]).
     pub fn law(&self) -> (TwoMaterial, LawKind) {
-        (self.single_modulus_law(), LawKind::SingleModulus)
+        match self.conductor.two_material() {
+            Some(law) => (law, LawKind::TwoMaterial),
+            None => (self.single_modulus_law(), LawKind::SingleModulus),
+        }
     }
 
     /// The solver's problem with the axial law `law` (the case's or the single-modulus comparison).

@@ -141,8 +141,8 @@ fn print(name: &Option<String>, r: &Resolved, t: &Table) {
             row.sag_midspan_m,
             files::support_tension_n(row) / 1e3,
             100.0 * row.max_tension_fraction_rts,
-            row.outer_stress_pa / 1e6,
-            row.core_stress_pa / 1e6,
+            row.outer_stress_pa / 1e6 + 0.0, // -0 (a slack layer) prints as 0
+            row.core_stress_pa / 1e6 + 0.0,
             if row.knee_passed { "yes" } else { "no" }
         );
     }
