@@ -426,25 +426,19 @@ pub fn resolve_weather(
         },
         None => None,
     };
-    let mut ok = true;
-    let mut pick = |name: &str, own: Option<f64>, of_case: Option<f64>, default: Option<f64>| -> f64 {
+    let mut missing: Vec<&str> = Vec::new();
+    let mut pick = |name: &'static str, own: Option<f64>, of_case: Option<f64>, default: Option<f64>| -> f64 {
         match (own, of_case, default, named) {
             (Some(x), ..) => x,
             (None, Some(x), ..) => x,
+            // A code that leaves its values to the user (IEC 60826, EN 50341-1): no default stands in.
             (None, None, _, Some(k)) if k.radial_ice_m.is_none() || k.wind_pressure_pa.is_none() => {
-                // A code that leaves the value to the user (IEC 60826, EN 50341-1).
-                ok = false;
-                c.fail(
-                    &field(name),
-                    "(missing)",
-                    &format!("load case {} leaves it to the user: {}", k.name, k.user_chooses),
-                );
+                missing.push(name);
                 f64::NAN
             }
             (None, None, Some(d), _) => d,
             (None, None, None, _) => {
-                ok = false;
-                c.fail(&field(name), "(missing)", "must be given (or a named `case` that gives it)");
+                missing.push(name);
                 f64::NAN
             }
         }
@@ -471,9 +465,26 @@ pub fn resolve_weather(
         Some(DEFAULT_DRAG_COEFFICIENT),
     );
     let constant_n_per_m = pick("constant_n_per_m", w.constant_n_per_m, named.map(|k| k.constant_k_n_per_m), Some(0.0));
-    if !ok {
-        return None;
+    match (missing.is_empty(), named) {
+        (true, _) => {}
+        (false, Some(k)) => {
+            c.fail(
+                &field("case"),
+                format!("{:?}", k.name),
+                &format!(
+                    "leaves {} to the user: give them beside it (the code leaves: {})",
+                    missing.join(", "),
+                    k.user_chooses
+                ),
+            );
+            return None;
+        }
+        (false, None) => {
+            c.fail(&field(missing[0]), "(missing)", "must be given (or a named `case` that gives it)");
+            return None;
+        }
     }
+    let mut ok = true;
     // Only the values the file wrote are checked with their own field names; a case's values are the code's.
     if w.temperature_k.is_some() || named.is_none() {
         ok &= c.range(&field("temperature_k"), temperature_k, &SAG_TEMPERATURE_K);
@@ -634,11 +645,12 @@ fn check(c: &mut Check, case: &SagTensionCase, user: Option<&[CatalogConductor]>
                 let ok_a = c.range("conditions.from_temperature_k", a, &SAG_TEMPERATURE_K);
                 let ok_b = c.range("conditions.to_temperature_k", b, &SAG_TEMPERATURE_K);
                 let ok_s = c.range("conditions.temperature_step_k", r.temperature_step_k, &TEMPERATURE_STEP_K);
+                all_ok &= ok_a && ok_b && ok_s && b >= a;
                 if ok_a && ok_b && b < a {
                     c.fail(
                         "conditions.to_temperature_k",
                         number(b),
-                        &format!("must be at least conditions.from_temperature_k = {} K", number(a)),
+                        "must be at least the range's start, from_temperature: the range runs upwards",
                     );
                 } else if ok_a && ok_b && ok_s {
                     let n = ((b - a) / r.temperature_step_k + 1e-9).floor() as usize + 1;
@@ -660,6 +672,7 @@ fn check(c: &mut Check, case: &SagTensionCase, user: Option<&[CatalogConductor]>
             (None, None) => {}
             (a, _) => {
                 let missing = if a.is_none() { "conditions.from_temperature_k" } else { "conditions.to_temperature_k" };
+                all_ok = false;
                 c.fail(missing, "(missing)", "a temperature range needs from_temperature_k and to_temperature_k");
             }
         }
@@ -903,8 +916,16 @@ mod tests {
         assert_eq!(p[1].allowed, "must be in [0, 0.2] m");
         // A code that leaves its values to the user is refused, naming what it leaves.
         let p = problems(&format!("{BASE}[[condition]]\ncase = \"iec60826_ice_wind\"\n"));
-        assert_eq!(p[0].field, "condition[0].temperature_k");
-        assert!(p[0].allowed.contains("load case iec60826_ice_wind leaves it to the user"), "{}", p[0].allowed);
+        assert_eq!(p.len(), 1, "{p:?}");
+        assert_eq!(p[0].field, "condition[0].case");
+        assert!(
+            p[0].allowed.starts_with(
+                "leaves temperature_k, ice_thickness_m, ice_density_kg_per_m3, wind_pressure_pa, drag_coefficient to \
+                 the user"
+            ),
+            "{}",
+            p[0].allowed
+        );
         // Nothing asked.
         let p = problems(BASE);
         assert_eq!(p[0].field, "condition");
