@@ -18,6 +18,7 @@ mod line_scenario;
 mod rating;
 mod readme_example;
 mod run_loop;
+mod sagtension;
 mod scenario_reference;
 mod section;
 mod section_events;

@@ -111,6 +111,35 @@ impl Component {
         m - c.force(m) / self.unloading_stiffness_n
     }
 
+    /// The largest strain `m_i` [-] on the INITIAL curve equivalent to having reached `m_c` [-] on the
+    /// creep curve: where the unloading line from `(m_c, C_c(m_c))` meets the initial curve,
+    /// `C_i(m_i) = C_c(m_c) + K_u (m_i - m_c)`. Below `m_i` the two histories unload along the same line;
+    /// beyond it a creep-stretched component loaded by a short-term load (ice, wind) follows its
+    /// initial curve again, not the creep curve (the Aluminum Association's graphic method; the same
+    /// transfer in OTLS-Models `CableComponentElongationModel::UpdateStretch`). `m_c` itself without a
+    /// creep curve. Bisection on `C_i(x) - C_c(m_c) - K_u (x - m_c)`, decreasing in `x` wherever the
+    /// initial curve is less stiff than the unloading line.
+    pub fn creep_stretch_on_initial(&self, m_creep: f64) -> f64 {
+        let Some(creep) = &self.creep else { return m_creep };
+        let m = m_creep.max(creep.zero_strain());
+        let fm = creep.force(m);
+        let e_z = self.initial.zero_strain();
+        let phi = |x: f64| self.initial.force(x.max(e_z)) - fm - self.unloading_stiffness_n * (x - m);
+        let span = 0.01;
+        let (mut lo, mut hi) = if phi(m) >= 0.0 { (m, m + span) } else { (m - span, m) };
+        if phi(lo) < 0.0 || phi(hi) > 0.0 {
+            return m;
+        }
+        for _ in 0..200 {
+            let mid = 0.5 * (lo + hi);
+            if mid <= lo || mid >= hi {
+                break;
+            }
+            if phi(mid) >= 0.0 { lo = mid } else { hi = mid }
+        }
+        0.5 * (lo + hi)
+    }
+
     /// Loads the component to the strain `e` [-]: returns the force [N] and moves the largest strain
     /// reached `m` up to `e` when `e` passes it.
     pub fn load(&self, e: f64, kind: CurveKind, m: &mut f64) -> f64 {

@@ -118,6 +118,20 @@ impl TwoMaterial {
         hi
     }
 
+    /// A creep-stretched history moved onto the initial curves (each component's
+    /// [`Component::creep_stretch_on_initial`]): the same unloading lines, and short-term loads beyond
+    /// them follow the initial curves. A history already on the initial curves is returned as it is.
+    pub fn creep_history_on_initial(&self, h: &History) -> History {
+        if h.curve == CurveKind::Initial {
+            return *h;
+        }
+        let mut out = History { curve: CurveKind::Initial, max_strain: h.max_strain };
+        for (k, c) in self.components() {
+            out.max_strain[k] = c.creep_stretch_on_initial(h.max_strain[k]);
+        }
+        out
+    }
+
     /// The conductor strain [-] below which the outer layers carry no tension at `theta` [K] (their
     /// permanent set plus their thermal strain): the knee point's strain.
     pub fn outer_slack_strain(&self, temperature_k: f64, h: &History) -> f64 {

@@ -258,6 +258,8 @@ impl SpanLaw<'_> {
         }
         let system = Closure { span: self, scale: self.span_m.hypot(self.rise_m).max(self.unstressed_length_m) };
         let x0 = self.estimate();
+        // a law that cannot carry the estimate's tensions: its own error, not a NaN residual
+        self.closure(x0)?;
         let opts = Options2d { residual_tol: CLOSURE_TOLERANCE, max_iterations: 100, ..Options2d::default() };
         let sol = newton_2d(&system, x0, opts)
             .map_err(|e| SagTensionError::NoSolution { what: "span closure (H, V)", detail: e.to_string() })?;

@@ -28,7 +28,7 @@ pub mod span;
 pub mod weather;
 
 pub use error::SagTensionError;
-pub use problem::{Histories, Problem, State, Stringing, StringingTarget, Strung};
+pub use problem::{Histories, Problem, State, StretchPoint, Stringing, StringingTarget, Strung};
 pub use row::Row;
 pub use span::Span;
 pub use weather::{STANDARD_GRAVITY_M_PER_S2, SagConductor, Weather};

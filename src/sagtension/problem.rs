@@ -7,17 +7,21 @@
 //! - AFTER CREEP: the creep stretch condition (default: the stringing temperature, bare; the published
 //!   10-year creep at the everyday condition) solved on the creep curves; each component keeps the
 //!   largest mechanical strain it reached there, and every other condition unloads from it along the
-//!   final modulus ([`crate::conductor::component`]);
+//!   final modulus ([`crate::conductor::component`]); a short-term load beyond the creep stretch follows
+//!   the initial curve again, from where the unloading line meets it
+//!   ([`TwoMaterial::creep_history_on_initial`]);
 //! - AFTER LOAD: the heavy load condition solved on the initial curves, the largest strains kept;
 //! - FINAL: whichever of the two leaves the conductor longer, i.e. gives the lower `H` (larger sag) at the
 //!   stringing condition's weather ("the state with the larger sag increase", Douglass and Thrash); with
 //!   only one stretch condition given, that one; with none, INITIAL.
 //!
-//! The largest strain of a stretch is the conductor strain at the support with the larger tension: the
-//! most strained point of the span (`T` is largest there and `e(T)` is increasing), as SAG10 and
-//! OTLS-Models do: the permanent set of the span is then that of its most loaded point, a
-//! conservative (longer) one-number summary of a set that in truth varies along the span by the
-//! ratio of support to horizontal tension (a few tenths of a percent for a usual span).
+//! The largest strain of a stretch is one number for the whole span ([`StretchPoint`]): by default the
+//! conductor strain at the support with the larger tension, the most strained point of the span (`T` is
+//! largest there and `e(T)` increasing): the permanent set of the span is then that of its most loaded
+//! point, a conservative (longer) summary of a set that in truth varies along the span with the
+//! tension. OTLS-Models uses the strain at the span's average tension instead
+//! (`LineCableLoaderBase::UpdateConstraintCableModel`, the reloaded catenary's `TensionAverage`):
+//! [`StretchPoint::AverageTension`]; docs/sagtension.md compares the two on reference D.
 //!
 //! A stringing condition in a stretched state (the tension wanted "final") is met by the same root on
 //! `L0`: the history then depends on `L0`, and the root finder sees the whole chain.
@@ -73,6 +77,16 @@ pub struct Stringing {
     pub state: State,
 }
 
+/// Where along the span a stretch condition sets the components' largest strains (module doc).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum StretchPoint {
+    /// at the support with the larger tension (the most strained point)
+    #[default]
+    MostStrained,
+    /// at the length-averaged tension of the span (OTLS-Models; SAG10-type programs)
+    AverageTension,
+}
+
 /// A sag-tension problem (module doc).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Problem {
@@ -88,6 +102,8 @@ pub struct Problem {
     pub heavy_load: Option<Weather>,
     /// gravity `g` [m/s^2] ([`super::STANDARD_GRAVITY_M_PER_S2`])
     pub gravity_m_per_s2: f64,
+    /// where a stretch sets the largest strains ([`StretchPoint::MostStrained`] by default)
+    pub stretch_point: StretchPoint,
 }
 
 /// A strung conductor: the problem with its unstressed length and the states' histories.
@@ -180,8 +196,11 @@ impl Problem {
     fn stretch(&self, weather: &Weather, start: History, l0: f64) -> Result<History, SagTensionError> {
         let span = self.span_law(weather, start, l0);
         let sol = span.solve()?;
-        let t_max = span.tension_at(0.0, sol.hv()).max(span.tension_at(l0, sol.hv()));
-        let e = span.strain(t_max)?;
+        let t = match self.stretch_point {
+            StretchPoint::MostStrained => span.tension_at(0.0, sol.hv()).max(span.tension_at(l0, sol.hv())),
+            StretchPoint::AverageTension => span.means(sol.hv())?.0[0],
+        };
+        let e = span.strain(t)?;
         let mut h = start;
         self.law().load(e, weather.temperature_k, &mut h);
         Ok(h)
@@ -192,7 +211,7 @@ impl Problem {
         let law = self.law();
         let initial = law.virgin(CurveKind::Initial);
         let after_creep = match &self.creep {
-            Some(w) => Some(self.stretch(w, law.virgin(CurveKind::Creep), l0)?),
+            Some(w) => Some(law.creep_history_on_initial(&self.stretch(w, law.virgin(CurveKind::Creep), l0)?)),
             None => None,
         };
         let after_load = match &self.heavy_load {

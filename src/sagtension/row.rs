@@ -76,7 +76,8 @@ impl Row {
         let t_max = ta.max(tb);
         let e = span.strain(t_max)?;
         let law = &p.conductor.law;
-        let f = law.forces(e, weather.temperature_k, &span.history);
+        // `+ 0.0`: a slack component's `0 * (e - e_p)` is -0.0; tables print 0
+        let f = law.forces(e, weather.temperature_k, &span.history).map(|x| x + 0.0);
         let (means, length) = span.means(hv)?;
         let a_o = law.outer.area_m2;
         let a_c = law.core.map_or(0.0, |c| c.area_m2);
@@ -97,8 +98,8 @@ impl Row {
             strain_max: e,
             outer_force_n: f[0],
             core_force_n: f[1],
-            outer_force_mean_n: means[1],
-            core_force_mean_n: means[2],
+            outer_force_mean_n: means[1] + 0.0,
+            core_force_mean_n: means[2] + 0.0,
             outer_stress_pa: f[0] / a_o,
             core_stress_pa: if a_c > 0.0 { f[1] / a_c } else { 0.0 },
             outer_stress_total_area_pa: f[0] / total,
