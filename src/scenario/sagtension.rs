@@ -131,6 +131,17 @@ pub enum StateSpec {
     Final,
 }
 
+/// Where a stretch is taken in the span (`stretch_point`).
+#[derive(Clone, Copy, Debug, Default, Deserialize, serde::Serialize, PartialEq, Eq)]
+#[serde(rename_all = "snake_case")]
+pub enum StretchPointSpec {
+    /// the support with the larger tension (default)
+    #[default]
+    MostStrained,
+    /// the length-averaged tension
+    AverageTension,
+}
+
 /// A weather of a sag-tension table: the conductor temperature and its loads.
 #[derive(Clone, Debug, Default, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -286,6 +297,11 @@ pub struct SagTensionCase {
     /// a clearance or sag limit
     #[serde(default)]
     pub clearance: Option<ClearanceSpec>,
+    /// where a stretch (creep, heavy load) is taken in the span: `"most_strained"` (the support with the
+    /// larger tension, default) or `"average_tension"` (the length-averaged tension, as OTLS-Models and
+    /// SAG10-type programs do) ([`sag::problem::StretchPoint`])
+    #[serde(default)]
+    pub stretch_point: StretchPointSpec,
     /// the temperature fields written in degrees Celsius (set by [`parse_case`], not a key of the file)
     #[serde(skip)]
     pub celsius: super::temperature::Celsius,
@@ -365,6 +381,8 @@ pub struct Resolved {
     pub conditions: Vec<Weather>,
     /// the sag limit at mid-span [m] (from `max_sag_m`, or the mean support height less the clearance)
     pub sag_limit_m: Option<f64>,
+    /// where a stretch is taken in the span
+    pub stretch_point: sag::problem::StretchPoint,
 }
 
 /// Parse and validate a sag-tension case; `file` names it in messages.
@@ -736,6 +754,10 @@ fn check(c: &mut Check, case: &SagTensionCase, user: Option<&[CatalogConductor]>
         heavy_load: heavy_load.flatten(),
         conditions,
         sag_limit_m,
+        stretch_point: match case.stretch_point {
+            StretchPointSpec::MostStrained => sag::problem::StretchPoint::MostStrained,
+            StretchPointSpec::AverageTension => sag::problem::StretchPoint::AverageTension,
+        },
     })
 }
 
@@ -816,6 +838,7 @@ impl Resolved {
             creep: Some(self.creep.to_solver()),
             heavy_load: self.heavy_load.as_ref().map(Weather::to_solver),
             gravity_m_per_s2: sag::STANDARD_GRAVITY_M_PER_S2,
+            stretch_point: self.stretch_point,
         })
     }
 
