@@ -197,6 +197,33 @@ mod tests {
     }
 
     #[test]
+    fn a_creep_stretch_moved_onto_the_initial_curve_unloads_along_the_same_line() {
+        // Drake's aluminium with its 10-year creep curve (OTLS-Models test/factory.cc), stretched to
+        // 0.2 % on the creep curve.
+        let psi = 6894.757;
+        let area = 0.7264 * 6.4516e-4;
+        let creep = [-544.8, 21426.8, -18842.2, 5495.0, 0.0].map(|x| x * psi);
+        let mut c = drake().outer;
+        c.creep = Some(Curve::from_percent(creep, area, Some(7535.0 * psi)).unwrap());
+        let mc = 0.002;
+        let mi = c.creep_stretch_on_initial(mc);
+        // The closed form it solves: C_i(m_i) = C_c(m_c) + K_u (m_i - m_c), the unloading line meeting the
+        // initial curve above m_c (the creep curve lies below the initial one at the same strain).
+        let fc = c.creep.unwrap().force(mc);
+        assert!(mi > mc);
+        assert!((c.initial.force(mi) - fc - c.unloading_stiffness_n * (mi - mc)).abs() < 1e-9 * fc);
+        // Below m_c both histories give the same force (the same line), to round-off of the line.
+        for k in 0..20 {
+            let e = mc - 1e-4 * k as f64;
+            let on_creep = c.force(e, CurveKind::Creep, mc);
+            let on_initial = c.force(e, CurveKind::Initial, mi);
+            assert!((on_creep - on_initial).abs() < 1e-9 * fc, "{e}: {on_creep} vs {on_initial}");
+        }
+        // Beyond m_i the initial history follows the initial curve.
+        assert_eq!(c.force(mi + 1e-4, CurveKind::Initial, mi), c.initial.force(mi + 1e-4));
+    }
+
+    #[test]
     fn strain_at_inverts_the_tension_and_the_knee_is_where_the_aluminium_goes_slack() {
         let d = drake();
         let h = d.virgin(CurveKind::Initial);

@@ -28,6 +28,8 @@ pub struct Row {
     pub support_tension_a_n: f64,
     /// tension at support B [N]
     pub support_tension_b_n: f64,
+    /// tension averaged over the unstressed length [N] (what SAG10-type programs strain the conductor at)
+    pub tension_mean_n: f64,
     /// the larger support tension as a fraction of the rated tensile strength [-]
     pub max_tension_fraction_rts: f64,
     /// sag below the chord at mid-span `x = l / 2` [m] (module doc)
@@ -90,6 +92,7 @@ impl Row {
             horizontal_tension_n: hv[0],
             support_tension_a_n: ta,
             support_tension_b_n: tb,
+            tension_mean_n: means[0],
             max_tension_fraction_rts: t_max / p.conductor.rated_tensile_strength_n,
             sag_midspan_m: span.sag_at_x(0.5 * span.span_m, hv)?,
             sag_max_m: span.max_sag(hv)?,

@@ -35,6 +35,19 @@ pub struct SagConductor {
     pub rated_tensile_strength_n: f64,
 }
 
+impl SagConductor {
+    /// A catalogue conductor with its stress-strain data (`None`: the entry has none;
+    /// [`crate::thermal::catalog::CatalogConductor::two_material`]).
+    pub fn from_catalog(c: &crate::thermal::catalog::CatalogConductor) -> Option<SagConductor> {
+        Some(SagConductor {
+            law: c.two_material()?,
+            diameter_m: c.diameter_m,
+            mass_kg_per_m: c.linear_density_kg_per_m,
+            rated_tensile_strength_n: c.rated_tensile_strength_n,
+        })
+    }
+}
+
 /// One weather condition.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Weather {
