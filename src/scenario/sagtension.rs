@@ -607,41 +607,31 @@ fn check(c: &mut Check, case: &SagTensionCase, user: Option<&[CatalogConductor]>
             "give one of tension_n, tension_fraction_of_rts and sag_m, not two",
         ),
     }
-    if let Some(t) = s.tension_n {
-        if c.range("stringing.tension_n", t, &STRINGING_TENSION_N) {
-            if let Some(k) = &conductor {
-                if t >= k.rated_tensile_strength_n {
-                    c.fail(
-                        "stringing.tension_n",
-                        number(t),
-                        &format!(
-                            "must be below the conductor's rated tensile strength {} N",
-                            number(k.rated_tensile_strength_n)
-                        ),
-                    );
-                }
-            }
-        }
+    if let Some(t) = s.tension_n
+        && c.range("stringing.tension_n", t, &STRINGING_TENSION_N)
+        && let Some(k) = &conductor
+        && t >= k.rated_tensile_strength_n
+    {
+        c.fail(
+            "stringing.tension_n",
+            number(t),
+            &format!("must be below the conductor's rated tensile strength {} N", number(k.rated_tensile_strength_n)),
+        );
     }
     if let Some(f) = s.tension_fraction_of_rts {
         c.range("stringing.tension_fraction_of_rts", f, &RTS_FRACTION);
     }
-    if let Some(d) = s.sag_m {
-        if c.range("stringing.sag_m", d, &LENGTH_LIMIT_M) {
-            if let Some(&shortest) = lengths_m.iter().min_by(|a, b| a.total_cmp(b)) {
-                // For a ruling span the sag is the ruling span's; its length is at least the shortest span.
-                if shortest.is_finite() && d >= 0.5 * lengths_m.iter().fold(0.0, |m: f64, l| m.max(*l)) {
-                    c.fail(
-                        "stringing.sag_m",
-                        number(d),
-                        &format!(
-                            "must be below half the span, {} m",
-                            number(0.5 * lengths_m.iter().fold(0.0, |m: f64, l| m.max(*l)))
-                        ),
-                    );
-                }
-            }
-        }
+    // The stringing sag is the sag of the span the solver sees: the span, or the ruling span of a section
+    // (sqrt(sum l^3 / sum l), computed here only where every length is valid).
+    let solver_span = (!lengths_m.is_empty() && lengths_m.iter().all(|l| SPAN_LENGTH_M.contains(*l)))
+        .then(|| (lengths_m.iter().map(|l| l * l * l).sum::<f64>() / lengths_m.iter().sum::<f64>()).sqrt());
+    if let Some(d) = s.sag_m
+        && c.range("stringing.sag_m", d, &LENGTH_LIMIT_M)
+        && let Some(l) = solver_span
+        && d >= 0.5 * l
+    {
+        let what = if lengths_m.len() > 1 { "the ruling span" } else { "the span" };
+        c.fail("stringing.sag_m", number(d), &format!("must be below half {what}, {} m", number(0.5 * l)));
     }
     let stringing = resolve_weather(c, "stringing", &s.weather(), None);
     let creep = match &case.creep {
