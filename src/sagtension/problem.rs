@@ -144,13 +144,30 @@ impl Problem {
             w.validate()?;
         }
         let c = &self.conductor;
+        let law = &c.law;
+        let core = law.core.as_ref();
         for (what, value) in [
             ("conductor diameter [m]", c.diameter_m),
             ("conductor mass per length [kg/m]", c.mass_kg_per_m),
             ("gravity [m/s^2]", self.gravity_m_per_s2),
+            ("law reference temperature [K]", law.reference_temperature_k),
+            ("outer layers' area [m^2]", law.outer.area_m2),
+            ("outer layers' unloading stiffness [N]", law.outer.unloading_stiffness_n),
+            ("core area [m^2]", core.map_or(1.0, |k| k.area_m2)),
+            ("core unloading stiffness [N]", core.map_or(1.0, |k| k.unloading_stiffness_n)),
         ] {
             if !(value.is_finite() && value > 0.0) {
                 return Err(Invalid { what, value, allowed: "finite and > 0" });
+            }
+        }
+        for (what, value) in [
+            ("outer layers' expansion coefficient [1/K]", law.outer.expansion_per_k),
+            ("outer layers' compression stiffness [N]", law.outer.compression_stiffness_n),
+            ("core expansion coefficient [1/K]", core.map_or(0.0, |k| k.expansion_per_k)),
+            ("core compression stiffness [N]", core.map_or(0.0, |k| k.compression_stiffness_n)),
+        ] {
+            if !(value.is_finite() && value >= 0.0) {
+                return Err(Invalid { what, value, allowed: "finite and >= 0" });
             }
         }
         let (what, value) = match self.stringing.target {
