@@ -41,6 +41,16 @@ pub fn support_tension_n(r: &Row) -> f64 {
     r.support_tension_a_n.max(r.support_tension_b_n)
 }
 
+/// The mid-span sag of each span of a section [m] from the ruling span's `sag_r`: `sag_r (l_i / l_r)^2`, the
+/// parabolic sag of a span at the ruling span's horizontal tension (Douglass and Thrash, CRC handbook ch.
+/// 14, "ruling span"); one span: its own sag.
+pub fn span_sags_m(resolved: &Resolved, ruling_m: f64, sag_r: f64) -> Vec<f64> {
+    if resolved.lengths_m.len() == 1 {
+        return vec![sag_r];
+    }
+    resolved.lengths_m.iter().map(|l| sag_r * (l / ruling_m).powi(2)).collect()
+}
+
 /// Write `dir/sagtension.csv`.
 pub fn write_csv(dir: &Path, resolved: &Resolved, table: &Table) -> Result<(), String> {
     let path = dir.join("sagtension.csv");
@@ -110,6 +120,7 @@ pub fn write_json(dir: &Path, case: &SagTensionCase, resolved: &Resolved, table:
                 "core_stress_total_area_pa": r.core_stress_total_area_pa,
                 "knee_passed": r.knee_passed, "strain": r.strain_max, "conductor_length_m": r.length_m,
                 "unstressed_length_m": r.unstressed_length_m,
+                "span_sags_m": span_sags_m(resolved, table.span_m, r.sag_midspan_m),
             })
         })
         .collect();
@@ -180,7 +191,14 @@ pub fn figure(dir: &Path, case: &SagTensionCase, resolved: &Resolved, table: &Ta
     }
     if let Some(limit) = table.sag_limit_m {
         let (a, b) = (temps[0] - C, temps[temps.len() - 1] - C);
-        series.push(Series::new(format!("sag limit {limit:.2} m"), vec![(a, limit), (b, limit)], Style::Dotted, 3));
+        let label = match resolved.sag_limit_m {
+            Some(own) if resolved.lengths_m.len() > 1 => {
+                let longest = resolved.lengths_m.iter().fold(0.0_f64, |m, l| m.max(*l));
+                format!("sag limit {limit:.2} m ({own:.2} m in the longest span, {longest} m)")
+            }
+            _ => format!("sag limit {limit:.2} m"),
+        };
+        series.push(Series::new(label, vec![(a, limit), (b, limit)], Style::Dotted, 3));
     }
     let ruling = resolved.lengths_m.len() > 1;
     let chart = Chart {

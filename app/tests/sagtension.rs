@@ -81,6 +81,20 @@ fn check_case(file: &str, tag: &str) {
         serde_json::from_str(&std::fs::read_to_string(out.join("sagtension.json")).unwrap()).unwrap();
     assert_eq!(json["rows"].as_array().unwrap().len(), table.rows.len());
     assert_eq!(json["final_is"], table.final_is.name());
+    // Each span's sag in a section: the ruling span's times (l_i / l_r)^2; one span: its own.
+    for (j, r) in json["rows"].as_array().unwrap().iter().zip(&table.rows) {
+        let sags: Vec<f64> = j["span_sags_m"].as_array().unwrap().iter().map(|v| v.as_f64().unwrap()).collect();
+        assert_eq!(sags.len(), resolved.lengths_m.len());
+        for (s, l) in sags.iter().zip(&resolved.lengths_m) {
+            let want = if resolved.lengths_m.len() == 1 {
+                r.sag_midspan_m
+            } else {
+                r.sag_midspan_m * (l / table.span_m).powi(2)
+            };
+            // serde_json writes the shortest round-trip form, but its default parser may land one ulp off.
+            assert!((s - want).abs() <= 2.0 * f64::EPSILON * want.abs(), "{s} != {want}");
+        }
+    }
     for ext in ["png", "svg"] {
         let f = out.join(format!("sag_vs_temperature.{ext}"));
         assert!(std::fs::metadata(&f).is_ok_and(|m| m.len() > 1000), "{} missing or empty", f.display());
