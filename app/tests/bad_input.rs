@@ -236,6 +236,7 @@ const CASES: &[(&str, &[&str])] = &[
         &["line 15, column 13", "field `ground.profile_m`: point [1] has 3 numbers"],
     ),
     ("thermal_case_given_to_run", &["a thermal case", "`ohl thermal`"]),
+    ("sagtension_case_given_to_run", &["a sag-tension case", "`ohl sagtension`"]),
 ];
 
 /// Cases for `ohl thermal` (file stem, message substrings; exit code 2).
@@ -261,6 +262,7 @@ const THERMAL_CASES: &[(&str, &[&str])] = &[
     ("thermal_case_transient_above_budget", &["field `transient.step_s` = 0.001", "at least 1 s"]),
     ("thermal_case_deicing_step_tiny", &["field `deicing.step_s` = 0.001", "at least 0.00864 s"]),
     ("scenario_given_to_thermal", &["a wire scenario ([conductor]), not a thermal case", "`ohl run`"]),
+    ("sagtension_case_given_to_thermal", &["a sag-tension case", "`ohl sagtension`"]),
     (
         "thermal_case_measured_radiation_under_ieee",
         &["field `weather.sun.measured_global_w_per_m2` = 900", "only with standard = \"cigre601\""],

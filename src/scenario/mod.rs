@@ -90,6 +90,9 @@ pub fn parse(text: &str, file: &str) -> Result<Scenario, InputError> {
                 .into(),
         });
     }
+    if sagtension::is_sagtension_table(&doc) {
+        return Err(InputError::Parse { file: file.to_string(), message: sagtension::NOT_HERE.into() });
+    }
     if thermal::is_thermal_table(&doc) {
         return Err(InputError::Parse {
             file: file.to_string(),

@@ -385,6 +385,16 @@ pub struct Resolved {
     pub stretch_point: sag::problem::StretchPoint,
 }
 
+/// Whether a parsed TOML document is a sag-tension case: a `[stringing]` table with a `[span]` or a
+/// `[ruling_span]` (a wire scenario has neither a `stringing` table nor these).
+pub fn is_sagtension_table(t: &toml::Table) -> bool {
+    t.get("stringing").is_some_and(toml::Value::is_table) && (t.contains_key("span") || t.contains_key("ruling_span"))
+}
+
+/// The message for a sag-tension case given to another command.
+pub const NOT_HERE: &str = "a sag-tension case ([stringing] with [span] or [ruling_span]), not for this command: \
+                            compute it with `ohl sagtension` (docs/sagtension_cases.md)";
+
 /// Parse and validate a sag-tension case; `file` names it in messages.
 pub fn parse_case(text: &str, file: &str) -> Result<(SagTensionCase, Resolved), InputError> {
     let mut doc = super::locate::parse_table(text, file)?;
