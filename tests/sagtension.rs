@@ -672,3 +672,130 @@ fn the_sags_of_an_inclined_span_are_irvines() {
     assert!((mid - irvine_mid).abs() < 1e-9 && (max - irvine_max).abs() < 1e-9);
     assert!(max > mid, "on an inclined span the largest sag is off mid-span");
 }
+
+/// The clearance rating with the knee (docs/sagtension.md, last table): the single-modulus Drake (`EA` =
+/// the sum of the final moduli, the modulus-weighted `alpha`, the form of the default conductor) and the
+/// two-material Drake strung alike (initial state); a clearance limit set by the single-modulus sag at
+/// 100, 125 and 150 C is reached by the two-material conductor at the printed temperature, and IEEE 738
+/// (Annex B's weather: 40 C air, 0.61 m/s across, sun) gives the ampacity at each. Checks: the
+/// single-modulus conductor reaches its own sag at the given temperature (1e-8 K: the search's
+/// tolerance is 1e-10 K), and past the knee the two-material conductor reaches it later (its sag grows
+/// with the steel's alpha).
+#[test]
+fn clearance_rating_with_the_knee_against_a_single_modulus() {
+    use ohl::thermal::examples::annex_b;
+    use ohl::thermal::ieee738::Ieee738;
+    use ohl::thermal::steady::ampacity;
+    let area = 0.7264 * INCH * INCH;
+    let ea = 101000.0 * PSI * 100.0 * area;
+    let alpha = (64000.0 * 12.8e-6 + 37000.0 * 6.4e-6) / 101000.0 * 1.8;
+    let two = drake(0.0);
+    let one = SagConductor {
+        law: TwoMaterial {
+            outer: Component::linear(area, ea / area, alpha),
+            core: None,
+            reference_temperature_k: kelvin_of_f(70.0),
+        },
+        ..two
+    };
+    let rating = Ieee738 { conductor: annex_b::drake(), weather: annex_b::weather() };
+    let amps = |t: f64| ampacity(&rating, t).unwrap().current_a;
+    for (span_ft, h_lb) in [(700.0, 6300.0), (1200.0, 6000.0)] {
+        let at = weather_us(60.0, 0.0, 0.0, 0.0, 0.0);
+        let s2 = problem(two, Span::level(span_ft * FT), h_lb * LBF, at).string().unwrap();
+        let s1 = problem(one, Span::level(span_ft * FT), h_lb * LBF, at).string().unwrap();
+        let knee = s2.knee_temperature_k(State::Initial).unwrap();
+        println!("{span_ft} ft, {h_lb} lb initial at 60 F: knee {:.1} C", knee - 273.15);
+        for tc in [100.0, 125.0, 150.0] {
+            let theta = tc + 273.15;
+            let sag1 = s1.solve(&Weather::bare(theta), State::Initial).unwrap().sag_midspan_m;
+            let sag2 = s2.solve(&Weather::bare(theta), State::Initial).unwrap().sag_midspan_m;
+            let back = s1.temperature_at_sag_k(State::Initial, sag1).unwrap();
+            assert!((back - theta).abs() < 1e-8, "{back} vs {theta}");
+            let t2 = s2.temperature_at_sag_k(State::Initial, sag1).unwrap();
+            if theta > knee {
+                assert!(t2 > theta, "past the knee the two-material conductor sags less");
+            }
+            println!(
+                "  limit = single-modulus sag at {tc} C = {sag1:.3} m (two-material {sag2:.3} m): two-material reaches it at {:.1} C; IEEE 738 Annex B weather: {:.0} A at {tc} C, {:.0} A at {:.1} C",
+                t2 - 273.15,
+                amps(theta),
+                amps(t2),
+                t2 - 273.15
+            );
+        }
+    }
+}
+
+/// Drake's knee temperatures for references D and B in each state (docs/sagtension.md). Check: the
+/// table row 0.01 K below the knee has the aluminium loaded at the support and 0.01 K above it not (the
+/// search's root is the row's flag's switch, 1e-10 K apart).
+#[test]
+fn drakes_knee_temperatures_for_references_d_and_b() {
+    let b = Problem {
+        creep: Some(weather_us(60.0, 0.0, 0.0, 0.0, 0.0)),
+        heavy_load: Some(weather_us(0.0, 0.5, 57.0, 4.0, 0.30)),
+        ..problem(drake(0.0), Span::level(700.0 * FT), 6300.0 * LBF, weather_us(60.0, 0.0, 0.0, 0.0, 0.0))
+    };
+    for (name, p) in [("D", reference_d(drake(1500.0), StretchPoint::MostStrained)), ("B", b)] {
+        let s = p.string().unwrap();
+        for state in [State::Initial, State::AfterCreep, State::AfterLoad, State::Final] {
+            let k = s.knee_temperature_k(state).unwrap();
+            println!(
+                "{name} {state:?} (final = {:?}): knee {:.2} C = {:.1} F",
+                s.histories.final_is,
+                k - 273.15,
+                (k - 273.15) * 1.8 + 32.0
+            );
+            assert!(!s.solve(&Weather::bare(k - 0.01), state).unwrap().knee_passed);
+            assert!(s.solve(&Weather::bare(k + 0.01), state).unwrap().knee_passed);
+        }
+    }
+}
+
+/// A section's spans at the ruling span's H (linear law): each span's unstressed length and sag against
+/// Irvine's closed form at that H, `l = H L0' / EA' + (2 H / w') asinh(w' L0' / (2 H))` solved for `L0'`
+/// (bisection to round-off; `'`: the thermal-strain scaling of (a)). Sag to 1e-9 m and `L0` to 1e-12
+/// relative, as (a); and the span equal to the ruling span returns the ruling span's own row.
+#[test]
+fn the_spans_of_a_section_carry_the_ruling_spans_h() {
+    let c = linear_conductor(false);
+    let k = c.law.outer.initial.coefficients_n[1];
+    let alpha = c.law.outer.expansion_per_k;
+    let lengths = [200.0, 350.0, 500.0];
+    let ruling = Span::ruling(&lengths).unwrap();
+    let p = problem(c, ruling, 20e3, Weather::bare(288.15));
+    let strung = p.string().unwrap();
+    let weather = Weather::bare(333.15);
+    let r = strung.solve(&weather, State::Initial).unwrap();
+    let same = strung.section_span(&weather, State::Initial, ruling).unwrap();
+    assert!((same.unstressed_length_m - strung.unstressed_length_m).abs() < 1e-12 * same.unstressed_length_m);
+    let h = r.horizontal_tension_n;
+    let cth = alpha * (333.15 - 293.15);
+    let w = weather.load_n_per_m(&c, p.gravity_m_per_s2) / (1.0 + cth);
+    let ea = k * (1.0 + cth);
+    for l in lengths {
+        let row = strung.section_span(&weather, State::Initial, Span::level(l)).unwrap();
+        let x = |l0: f64| h * l0 / ea + 2.0 * h / w * (w * l0 / (2.0 * h)).asinh() - l;
+        let (mut a, mut b) = (0.9 * l, 1.1 * l);
+        for _ in 0..200 {
+            let m = 0.5 * (a + b);
+            if x(m) < 0.0 { a = m } else { b = m }
+        }
+        let l0 = 0.5 * (a + b);
+        let cat = ElasticCatenary::level(l, l0, w, ea).unwrap();
+        let sag = -cat.midspan_displacement_m()[2];
+        println!(
+            "span {l} m: H {} N (ruling {h}), sag {} m (Irvine {sag})",
+            row.horizontal_tension_n, row.sag_midspan_m
+        );
+        assert!((row.horizontal_tension_n - h).abs() < 1e-10 * h);
+        assert!(
+            (row.unstressed_length_m - l0 / (1.0 + cth)).abs() < 1e-12 * l0,
+            "{} vs {}",
+            row.unstressed_length_m,
+            l0 / (1.0 + cth)
+        );
+        assert!((row.sag_midspan_m - sag).abs() < 1e-9, "{} vs {sag}", row.sag_midspan_m);
+    }
+}

@@ -283,33 +283,41 @@ impl Problem {
         };
         // f(L0) = sign (value - target) increases with L0.
         let f = |l0: f64| self.stringing_value(l0).map(|v| sign * (v - target) / target);
-        let chord = self.span.length_m.hypot(self.span.rise_m);
-        let (mut lo, mut hi) = (chord * (1.0 - 2e-3), chord * (1.0 + 2e-3));
-        let mut f_lo = f(lo)?;
-        while f_lo > 0.0 {
-            lo = chord - 2.0 * (chord - lo);
-            if lo < 0.5 * chord {
-                return Err(SagTensionError::NoSolution {
-                    what: "stringing condition",
-                    detail: format!("not reached by any length between 0.5 and 1 times the chord {chord} m"),
-                });
-            }
-            f_lo = f(lo)?;
-        }
-        let mut f_hi = f(hi)?;
-        while f_hi < 0.0 {
-            hi = chord + 2.0 * (hi - chord);
-            if hi > 3.0 * chord {
-                return Err(SagTensionError::NoSolution {
-                    what: "stringing condition",
-                    detail: format!("not reached by any length between 1 and 3 times the chord {chord} m"),
-                });
-            }
-            f_hi = f(hi)?;
-        }
-        let l0 = illinois(f, lo, hi, f_lo, f_hi, 1e-14 * chord)?;
+        let l0 = root_on_length(self.span.length_m.hypot(self.span.rise_m), f, "stringing condition")?;
         Ok(Strung { problem: *self, unstressed_length_m: l0, histories: self.histories(l0)? })
     }
+}
+
+/// The root of `f(L0)`, increasing in `L0`, bracketed from `chord (1 -+ 0.002)` outwards (down to half the
+/// chord, up to three times it), to `1e-14` of the chord.
+fn root_on_length<F>(chord: f64, mut f: F, what: &'static str) -> Result<f64, SagTensionError>
+where
+    F: FnMut(f64) -> Result<f64, SagTensionError>,
+{
+    let (mut lo, mut hi) = (chord * (1.0 - 2e-3), chord * (1.0 + 2e-3));
+    let mut f_lo = f(lo)?;
+    while f_lo > 0.0 {
+        lo = chord - 2.0 * (chord - lo);
+        if lo < 0.5 * chord {
+            return Err(SagTensionError::NoSolution {
+                what,
+                detail: format!("not reached by any length between 0.5 and 1 times the chord {chord} m"),
+            });
+        }
+        f_lo = f(lo)?;
+    }
+    let mut f_hi = f(hi)?;
+    while f_hi < 0.0 {
+        hi = chord + 2.0 * (hi - chord);
+        if hi > 3.0 * chord {
+            return Err(SagTensionError::NoSolution {
+                what,
+                detail: format!("not reached by any length between 1 and 3 times the chord {chord} m"),
+            });
+        }
+        f_hi = f(hi)?;
+    }
+    illinois(f, lo, hi, f_lo, f_hi, 1e-14 * chord)
 }
 
 impl Histories {
@@ -335,6 +343,22 @@ impl Strung {
         let p = &self.problem;
         let (span, sol, is) = p.solve_with(weather, state, self.unstressed_length_m, &self.histories)?;
         Row::new(p, weather, state, is, &span, &sol)
+    }
+
+    /// The row of another span `span` of the section whose ruling span this is, at `weather` in `state`:
+    /// the span that carries the ruling span's horizontal tension there ([`super::span`]: the section's
+    /// strings equalise `H`), with the state's history. Its unstressed length is found by a root on `L0`
+    /// (`H` falls with it).
+    pub fn section_span(&self, weather: &Weather, state: State, span: Span) -> Result<Row, SagTensionError> {
+        span.validate()?;
+        let target = self.solve(weather, state)?.horizontal_tension_n;
+        let p = Problem { span, ..self.problem };
+        let (history, is) = self.histories.get(state)?;
+        let f = |l0: f64| p.span_law(weather, history, l0).solve().map(|s| (target - s.horizontal_tension_n) / target);
+        let l0 = root_on_length(span.length_m.hypot(span.rise_m), f, "span of the section at the ruling span's H")?;
+        let law = p.span_law(weather, history, l0);
+        let sol = law.solve()?;
+        Row::new(&p, weather, state, is, &law, &sol)
     }
 
     /// The states a table holds: initial, then after creep and after load where given, then final.

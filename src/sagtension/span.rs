@@ -11,7 +11,7 @@
 //! (the parabolic approximation of the section's total slack; Winkelman 1959; Douglass and Thrash,
 //! Electric Power Engineering Handbook ch. 14, "ruling span"). Assumptions: level spans, equal
 //! horizontal tension, the strings' own stiffness neglected. A span's sag then follows from the ruling
-//! span's `H` with its own length. The exact whole-section solve with swinging strings is the static
+//! span's `H` with its own length ([`super::Strung::section_span`]). The exact whole-section solve with swinging strings is the static
 //! solver's ([`crate::statics`]).
 
 use super::SagTensionError;
