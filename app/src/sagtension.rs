@@ -41,16 +41,6 @@ pub fn support_tension_n(r: &Row) -> f64 {
     r.support_tension_a_n.max(r.support_tension_b_n)
 }
 
-/// The mid-span sag of each span of a section [m] from the ruling span's `sag_r`: `sag_r (l_i / l_r)^2`, the
-/// parabolic sag of a span at the ruling span's horizontal tension (Douglass and Thrash, CRC handbook ch.
-/// 14, "ruling span"); one span: its own sag.
-pub fn span_sags_m(resolved: &Resolved, ruling_m: f64, sag_r: f64) -> Vec<f64> {
-    if resolved.lengths_m.len() == 1 {
-        return vec![sag_r];
-    }
-    resolved.lengths_m.iter().map(|l| sag_r * (l / ruling_m).powi(2)).collect()
-}
-
 /// Write `dir/sagtension.csv`.
 pub fn write_csv(dir: &Path, resolved: &Resolved, table: &Table) -> Result<(), String> {
     let path = dir.join("sagtension.csv");
@@ -120,7 +110,7 @@ pub fn write_json(dir: &Path, case: &SagTensionCase, resolved: &Resolved, table:
                 "core_stress_total_area_pa": r.core_stress_total_area_pa,
                 "knee_passed": r.knee_passed, "strain": r.strain_max, "conductor_length_m": r.length_m,
                 "unstressed_length_m": r.unstressed_length_m,
-                "span_sags_m": span_sags_m(resolved, table.span_m, r.sag_midspan_m),
+                "span_sags_m": table.span_sags_m[k],
             })
         })
         .collect();

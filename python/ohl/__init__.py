@@ -506,7 +506,8 @@ def sagtension(
     (one per condition) and ``rows``: columns of one entry per condition and state (conditions in the
     case's order, each with every state), named as ``sagtension.csv``'s, NumPy arrays of floats
     (``knee_passed`` of bools, ``condition`` of ints) and lists of str (``state``, ``history_of``);
-    ``temperature_k`` is in kelvin where the CSV has ``temperature_c``.
+    ``temperature_k`` is in kelvin where the CSV has ``temperature_c``; ``span_sags_m`` (rows, spans) holds
+    the mid-span sag of each span (a section's spans each at the ruling span's horizontal tension).
 
     Raises :class:`ScenarioError` for invalid input (file, field, value, allowed) and
     :class:`StaticsError` if the solver finds no solution.
@@ -514,7 +515,7 @@ def sagtension(
     raw = _ohl.sagtension_raw(case, name)
     rows = raw["rows"]
     for key, value in list(rows.items()):
-        if key in ("state", "history_of"):
+        if key in ("state", "history_of", "span_sags_m"):
             continue
         if key == "knee_passed":
             rows[key] = np.asarray(value, dtype=bool)

@@ -79,6 +79,9 @@ pub fn sagtension_raw<'py>(py: Python<'py>, source: &Bound<'py, PyAny>, name: &s
     c.set_item("knee_passed", rows.iter().map(|x| x.knee_passed).collect::<Vec<_>>())?;
     c.set_item("strain", col(&|k| rows[k].strain_max))?;
     c.set_item("conductor_length_m", col(&|k| rows[k].length_m))?;
+    let spans = r.lengths_m.len();
+    let flat: Vec<f64> = t.span_sags_m.iter().flatten().copied().collect();
+    c.set_item("span_sags_m", crate::convert::array2(py, flat, rows.len(), spans)?)?;
     d.set_item("rows", c)?;
     Ok(d)
 }

@@ -5,6 +5,7 @@ input refused with the field named."""
 from __future__ import annotations
 
 import csv
+import json
 import math
 
 import numpy as np
@@ -46,6 +47,10 @@ def test_the_table_is_the_commands_bit_for_bit(case, ohl_cli, tmp_path):
         assert_bitwise(rows[key], np.array([float(x) for x in f[key]]), key)
     assert rows["state"] == f["state"]
     assert list(rows["knee_passed"]) == [x == "true" for x in f["knee_passed"]]
+    # Each span's sag, as sagtension.json has it.
+    doc = json.loads((tmp_path / "sagtension.json").read_text())
+    assert rows["span_sags_m"].shape == (n, len(t["spans_m"]))
+    assert_bitwise(rows["span_sags_m"], np.array([r["span_sags_m"] for r in doc["rows"]]), "span_sags_m")
     # The CSV's Celsius is the kelvin less 273.15 (the command writes T - 273.15).
     assert_bitwise(rows["temperature_k"] - 273.15, np.array([float(x) for x in f["temperature_c"]]), "temperature")
 

@@ -6,7 +6,7 @@
 //! the solver's ([`crate::sagtension`], docs/sagtension.md); this module only orders its answers.
 
 use super::sagtension::{LawKind, Resolved};
-use crate::sagtension::{Row, SagTensionError, State, Strung, Weather};
+use crate::sagtension::{Row, SagTensionError, Span, State, Strung, Weather};
 
 /// A value the solver may not find (a knee outside the searched temperatures): the value, or why not.
 pub type Found = Result<f64, String>;
@@ -24,6 +24,9 @@ pub struct Table {
     pub final_is: State,
     /// the rows: for each condition (in the case's order) one row per state of [`Table::states`]
     pub rows: Vec<Row>,
+    /// for each row, the mid-span sag of each span of the case [m]: one span's own; a section's spans each
+    /// at the ruling span's horizontal tension ([`Strung::section_span`])
+    pub span_sags_m: Vec<Vec<f64>>,
     /// the knee-point temperature of each state [K]
     pub knee_k: Vec<(State, Found)>,
     /// the temperature at which each state reaches the sag limit [K] (empty without a limit)
@@ -43,10 +46,20 @@ pub fn solve(r: &Resolved) -> Result<Table, SagTensionError> {
     let s = strung(r, law)?;
     let states = s.states();
     let mut rows = Vec::with_capacity(r.conditions.len() * states.len());
+    let mut span_sags_m = Vec::with_capacity(rows.capacity());
     for w in &r.conditions {
         let w = w.to_solver();
         for &state in &states {
-            rows.push(s.solve(&w, state)?);
+            let row = s.solve(&w, state)?;
+            span_sags_m.push(if r.lengths_m.len() == 1 {
+                vec![row.sag_midspan_m]
+            } else {
+                r.lengths_m
+                    .iter()
+                    .map(|&l| Ok(s.section_span(&w, state, Span::level(l))?.sag_midspan_m))
+                    .collect::<Result<Vec<f64>, SagTensionError>>()?
+            });
+            rows.push(row);
         }
     }
     let knee_k = states.iter().map(|&st| (st, s.knee_temperature_k(st).map_err(|e| e.to_string()))).collect();
@@ -61,6 +74,7 @@ pub fn solve(r: &Resolved) -> Result<Table, SagTensionError> {
         final_is: s.histories.final_is,
         states,
         rows,
+        span_sags_m,
         knee_k,
         limit_k,
         sag_limit_m,
