@@ -1,5 +1,6 @@
 //! The outputs of `ohl sagtension`: the table as CSV and JSON, and the figure of sag against temperature
-//! (initial and final states of the case's conductor, its knee points marked, and the single-modulus
+//! (initial and final states of the case's conductor; for a section its longest span at the ruling span's
+//! horizontal tension; its knee points marked, and the single-modulus
 //! conductor of the same catalogue entry strung alike, dashed, for comparison). The numbers are the
 //! library's ([`ohl::scenario::sagtension_table`]).
 
@@ -154,7 +155,10 @@ pub fn figure(dir: &Path, case: &SagTensionCase, resolved: &Resolved, table: &Ta
     let linear = sagtension_table::strung(resolved, resolved.single_modulus_law()).map_err(|e| e.to_string())?;
     let temps = figure_temperatures_k(resolved, table);
     let to_c = |pts: Vec<(f64, f64)>| pts.into_iter().map(|(t, d)| (t - C, d)).collect::<Vec<_>>();
-    let curve = |s: &Strung, st: State| sagtension_table::sag_curve(s, st, &temps).map(to_c).map_err(|e| e.to_string());
+    let section = sagtension_table::longest_of_section(resolved);
+    let curve = |s: &Strung, st: State| {
+        sagtension_table::sag_curve(s, st, &temps, section).map(to_c).map_err(|e| e.to_string())
+    };
     let mut series = vec![
         Series::new("initial", curve(&strung, State::Initial)?, Style::Line, 0),
         Series::new(format!("final (= {})", table.final_is.name()), curve(&strung, State::Final)?, Style::Line, 1),
@@ -170,7 +174,7 @@ pub fn figure(dir: &Path, case: &SagTensionCase, resolved: &Resolved, table: &Ta
             continue;
         }
         if let Ok(t) = knee {
-            let d = sagtension_table::sag_curve(&strung, *state, &[*t]).map_err(|e| e.to_string())?[0].1;
+            let d = sagtension_table::sag_at(&strung, *state, *t, section).map_err(|e| e.to_string())?;
             series.push(Series::new(
                 format!("knee point, {} ({:.1} C)", state.name(), t - C),
                 vec![(t - C, d)],
@@ -181,24 +185,25 @@ pub fn figure(dir: &Path, case: &SagTensionCase, resolved: &Resolved, table: &Ta
     }
     if let Some(limit) = table.sag_limit_m {
         let (a, b) = (temps[0] - C, temps[temps.len() - 1] - C);
-        let label = match resolved.sag_limit_m {
-            Some(own) if resolved.lengths_m.len() > 1 => {
-                let longest = resolved.lengths_m.iter().fold(0.0_f64, |m, l| m.max(*l));
-                format!("sag limit {limit:.2} m ({own:.2} m in the longest span, {longest} m)")
-            }
-            _ => format!("sag limit {limit:.2} m"),
-        };
+        let label = format!("sag limit {limit:.2} m");
         series.push(Series::new(label, vec![(a, limit), (b, limit)], Style::Dotted, 3));
     }
     let ruling = resolved.lengths_m.len() > 1;
     let chart = Chart {
         title: if ruling {
-            format!("ruling span {:.1} m of {} spans", table.span_m, resolved.lengths_m.len())
+            format!(
+                "section of {} spans (ruling span {:.1} m): its longest span at the ruling span's H",
+                resolved.lengths_m.len(),
+                table.span_m
+            )
         } else {
             format!("span {:.1} m", table.span_m)
         },
         x_label: "conductor temperature [C]".into(),
-        y_label: if ruling { "mid-span sag of the ruling span [m]".into() } else { "mid-span sag [m]".into() },
+        y_label: match section {
+            Some(l) => format!("mid-span sag of the longest span, {l} m [m]"),
+            None => "mid-span sag [m]".into(),
+        },
         series,
         ..Default::default()
     };

@@ -112,12 +112,15 @@ fn the_ruling_span_section_prints_and_writes_the_librarys_table_and_the_sag_limi
     let (stdout, _) = run(&case, "ruling-limit");
     let (_, resolved) = sagtension::load(&case).unwrap();
     let table = sagtension_table::solve(&resolved).unwrap();
-    // The limit of the longest span, 25 m - 10 m = 15 m, is the ruling span's 15 (l_r / l_max)^2.
-    let l_r = table.span_m;
-    assert_eq!(table.sag_limit_m, Some(15.0 * (l_r / 400.0).powi(2)));
+    // The limit of the longest span (400 m): 25 m - 10 m = 15 m; reached where that span, at the ruling
+    // span's H, sags 15 m (to the search's 1e-10 K: 1e-6 m covers the sag's change over it).
+    assert_eq!(table.sag_limit_m, Some(15.0));
+    let strung = sagtension_table::strung(&resolved, resolved.law().0).unwrap();
     assert_eq!(table.limit_k.len(), table.states.len());
     for (state, k) in &table.limit_k {
         let t = k.as_ref().unwrap() - 273.15;
         assert!(stdout.contains(&format!("reached, {}: {t:.2} C", state.name())), "{stdout}");
+        let sag = sagtension_table::sag_at(&strung, *state, t + 273.15, Some(400.0)).unwrap();
+        assert!((sag - 15.0).abs() < 1e-6, "{}: {sag} m", state.name());
     }
 }

@@ -841,15 +841,6 @@ impl Resolved {
             stretch_point: self.stretch_point,
         })
     }
-
-    /// The sag limit of the span the solver sees [m]: for a ruling span, the limit of the longest span
-    /// scaled by `(l_r / l_max)^2`, the parabolic sag ratio of spans at one horizontal tension.
-    pub fn solver_sag_limit_m(&self) -> Option<f64> {
-        let limit = self.sag_limit_m?;
-        let longest = self.lengths_m.iter().fold(0.0_f64, |m, l| m.max(*l));
-        let ruling = self.span().ok()?.length_m;
-        Some(limit * (ruling / longest).powi(2))
-    }
 }
 
 /// A problem of the case file `file` as an [`InputError`] (for the checks after parsing).

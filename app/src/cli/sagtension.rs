@@ -151,11 +151,9 @@ fn print(name: &Option<String>, r: &Resolved, t: &Table) {
         out!("knee-point temperature, {}: {}", state.name(), found_text(k));
     }
     if let Some(limit) = t.sag_limit_m {
-        let what = match r.sag_limit_m {
-            Some(l) if r.lengths_m.len() > 1 => {
-                format!("sag limit {l:.3} m of the longest span ({limit:.3} m of the ruling span)")
-            }
-            _ => format!("sag limit {limit:.3} m"),
+        let what = match sagtension_table::longest_of_section(r) {
+            Some(l) => format!("sag limit {limit:.3} m of the longest span ({l} m, at the ruling span's H)"),
+            None => format!("sag limit {limit:.3} m"),
         };
         for (state, k) in &t.limit_k {
             out!("{what} reached, {}: {}", state.name(), found_text(k));
