@@ -7,6 +7,7 @@
 //! - [`bench`]: the kernel benchmark (measurements, machine description, CSV tables, throughput plot);
 //! - [`progress`]: the terminal progress bar of `ohl run`, an observer of the library's run loop;
 //! - [`run_plot`]: the figures of a run's output folder (`ohl plot RUN_DIR`).
+//! - [`sagtension`]: the files and the figure of `ohl sagtension` (sag-tension tables).
 //! - [`sweep`]: parameter sweeps (`ohl sweep`): cases from a base scenario, run in parallel into one table.
 //! - [`stamp`]: the provenance line (commit, date, compiler, CPU) of the generated reports.
 //!
@@ -19,6 +20,7 @@ pub mod paper;
 pub mod plot;
 pub mod progress;
 pub mod run_plot;
+pub mod sagtension;
 pub mod stamp;
 pub mod sweep;
 

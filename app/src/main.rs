@@ -8,6 +8,8 @@
 //! - `ohl thermal CASE.toml` evaluates a conductor's heat balance (steady temperature, ampacity, transient,
 //!   de-icing);
 //! - `ohl rating SCENARIO.toml` rates a span or section by clearance or sag (steady, and after a step);
+//! - `ohl sagtension CASE.toml` prints a span's or ruling span's sag-tension table (initial, after creep,
+//!   after load, final) and writes it with a figure of sag against temperature;
 //! - `ohl load-case NAME` prints a code's combined ice-and-wind load case (NESC 250B districts, IEC 60826,
 //!   EN 50341-1) as scenario TOML for a catalogue conductor (`ohl load-case list` names them);
 //! - `ohl plot RUN_DIR` draws a run's time series, support forces and shapes to PNG and SVG;
@@ -47,6 +49,9 @@ enum Command {
     /// Thermal rating of a span or section by ground clearance or sag, steady and after a current step;
     /// writes rating.json.
     Rating(cli::rating::RatingArgs),
+    /// Sag-tension table of a span or ruling span (initial, after creep, after load, final; knee point,
+    /// temperature at a sag limit); writes sagtension.csv, sagtension.json, sag_vs_temperature.png/.svg.
+    Sagtension(cli::sagtension::SagTensionArgs),
     /// Print a code's combined ice-and-wind load case as scenario TOML (`list`: the cases).
     LoadCase(cli::load_case::LoadCaseArgs),
     /// Draw a run's time series, support forces and shapes (RUN_DIR/plots/*.png and *.svg).
@@ -63,6 +68,7 @@ fn main() -> ExitCode {
         Command::Bench(a) => cli::bench::main(a),
         Command::Thermal(a) => cli::thermal::main(a),
         Command::Rating(a) => cli::rating::main(a),
+        Command::Sagtension(a) => cli::sagtension::main(a),
         Command::LoadCase(a) => cli::load_case::main(a),
         Command::Plot(a) => cli::plot::main(a),
         Command::Sweep(a) => cli::sweep::main(a),

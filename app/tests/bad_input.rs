@@ -251,6 +251,7 @@ const CASES: &[(&str, &[&str])] = &[
         &["line 15, column 13", "field `ground.profile_m`: point [1] has 3 numbers"],
     ),
     ("thermal_case_given_to_run", &["a thermal case", "`ohl thermal`"]),
+    ("sagtension_case_given_to_run", &["a sag-tension case", "`ohl sagtension`"]),
 ];
 
 /// Cases for `ohl thermal` (file stem, message substrings; exit code 2).
@@ -276,10 +277,34 @@ const THERMAL_CASES: &[(&str, &[&str])] = &[
     ("thermal_case_transient_above_budget", &["field `transient.step_s` = 0.001", "at least 1 s"]),
     ("thermal_case_deicing_step_tiny", &["field `deicing.step_s` = 0.001", "at least 0.00864 s"]),
     ("scenario_given_to_thermal", &["a wire scenario ([conductor]), not a thermal case", "`ohl run`"]),
+    ("sagtension_case_given_to_thermal", &["a sag-tension case", "`ohl sagtension`"]),
     (
         "thermal_case_measured_radiation_under_ieee",
         &["field `weather.sun.measured_global_w_per_m2` = 900", "only with standard = \"cigre601\""],
     ),
+];
+
+/// Cases for `ohl sagtension` (file stem, message substrings; exit code 2).
+const SAGTENSION_CASES: &[(&str, &[&str])] = &[
+    (
+        "sagtension_temperature_celsius_out_of_range",
+        &["field `condition[0].temperature_c` = 400 is not allowed: must be in [-100, 300] C"],
+    ),
+    ("sagtension_span_and_ruling_span", &["field `ruling_span` = (given with [span])", "not both"]),
+    ("sagtension_tension_and_sag", &["field `stringing`", "give one of tension_n, tension_fraction_of_rts and sag_m"]),
+    (
+        "sagtension_unknown_load_case",
+        &["field `heavy_load.case` = \"nesc_extreme\"", "must be a load case: nesc_heavy"],
+    ),
+    (
+        "sagtension_iec_case_without_values",
+        &["field `condition[0].case` = \"iec60826_ice_wind\"", "leaves temperature_k, ice_thickness_m"],
+    ),
+    ("sagtension_range_reversed", &["field `conditions.to_temperature_c` = -20", "the range runs upwards"]),
+    ("sagtension_clearance_above_supports", &["field `clearance.min_clearance_m` = 30", "mid-span, 25 m"]),
+    ("sagtension_unknown_conductor", &["field `conductor.catalog` = \"ACSR Dinosaur\"", "available: ACSR Drake"]),
+    ("sagtension_asks_nothing", &["field `condition` = (missing)", "the case asks nothing"]),
+    ("sagtension_tension_above_rts", &["field `stringing.tension_n` = 150000", "rated tensile strength 138800 N"]),
 ];
 
 /// Heat-conduction cases (`ohl paper CASE --cases tests/bad_inputs`): (file stem, message substrings).
@@ -360,6 +385,23 @@ fn every_invalid_thermal_case_is_refused_with_a_precise_message() {
 }
 
 #[test]
+fn every_invalid_sagtension_case_is_refused_with_a_precise_message() {
+    let out = tmp("bad-sagtension");
+    for (stem, needles) in SAGTENSION_CASES {
+        let file = dir().join(format!("{stem}.toml"));
+        let (code, stdout, err) = ohl(&["sagtension", file.to_str().unwrap(), "--out", out.to_str().unwrap()]);
+        assert_eq!(code, 2, "{stem}: exit code {code}, stderr:\n{err}");
+        assert!(stdout.trim().is_empty(), "{stem}: a refused case prints no table:\n{stdout}");
+        assert!(err.contains(&format!("{stem}.toml")), "{stem}: message does not name the file:\n{err}");
+        for n in *needles {
+            assert!(err.contains(n), "{stem}: message lacks `{n}`:\n{err}");
+        }
+        assert!(!err.contains("panicked"), "{stem}: panicked:\n{err}");
+        assert!(!out.exists(), "{stem}: a refused case must not write anything");
+    }
+}
+
+#[test]
 fn a_negative_shard_or_thread_count_is_named_by_its_option() {
     let base = Path::new(env!("CARGO_MANIFEST_DIR")).join("../examples/sweep/drake_400m_wind.toml");
     let out = tmp("shard");
@@ -377,7 +419,8 @@ fn a_negative_shard_or_thread_count_is_named_by_its_option() {
 
 #[test]
 fn every_file_of_the_directory_is_a_case() {
-    let mut listed: Vec<&str> = CASES.iter().chain(PAPER_CASES).chain(THERMAL_CASES).map(|c| c.0).collect();
+    let mut listed: Vec<&str> =
+        CASES.iter().chain(PAPER_CASES).chain(THERMAL_CASES).chain(SAGTENSION_CASES).map(|c| c.0).collect();
     listed.push("valid");
     listed.sort_unstable();
     let mut files: Vec<String> = std::fs::read_dir(dir())

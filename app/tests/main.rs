@@ -10,5 +10,6 @@ mod killed_run;
 mod line_cases;
 mod paper_cases;
 mod plot_command;
+mod sagtension;
 mod stable_defaults;
 mod sweep;

@@ -67,6 +67,7 @@ __all__ = [
     "loads_line",
     "run",
     "run_line",
+    "sagtension",
     "steady_temperature",
     "transient",
 ]
@@ -487,6 +488,42 @@ def line_equilibrium(
     - ``iterations``, ``residual_n``, ``tolerance_n`` [N], ``residual_history_n``.
     """
     return _ohl.line_equilibrium(_as_line_scenario(scenario), tolerance_n, max_iterations)
+
+
+# --- sag-tension -------------------------------------------------------------------------------------
+
+
+def sagtension(
+    case: Union[Mapping, str, "os.PathLike[str]"], *, name: str = "<dict>"
+) -> Dict[str, Any]:
+    """The sag-tension table of a case (the file of ``ohl sagtension``, docs/sagtension_cases.md): a path
+    to the TOML file, or a dict with its tables (``name`` stands for the file in messages).
+
+    Returns a dict: ``name``, ``conductor``, ``law`` (``"two_material"`` or ``"single_modulus"``),
+    ``spans_m``, ``span_m`` (the ruling span of a section), ``states`` (the states of the table, in
+    order), ``final_is`` (the state ``final`` stands for), ``knee_temperature_k`` and
+    ``sag_limit_temperature_k`` (state -> K, ``None`` where there is none), ``sag_limit_m``, ``labels``
+    (one per condition) and ``rows``: columns of one entry per condition and state (conditions in the
+    case's order, each with every state), named as ``sagtension.csv``'s, NumPy arrays of floats
+    (``knee_passed`` of bools, ``condition`` of ints) and lists of str (``state``, ``history_of``);
+    ``temperature_k`` is in kelvin where the CSV has ``temperature_c``; ``span_sags_m`` (rows, spans) holds
+    the mid-span sag of each span (a section's spans each at the ruling span's horizontal tension).
+
+    Raises :class:`ScenarioError` for invalid input (file, field, value, allowed) and
+    :class:`StaticsError` if the solver finds no solution.
+    """
+    raw = _ohl.sagtension_raw(case, name)
+    rows = raw["rows"]
+    for key, value in list(rows.items()):
+        if key in ("state", "history_of", "span_sags_m"):
+            continue
+        if key == "knee_passed":
+            rows[key] = np.asarray(value, dtype=bool)
+        elif key == "condition":
+            rows[key] = np.asarray(value, dtype=np.int64)
+        else:
+            rows[key] = np.asarray(value, dtype=np.float64)
+    return raw
 
 
 # --- thermal -----------------------------------------------------------------------------------------

@@ -301,6 +301,10 @@ def line_equilibrium(
     scenario: LineScenarioLike, *, tolerance_n: Optional[float] = None, max_iterations: int = 100
 ) -> LineEquilibrium: ...
 
+# --- sag-tension -------------------------------------------------------------------------------------
+
+def sagtension(case: Union[Mapping, str, os.PathLike[str]], *, name: str = "<dict>") -> Dict[str, Any]: ...
+
 # --- thermal -----------------------------------------------------------------------------------------
 
 def conductors() -> List[str]: ...

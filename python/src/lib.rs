@@ -13,6 +13,7 @@ mod convert;
 mod dict_input;
 mod errors;
 mod line;
+mod sagtension;
 mod scenario;
 mod thermal;
 
@@ -35,6 +36,7 @@ fn _ohl(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(thermal::transient, m)?)?;
     m.add_function(wrap_pyfunction!(thermal::deicing, m)?)?;
     m.add_function(wrap_pyfunction!(thermal::deicing_current, m)?)?;
+    m.add_function(wrap_pyfunction!(sagtension::sagtension_raw, m)?)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

@@ -11,6 +11,8 @@ pub mod line;
 pub mod locate;
 pub mod range;
 pub mod rating;
+pub mod sagtension;
+pub mod sagtension_table;
 pub mod schema;
 pub mod section;
 pub mod temperature;
@@ -88,6 +90,9 @@ pub fn parse(text: &str, file: &str) -> Result<Scenario, InputError> {
                       (docs/line.md)"
                 .into(),
         });
+    }
+    if sagtension::is_sagtension_table(&doc) {
+        return Err(InputError::Parse { file: file.to_string(), message: sagtension::NOT_HERE.into() });
     }
     if thermal::is_thermal_table(&doc) {
         return Err(InputError::Parse {

@@ -233,7 +233,13 @@ pub const TEMPERATURE_RANGES: &[Range] = &[
     RATING_TEMPERATURE_K,
     AMPACITY_TEMPERATURE_K,
     TRANSIENT_LIMIT_K,
+    SAG_TEMPERATURE_K,
 ];
+
+/// Conductor temperature of a sag-tension condition [K]: -100 C (the lowest stringing temperature of the
+/// scenarios, [`super::validate::MIN_REFERENCE_TEMPERATURE_K`]) to 300 C (above the 250 C emergency limit of
+/// high-temperature conductors such as ACSS).
+pub const SAG_TEMPERATURE_K: Range = Range::closed(173.15, 573.15, "K");
 
 /// Specific heat of a conductor's layer at 20 C [J/(kg K)] (aluminium 897, steel 481).
 pub const SPECIFIC_HEAT_J_PER_KG_K: Range =

@@ -33,7 +33,7 @@ pub fn kelvin(c: f64) -> f64 {
 /// degrees Celsius (`conductor.reference_temperature`, `section.stringing_temperature`, the `temperature`
 /// and `hold_temperature` of events, `thermal.initial_temperature`, `temperature_low`/`temperature_high`
 /// of a conductor's resistance, `weather.air_temperature`, `max_temperature` of a rating or a thermal
-/// case, a transient's `limit`).
+/// case, a transient's `limit`, the `from_temperature`/`to_temperature` of a sag-tension case's range).
 pub const STEMS: &[&str] = &[
     "reference_temperature",
     "stringing_temperature",
@@ -45,6 +45,8 @@ pub const STEMS: &[&str] = &[
     "air_temperature",
     "max_temperature",
     "limit",
+    "from_temperature",
+    "to_temperature",
 ];
 
 /// The Celsius twin of a kelvin temperature field (`air_temperature_k` -> `air_temperature_c`); `None`

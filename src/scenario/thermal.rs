@@ -592,6 +592,8 @@ pub fn is_thermal_table(t: &toml::Table) -> bool {
 fn other_kind(t: &toml::Table) -> Option<&'static str> {
     if is_thermal_table(t) {
         None
+    } else if super::sagtension::is_sagtension_table(t) {
+        Some(super::sagtension::NOT_HERE)
     } else if t.contains_key("line") {
         Some("a line scenario ([line]), not a thermal case: run it with `ohl run`")
     } else if t.contains_key("rod") {

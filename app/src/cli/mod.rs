@@ -36,5 +36,6 @@ pub mod paper;
 pub mod plot;
 pub mod rating;
 pub mod run;
+pub mod sagtension;
 pub mod sweep;
 pub mod thermal;
