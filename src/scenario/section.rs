@@ -539,6 +539,20 @@ pub(crate) fn check(
     Some(SectionGrid { wire, layout, chord_m, clamp_step_s, step_limit, wave_speed_max_m_per_s, crossing_time_s })
 }
 
+/// The catalogue conductor's two-material law and curve where `conductor.tension_law = "two_material"`
+/// names one with stress-strain data (`None` otherwise: [`super::two_material::check`] reports why).
+fn two_material_law(s: &Scenario) -> Option<(TwoMaterial, CurveKind)> {
+    if s.conductor.tension_law != TensionLawSpec::TwoMaterial {
+        return None;
+    }
+    let law = crate::thermal::catalog::find(s.conductor.catalog.as_deref()?).ok()?.two_material()?;
+    let curve = match s.conductor.curve {
+        Some(CurveSpec::Creep) => CurveKind::Creep,
+        _ => CurveKind::Initial,
+    };
+    Some((law, curve))
+}
+
 #[cfg(test)]
 mod tests {
     use crate::scenario::{self, Scenario};
@@ -573,18 +587,4 @@ mod tests {
         let e = scenario::plan(&sc2, "section").unwrap_err().to_string();
         assert!(e.contains("section.spans[0].horizontal_tension_n` = (missing)"), "{e}");
     }
-}
-
-/// The catalogue conductor's two-material law and curve where `conductor.tension_law = "two_material"`
-/// names one with stress-strain data (`None` otherwise: [`super::two_material::check`] reports why).
-fn two_material_law(s: &Scenario) -> Option<(TwoMaterial, CurveKind)> {
-    if s.conductor.tension_law != TensionLawSpec::TwoMaterial {
-        return None;
-    }
-    let law = crate::thermal::catalog::find(s.conductor.catalog.as_deref()?).ok()?.two_material()?;
-    let curve = match s.conductor.curve {
-        Some(CurveSpec::Creep) => CurveKind::Creep,
-        _ => CurveKind::Initial,
-    };
-    Some((law, curve))
 }
