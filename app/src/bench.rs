@@ -475,7 +475,7 @@ pub fn plot_throughput(
         "target, wind_3d (issue 5)",
         vec![(1000.0, TARGET_NODE_STEPS_PER_S), (5000.0, TARGET_NODE_STEPS_PER_S)],
         Style::Markers,
-        3,
+        Config::ALL.len(),
     ));
     let chart = Chart {
         title: "Explicit step, one thread".into(),
@@ -506,7 +506,7 @@ mod tests {
             let s = run_fixed_steps(c, 20, 200);
             let max_x1 = s.wire().x[0].iter().fold(0.0_f64, |m, v| m.max(v.abs()));
             match c {
-                Config::PlaneWeight => assert_eq!(max_x1, 0.0),
+                Config::PlaneWeight | Config::TwoMaterialPlane => assert_eq!(max_x1, 0.0),
                 _ => assert!(max_x1 > 0.0, "{}", c.name()),
             }
             assert_eq!(Config::from_name(c.name()), Some(c));
