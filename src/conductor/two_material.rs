@@ -96,6 +96,19 @@ impl TwoMaterial {
         t
     }
 
+    /// Moves each component's largest strain up to its mechanical strain at the conductor strain `e` [-]
+    /// and temperature `theta` [K] where it is passed: [`TwoMaterial::load`] without the tension (the
+    /// explicit kernel folds its strains in once per step this way).
+    #[inline]
+    pub fn remember(&self, strain: f64, temperature_k: f64, h: &mut History) {
+        let e = self.mechanical_strains(strain, temperature_k);
+        for (k, _) in self.components() {
+            if e[k] > h.max_strain[k] {
+                h.max_strain[k] = e[k];
+            }
+        }
+    }
+
     /// The conductor strain [-] at which the tension is `tension_n` [N] `> 0`, at `theta` [K] with the
     /// history `h` (bisection on the nondecreasing `T(e)`, to a relative 1e-15 of the strain bracket).
     pub fn strain_at(&self, tension_n: f64, temperature_k: f64, h: &History) -> f64 {

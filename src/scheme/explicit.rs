@@ -26,10 +26,12 @@
 
 use super::contact::{self, Ground};
 use super::smoothing;
+use crate::conductor::History;
 use crate::element::aero::{Downwind, NoWind, SegmentLoad};
 use crate::element::segment;
 use crate::element::tension::{LawKind, Linear, TensionLaw, TensionOnly, from_order_key, order_key};
 use crate::wire::Wire;
+use crate::wire::material::segment_tension;
 
 pub use crate::element::aero::WindLoad;
 
@@ -563,36 +565,38 @@ impl Explicit {
         let w = &mut self.wire;
         let n = w.rest_length.len();
         let Some(mat) = w.material.as_mut() else { unreachable!("LawKind::TwoMaterial without its material") };
+        // Every array sliced to its length once, so that the loop's indexing carries no bounds checks.
+        let (law, curve) = (&mat.law, mat.curve);
+        let (m_o, m_c, last) = (&mat.max_strain[0][..n], &mat.max_strain[1][..n], &mut mat.last_strain[..n]);
+        let x = [&w.x[0][..=n], &w.x[1][..=n], &w.x[2][..=n]];
+        let v = [&w.v[0][..=n], &w.v[1][..=n], &w.v[2][..=n]];
+        let (l0, lref, theta) = (&w.rest_length[..n], &w.reference_length[..n], &w.temperature_k[..n]);
+        let (eta, intact, kd) = (&w.internal_friction_n_s[..n], &w.intact[..n], &w.wind_diameter_factor[..n]);
+        let [fs0, fs1, fs2] = &mut self.fs;
+        let [es0, es1, es2] = &mut self.es;
+        let (fs0, fs1, fs2) = (&mut fs0[1..=n], &mut fs1[1..=n], &mut fs2[1..=n]);
+        let (es0, es1, es2) = (&mut es0[1..=n], &mut es1[1..=n], &mut es2[1..=n]);
         let mut kmax = order_key(0.0);
         for j in 0..n {
-            let (va, vb) = ([w.v[0][j], w.v[1][j], w.v[2][j]], [w.v[0][j + 1], w.v[1][j + 1], w.v[2][j + 1]]);
-            let (xa, xb) = ([w.x[0][j], w.x[1][j], w.x[2][j]], [w.x[0][j + 1], w.x[1][j + 1], w.x[2][j + 1]]);
-            let st = segment::stretch(xa, xb, va, vb, w.rest_length[j]);
-            let theta = w.temperature_k[j];
+            let (va, vb) = ([v[0][j], v[1][j], v[2][j]], [v[0][j + 1], v[1][j + 1], v[2][j + 1]]);
+            let (xa, xb) = ([x[0][j], x[1][j], x[2][j]], [x[0][j + 1], x[1][j + 1], x[2][j + 1]]);
+            let st = segment::stretch(xa, xb, va, vb, l0[j]);
+            let h = History { curve, max_strain: [m_o[j], m_c[j]] };
             let tension = if VISCOUS {
-                mat.tension(j, st.e, st.edot, w.internal_friction_n_s[j], theta) * w.intact[j]
+                segment_tension(law, &h, st.e, st.edot, eta[j], theta[j]) * intact[j]
             } else {
-                mat.tension(j, st.e, 0.0, 0.0, theta) * w.intact[j]
+                segment_tension(law, &h, st.e, 0.0, 0.0, theta[j]) * intact[j]
             };
-            mat.last_strain[j] = if w.intact[j] > 0.0 { st.e } else { f64::NEG_INFINITY };
+            last[j] = if intact[j] > 0.0 { st.e } else { f64::NEG_INFINITY };
             kmax = kmax.max(order_key(tension));
             let t = st.t;
-            self.fs[0][j + 1] = tension * t[0];
-            self.fs[1][j + 1] = tension * t[1];
-            self.fs[2][j + 1] = tension * t[2];
-            let e = segment::share::<f64, W, UNIFORM>(
-                load,
-                &st,
-                va,
-                vb,
-                q,
-                w.reference_length[j],
-                w.intact[j],
-                w.wind_diameter_factor[j],
-            );
-            for k in 0..3 {
-                self.es[k][j + 1] = e[k];
-            }
+            fs0[j] = tension * t[0];
+            fs1[j] = tension * t[1];
+            fs2[j] = tension * t[2];
+            let e = segment::share::<f64, W, UNIFORM>(load, &st, va, vb, q, lref[j], intact[j], kd[j]);
+            es0[j] = e[0];
+            es1[j] = e[1];
+            es2[j] = e[2];
         }
         self.max_tension_n = from_order_key(kmax);
     }

@@ -27,6 +27,15 @@
 use crate::conductor::{CurveKind, History, TwoMaterial};
 use crate::element::scalar::Scalar;
 
+/// The tension `T` [N] of a segment with the history `h` at strain `e` [-], strain rate `edot` [1/s],
+/// internal friction `eta` [N s] and temperature `theta` [K] (module doc): the one expression of
+/// [`Material::tension`] and of the kernel's two-material pass, which reads the history from its arrays.
+#[inline(always)]
+pub fn segment_tension<S: Scalar>(law: &TwoMaterial, h: &History, e: S, edot: S, eta: f64, temperature_k: f64) -> S {
+    let elastic = law.tension(e, temperature_k, h);
+    if elastic.value() > 0.0 { (elastic + edot * eta).positive_part() } else { S::c(0.0) }
+}
+
 /// The two-material law of a wire and each segment's history (module doc).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Material {
@@ -64,8 +73,7 @@ impl Material {
     /// [`Scalar`]: the kernel on `f64`, the static Jacobian on dual numbers.
     #[inline(always)]
     pub fn tension<S: Scalar>(&self, j: usize, e: S, edot: S, eta: f64, temperature_k: f64) -> S {
-        let elastic = self.law.tension(e, temperature_k, &self.history(j));
-        if elastic.value() > 0.0 { (elastic + edot * eta).positive_part() } else { S::c(0.0) }
+        segment_tension(&self.law, &self.history(j), e, edot, eta, temperature_k)
     }
 
     /// Moves segment `j`'s history up to the conductor strain `e` [-] at `theta` [K] where a material
@@ -73,7 +81,7 @@ impl Material {
     #[inline]
     pub fn load(&mut self, j: usize, e: f64, temperature_k: f64) {
         let mut h = self.history(j);
-        self.law.load(e, temperature_k, &mut h);
+        self.law.remember(e, temperature_k, &mut h);
         self.max_strain[0][j] = h.max_strain[0];
         self.max_strain[1][j] = h.max_strain[1];
     }
@@ -81,10 +89,17 @@ impl Material {
     /// Folds the strains of the last segment pass into the history at the segment temperatures
     /// `temperature_k` [K] (one call per explicit step).
     pub fn advance(&mut self, temperature_k: &[f64]) {
-        for j in 0..self.last_strain.len() {
-            let e = self.last_strain[j];
+        let n = self.last_strain.len();
+        let (law, curve, last) = (&self.law, self.curve, &self.last_strain[..n]);
+        let [m_o, m_c] = &mut self.max_strain;
+        let (m_o, m_c, theta) = (&mut m_o[..n], &mut m_c[..n], &temperature_k[..n]);
+        for j in 0..n {
+            let e = last[j];
             if e > f64::NEG_INFINITY {
-                self.load(j, e, temperature_k[j]);
+                let mut h = History { curve, max_strain: [m_o[j], m_c[j]] };
+                law.remember(e, theta[j], &mut h);
+                m_o[j] = h.max_strain[0];
+                m_c[j] = h.max_strain[1];
             }
         }
     }
@@ -97,7 +112,7 @@ impl Material {
     /// `K_c > 0` is not counted.
     pub fn energy_density(&self, j: usize, e: f64, temperature_k: f64) -> f64 {
         let mut h = self.history(j);
-        self.law.load(e, temperature_k, &mut h);
+        self.law.remember(e, temperature_k, &mut h);
         let law = &self.law;
         let d = temperature_k - law.reference_temperature_k;
         let mut lo = law.outer.permanent_set(h.curve, h.max_strain[0]) + law.outer.expansion_per_k * d;
