@@ -6,6 +6,7 @@ pub mod implicit_reference;
 pub mod line_implicit;
 pub mod line_statics;
 pub mod manufactured;
+pub mod sagtension;
 pub mod section_energy;
 pub mod section_statics;
 pub mod section_transients;
@@ -80,6 +81,11 @@ pub const STUDIES: &[Study] = &[
         name: "thermal",
         about: "IEEE 738 / TB 601 worked examples; steady, transient (RK4 order) and de-icing solvers",
         run: thermal::run,
+    },
+    Study {
+        name: "sagtension",
+        about: "sag-tension of Drake (two-material law) vs the CRC handbook's table; knee points",
+        run: sagtension::run,
     },
 ];
 
