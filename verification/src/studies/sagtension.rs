@@ -187,7 +187,8 @@ pub fn run(_budget: Budget, dir: &Path) -> Result<StudyReport, String> {
     }
     rep.check(
         "knee points",
-        "final below initial (creep lengthens the aluminium); published final rows past the knee from 167 F, not at 120 F",
+        "final below initial (creep lengthens the aluminium); final between 120 F and 167 F, where the published \
+         final sags bend (0.052 ft/F from 90 to 120 F, 0.031 ft/F from 120 to 167 F)",
         format!("initial {:.2} C, final {:.2} C", knees[0].0, knees[1].0),
         knees[1].0 < knees[0].0 && knees[1].0 > (120.0 - 32.0) / 1.8 && knees[1].0 < (167.0 - 32.0) / 1.8,
     );
