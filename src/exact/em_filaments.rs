@@ -111,6 +111,35 @@ pub fn perpendicular_force(
     Ok(k * (phi(y1_m)? - phi(y0_m)?))
 }
 
+/// The first moment `int y f_x(y) dy` [N m] of the force on the perpendicular filament `B` in `A`'s plane
+/// (`h = 0`; arguments as [`perpendicular_force`]): with `y f_x(y) = k (u1 / |r1| - u2 / |r2|)` and
+/// `int u / sqrt(u^2 + y^2) dy = u asinh(y / |u|)` (0 for `u = 0`),
+///
+/// ```text
+/// int_y0^y1 y f_x dy = k (Psi(y1) - Psi(y0)),   Psi(y) = u1 asinh(y / |u1|) - u2 asinh(y / |u2|).
+/// ```
+///
+/// The share of `B`'s end `y1` is `(int (y - y0) f_x dy) / (y1 - y0)`.
+#[allow(clippy::too_many_arguments)]
+pub fn perpendicular_first_moment(
+    a0_m: f64,
+    a1_m: f64,
+    c_m: f64,
+    y0_m: f64,
+    y1_m: f64,
+    i_a_a: f64,
+    i_b_a: f64,
+) -> Result<f64, ExactError> {
+    for (v, w) in [(a0_m, "a0"), (a1_m, "a1"), (c_m, "c"), (y0_m, "y0"), (y1_m, "y1")] {
+        check(v, w)?;
+    }
+    let (u1, u2) = (c_m - a0_m, c_m - a1_m);
+    let term = |u: f64, y: f64| if u == 0.0 { 0.0 } else { u * (y / u.abs()).asinh() };
+    let psi = |y: f64| term(u1, y) - term(u2, y);
+    let k = MU0_H_PER_M * i_a_a * i_b_a / (4.0 * PI);
+    Ok(k * (psi(y1_m) - psi(y0_m)))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
