@@ -91,6 +91,7 @@ fn perpendicular_filaments_match_the_closed_form() {
         ("off the end, in plane", 0.0, 10.0, 12.0, 0.0, 1.0, 6.0),
         ("off the end, skew", -2.0, 3.0, -5.0, 1.5, -4.0, 2.0),
         ("dropper downward", 0.0, 6.0, 2.0, 0.0, -0.3, -9.0),
+        ("through A's axis beyond its end", 0.0, 10.0, 12.0, 0.0, -2.0, 3.0),
     ];
     for (name, a0, a1, c, h, y0, y1) in cases {
         let f = force([a0, 0.0, 0.0], [a1, 0.0, 0.0], [c, y0, h], [c, y1, h]);
