@@ -287,4 +287,51 @@ mod tests {
         let f = pair_force(z, x, 1e4, [3.0, 0.0, 0.0], [5.0, 0.0, 0.0], 1e4, 0.01).unwrap();
         assert_eq!(f.total_n, [0.0; 3]);
     }
+
+    /// No NaN: pseudo-random pairs, a third sharing a node, a third collinear or on each other's axes;
+    /// every `Ok` is finite, its shares add up to the total, and only intersecting or degenerate pairs
+    /// are refused.
+    #[test]
+    fn random_pairs_give_finite_forces_or_typed_errors() {
+        let mut state = 0x9e37_79b9_7f4a_7c15_u64;
+        let mut rnd = || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
+        };
+        let (mut ok, mut refused) = (0, 0);
+        for case in 0..3000 {
+            let mut pt = || [rnd(), rnd(), rnd()];
+            let (a0, a1, mut b0, mut b1) = (pt(), pt(), pt(), pt());
+            match case % 3 {
+                0 => b0 = if case % 2 == 0 { a0 } else { a1 },
+                1 => {
+                    // on A's line: collinear, apart or overlapping
+                    let (s, t) = (3.0 * rnd(), 3.0 * rnd());
+                    b0 = [0, 1, 2].map(|j| a0[j] + s * (a1[j] - a0[j]));
+                    b1 = [0, 1, 2].map(|j| a0[j] + t * (a1[j] - a0[j]));
+                }
+                _ => {}
+            }
+            match pair_force(a0, a1, 1e4, b0, b1, -2e4, 0.01) {
+                Ok(f) => {
+                    ok += 1;
+                    let all = f.total_n.iter().chain(&f.at_b0_n).chain(&f.at_b1_n);
+                    assert!(all.clone().all(|x| x.is_finite()), "case {case}: {f:?}");
+                    for j in 0..3 {
+                        let sum = f.at_b0_n[j] + f.at_b1_n[j];
+                        assert!((sum - f.total_n[j]).abs() <= 1e-12 * f.total_n[j].abs().max(1.0), "case {case}");
+                    }
+                }
+                Err(e) => {
+                    // only the collinear third can overlap A
+                    assert!(case % 3 == 1 && matches!(e, EmForceError::Intersecting { .. }), "case {case}: {e}");
+                    refused += 1;
+                }
+            }
+        }
+        println!("{ok} finite, {refused} refused (collinear and overlapping)");
+        assert!(ok > 2000 && refused > 100, "{ok} ok, {refused} refused");
+    }
 }
