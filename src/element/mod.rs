@@ -11,12 +11,15 @@
 //!   and interphase spacers of a multi-conductor line, [`crate::line`]).
 //! - [`pair`]: the least distance between two segments, the geometry of every pair element between two
 //!   conductors (clearances now; the electromagnetic forces of a short circuit next).
+//! - [`em_force`]: the electromagnetic force between two straight current filaments (Biot-Savart),
+//!   the pair element of a short circuit (issue 25; `f64` only, not yet used by the line model).
 //!
 //! The single-conductor insulator string ([`crate::wire::insulator`]) takes its force from the link
 //! element; its stiffness for the static solver is still written out by hand (checked against the force
 //! by finite differences), as are its crossarm spring and the ground contact of the node pass.
 
 pub mod aero;
+pub mod em_force;
 pub mod link;
 pub mod pair;
 pub mod scalar;

@@ -17,6 +17,9 @@
 //!   approximate closed forms of the paper, (4.1) for the arc and
 //!   (4.3)-(4.4) for the parabolic elastic sag, so that the solver's output
 //!   can be compared with both.
+//! * [`em_filaments`]: closed-form forces between straight current filaments
+//!   (parallel with any offset, perpendicular), the references of the
+//!   electromagnetic pair element [`crate::element::em_force`].
 //! * [`roots`]: the small safeguarded root finders used by both (1D Newton
 //!   with bisection fallback, 2D damped Newton with line search).
 //!
@@ -34,6 +37,7 @@
 
 pub mod arc;
 pub mod catenary;
+pub mod em_filaments;
 pub mod heat;
 pub mod modes;
 pub mod roots;
