@@ -37,4 +37,7 @@ pub enum Iec60865Error {
         /// `zeta`
         zeta: f64,
     },
+    /// Clause 6.4.2: a root of Annex A not found, or the radicand of `nu_e` negative.
+    #[error("pinch force (clause 6.4.2): no solution of Annex A for this bundle")]
+    Pinch,
 }

@@ -47,6 +47,10 @@ pub struct Bundle {
     pub subconductor_distance_m: f64,
     /// `l_s`, mean distance between two adjacent spacers (or spacer and support) [m]
     pub spacer_distance_m: f64,
+    /// `f`, system frequency [Hz] (pinch, Annex A.7)
+    pub frequency_hz: f64,
+    /// `kappa`, peak factor of the short-circuit current (IEC 60909-0), in (1.02, 2) [-] (pinch, Annex A.7)
+    pub peak_factor: f64,
 }
 
 /// One span and its short circuit, SI units (symbols of IEC 60865-1:2011).
@@ -168,6 +172,14 @@ impl Input {
             };
             positive("subconductor_distance_m", b.subconductor_distance_m)?;
             positive("spacer_distance_m", b.spacer_distance_m)?;
+            positive("frequency_hz", b.frequency_hz)?;
+            if !(b.peak_factor > 1.02 && b.peak_factor < 2.0) {
+                return Err(Iec60865Error::OutOfRange {
+                    field: "peak_factor",
+                    value: b.peak_factor,
+                    range: "1.02 < kappa < 2 (IEC 60909-0: kappa = 1.02 + 0.98 exp(-3 R/X))",
+                });
+            }
             if b.subconductor_distance_m <= self.diameter_m {
                 return Err(Iec60865Error::OutOfRange {
                     field: "subconductor_distance_m",

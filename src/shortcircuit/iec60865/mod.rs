@@ -13,6 +13,7 @@
 //! F_f = 1.2 F_st sqrt(1 + 8 zeta delta_m / 180 deg)  if r > 0.6 and delta_m >= 70 deg  (43)
 //! b_h (44) slack / (45) strained,   a_min = a - 2 b_h                               (48)
 //! F_pi = 1.1 F_t  if the sub-conductors clash effectively                          (51)-(53)
+//! F_pi otherwise by nu_1..nu_4, eps_st, eps_pi, j, xi / eta (clause 6.4.2)           (54)-(64)
 //! ```
 //!
 //! The standard evaluates a span twice, with `F_st` at the lowest local winter temperature (-20 C) and at
@@ -25,7 +26,7 @@ pub mod error;
 pub mod input;
 pub mod psi;
 
-pub use bundle::Pinch;
+pub use bundle::{Contraction, Pinch, PinchData};
 pub use equations::{G_N, MU_0, SIGMA_FIN_PA};
 pub use error::Iec60865Error;
 pub use input::{Bundle, Fault, Input, MAX_SAG_RATIO, MAX_SPAN_M, Mounting};
@@ -86,7 +87,7 @@ pub struct Output {
     pub b_h_m: f64,
     /// `a_min`, minimum air clearance, eq. (48) [m]
     pub a_min_m: f64,
-    /// `F_pi`, bundle pinch force (eq. (51)-(53)); `None` for a single conductor
+    /// `F_pi`, bundle pinch force (eq. (51)-(64)); `None` for a single conductor
     pub pinch: Option<Pinch>,
 }
 
@@ -136,7 +137,19 @@ pub fn evaluate(input: &Input) -> Result<Output, Iec60865Error> {
     let a_min = eq::minimum_clearance(input.phase_distance_m, b_h);
     let pinch = match input.bundle {
         Some(b) if input.subconductors >= 2 => {
-            Some(bundle::pinch(b.subconductor_distance_m, input.diameter_m, b.spacer_distance_m, f_t))
+            let data = bundle::PinchData {
+                n,
+                a_s: b.subconductor_distance_m,
+                d: input.diameter_m,
+                l_s: b.spacer_distance_m,
+                m_s,
+                current_a: current,
+                frequency_hz: b.frequency_hz,
+                kappa: b.peak_factor,
+                f_st,
+                stiffness,
+            };
+            Some(bundle::pinch(&data, f_t).ok_or(Iec60865Error::Pinch)?)
         }
         _ => None,
     };
