@@ -22,6 +22,7 @@
 //! - [`loads`]: ice and wind as the design codes give them (radial ice, the codes' load cases);
 //! - [`thermal`]: conductor temperature from current and weather (IEEE 738, CIGRE TB 601).
 //! - [`sagtension`]: sag-tension tables of a span or a ruling span (stringing, creep, heavy load, knee).
+//! - [`shortcircuit`]: short-circuit forces on flexible conductors (IEC 60865-1 simplified method).
 //!
 //! The library holds the model only: the command line `ohl`, the paper cases, the plots, the benchmark
 //! and the progress bar are the applications of the `ohl-app` crate (`app/`).
@@ -39,6 +40,7 @@ pub mod run;
 pub mod sagtension;
 pub mod scenario;
 pub mod scheme;
+pub mod shortcircuit;
 pub mod statics;
 pub mod thermal;
 pub mod wire;

@@ -13,6 +13,7 @@ mod equilibrium;
 mod events;
 mod fuzz_scenarios;
 mod ground_friction;
+mod iec60865;
 mod knee_rating;
 mod line;
 mod line_reference;
