@@ -86,7 +86,8 @@ pub struct Input {
     pub first_duration_s: f64,
     /// `c_th`, material constant of the thermal expansion [m^4/(A^2 s)]; IEC 60865-1 gives 0.27e-18 for
     /// Al, Al alloy and Al/St with section ratio > 6, 0.17e-18 for Al/St with ratio <= 6, 0.088e-18 for Cu
-    /// (the 0.27e-18 value as used for the TR 60865-2 examples by Kalandoros/Kurzschlussfestigkeit)
+    /// (the 0.27e-18 value as used for the TR 60865-2 examples by Kalandoros/Kurzschlussfestigkeit; the 0.17e-18
+    /// and 0.088e-18 values are from memory, not confirmed in a public source)
     pub thermal_constant_m4_per_a2s: f64,
     /// `g_n` [m/s^2]; the standard's value is [`super::G_N`] = 9.81
     pub gravity_m_per_s2: f64,
