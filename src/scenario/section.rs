@@ -15,7 +15,7 @@ use super::range::{
     AXIAL_STIFFNESS_N, INSULATOR_DAMPING_N_S, INSULATOR_LENGTH_M, INSULATOR_MASS_KG, INSULATOR_STIFFNESS_N,
     LINEAR_DENSITY_KG_PER_M, RATED_TENSILE_STRENGTH_N, Range as Allowed,
 };
-use super::schema::{CurveSpec, Scenario, SectionSpec, ShapeSpec, SupportSpec, TensionLawSpec};
+use super::schema::{Scenario, SectionSpec, ShapeSpec, SupportSpec};
 use super::validate::{Check, MAX_SEGMENTS, MAX_SPAN_M, number};
 use crate::conductor::{CurveKind, TwoMaterial};
 use crate::sagtension::StringingTarget;
@@ -67,12 +67,14 @@ pub(crate) struct StepLimit {
 }
 
 /// Check `[section]` and build it; `None` if anything is invalid (each problem recorded in `c`).
-/// `conductor` is the validated `[conductor]` (with the run's internal friction), `None` if invalid.
+/// `conductor` is the validated `[conductor]` (with the run's internal friction), `None` if invalid;
+/// `material` its two-material law and curve ([`super::two_material::check`]), which strings the spans.
 pub(crate) fn check(
     c: &mut Check,
     s: &Scenario,
     sec: &SectionSpec,
     conductor: Option<(Conductor, f64)>,
+    material: Option<(TwoMaterial, CurveKind)>,
 ) -> Option<SectionGrid> {
     let n_sup = sec.supports.len();
     let mut ok = true;
@@ -362,7 +364,7 @@ pub(crate) fn check(
     }
     // The stringing temperature: where it is not the initial one, the strung shape is not at rest.
     let t_ref = s.conductor.reference_temperature_k;
-    let two_material = two_material_law(s);
+    let two_material = material;
     if two_material.is_some() && s.initial.shape != ShapeSpec::Equilibrium {
         c.fail(
             "initial.shape",
@@ -537,20 +539,6 @@ pub(crate) fn check(
         crossing_time_s = crossing_time_s.min(wire.rest_length[j] / c);
     }
     Some(SectionGrid { wire, layout, chord_m, clamp_step_s, step_limit, wave_speed_max_m_per_s, crossing_time_s })
-}
-
-/// The catalogue conductor's two-material law and curve where `conductor.tension_law = "two_material"`
-/// names one with stress-strain data (`None` otherwise: [`super::two_material::check`] reports why).
-fn two_material_law(s: &Scenario) -> Option<(TwoMaterial, CurveKind)> {
-    if s.conductor.tension_law != TensionLawSpec::TwoMaterial {
-        return None;
-    }
-    let law = crate::thermal::catalog::find(s.conductor.catalog.as_deref()?).ok()?.two_material()?;
-    let curve = match s.conductor.curve {
-        Some(CurveSpec::Creep) => CurveKind::Creep,
-        _ => CurveKind::Initial,
-    };
-    Some((law, curve))
 }
 
 #[cfg(test)]

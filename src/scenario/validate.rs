@@ -230,6 +230,8 @@ pub(crate) fn check(s: &Scenario) -> (Vec<Problem>, Derived) {
     let mut n_total = 0usize;
     let mut length: Option<f64> = None;
     let mut section_grid: Option<SectionGrid> = None;
+    // The two-material law (the section strings its spans with it; the stability limits take its stiffness).
+    let material = super::two_material::check(&mut c, cd);
     match (&s.geometry, &s.section) {
         (Some(g), None) => {
             let a_ok = c.coordinates("geometry.left_support_m", g.left_support_m);
@@ -329,7 +331,7 @@ pub(crate) fn check(s: &Scenario) -> (Vec<Problem>, Derived) {
                 let c = Conductor { axial_stiffness_n: ea, internal_friction_n_s: s.numerics.eta_n_s, law };
                 (c, cd.linear_density_kg_per_m)
             });
-            section_grid = super::section::check(&mut c, s, sec, conductor);
+            section_grid = super::section::check(&mut c, s, sec, conductor, material);
             if let Some(sg) = &section_grid {
                 chord = Some(sg.chord_m);
                 n_ok = true;
@@ -423,7 +425,6 @@ pub(crate) fn check(s: &Scenario) -> (Vec<Problem>, Derived) {
     }
     // Stability limits need EA, rho0, the segment length: check them only when those are valid. A
     // two-material conductor's EA is its law's stiffness bound (wire::material), not the catalogue's EA.
-    let material = super::two_material::check(&mut c, cd);
     let ea = match &material {
         Some((law, curve)) => ea.map(|_| crate::wire::Material::virgin(*law, *curve, 0).max_stiffness()),
         None => ea,
