@@ -16,11 +16,86 @@
 //!   that also keeps the iterate inside the system's admissible set (e.g. a
 //!   tension that must stay positive).
 //!
+//! * [`illinois`]: a bracketed root without derivatives by the Illinois variant of regula falsi
+//!   (Dowell and Jarratt, BIT 11, 1971): the secant point of the bracket (the midpoint where it falls
+//!   outside), the retained end's value halved when the same end is kept twice in a row; robust like
+//!   bisection, superlinear near a simple root. The thermal ratings' steady state and the sag-tension
+//!   searches both use it.
+//!
 //! These are textbook methods (e.g. Press et al., "Numerical Recipes",
 //! 3rd ed., sections 9.4 and 9.7; Dennis & Schnabel, "Numerical Methods for
 //! Unconstrained Optimization and Nonlinear Equations", 1983, chapter 6).
 
 use super::ExactError;
+
+/// Where an [`illinois`] iteration stopped: the last bracket `[lo, hi]` (either order) with the values
+/// there (the retained ends' values as the method halved them), the evaluations spent, and how it ended.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct IllinoisEnd {
+    /// one end of the last bracket
+    pub lo: f64,
+    /// the other end
+    pub hi: f64,
+    /// the (possibly halved) value at `lo`
+    pub f_lo: f64,
+    /// the (possibly halved) value at `hi`
+    pub f_hi: f64,
+    /// evaluations of `f` spent
+    pub evaluations: usize,
+    /// an iterate at which `f` vanished exactly
+    pub zero: Option<f64>,
+    /// whether the bracket became narrower than the tolerance (or `f` vanished)
+    pub converged: bool,
+}
+
+/// A root of `f` in the bracket `[lo, hi]` with values `f_lo`, `f_hi` of opposite signs (module doc):
+/// iterates until the bracket is narrower than `tol`, `f` vanishes, or `max_evaluations` are spent, and
+/// returns where it stopped; the caller picks the root from the last bracket (its midpoint, or the end of
+/// smaller value). An error of `f` ends the iteration with that error.
+pub fn illinois<E, F>(
+    mut f: F,
+    mut lo: f64,
+    mut hi: f64,
+    mut f_lo: f64,
+    mut f_hi: f64,
+    tol: f64,
+    max_evaluations: usize,
+) -> Result<IllinoisEnd, E>
+where
+    F: FnMut(f64) -> Result<f64, E>,
+{
+    let mut evaluations = 0;
+    let mut side = 0i8;
+    let mut converged = (hi - lo).abs() <= tol;
+    while !converged && evaluations < max_evaluations {
+        let mut x = (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
+        if !x.is_finite() || x <= lo.min(hi) || x >= lo.max(hi) {
+            x = 0.5 * (lo + hi);
+        }
+        let fx = f(x)?;
+        evaluations += 1;
+        if fx == 0.0 {
+            return Ok(IllinoisEnd { lo, hi, f_lo, f_hi, evaluations, zero: Some(x), converged: true });
+        }
+        if (fx > 0.0) == (f_lo > 0.0) {
+            lo = x;
+            f_lo = fx;
+            if side == -1 {
+                f_hi *= 0.5;
+            }
+            side = -1;
+        } else {
+            hi = x;
+            f_hi = fx;
+            if side == 1 {
+                f_lo *= 0.5;
+            }
+            side = 1;
+        }
+        converged = (hi - lo).abs() <= tol;
+    }
+    Ok(IllinoisEnd { lo, hi, f_lo, f_hi, evaluations, zero: None, converged })
+}
 
 /// Options of the 1D safeguarded Newton iteration.
 #[derive(Debug, Clone, Copy, PartialEq)]

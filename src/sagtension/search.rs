@@ -11,20 +11,15 @@
 //! [`TwoMaterial::outer_slack_strain`]: crate::conductor::TwoMaterial::outer_slack_strain
 
 use super::{SagTensionError, State, Strung, Weather};
+use crate::exact::roots;
 
 /// The searched temperature range [K]: -73 C to 527 C (beyond any conductor's rating).
 pub const TEMPERATURE_RANGE_K: (f64, f64) = (200.0, 800.0);
 
-/// A root of `f` in `[lo, hi]` with `f(lo) = f_lo`, `f(hi) = f_hi` of opposite signs (module doc), to a
-/// bracket of `x_tol` or an exact zero.
-pub fn illinois<F>(
-    mut f: F,
-    mut lo: f64,
-    mut hi: f64,
-    mut f_lo: f64,
-    mut f_hi: f64,
-    x_tol: f64,
-) -> Result<f64, SagTensionError>
+/// A root of `f` in `[lo, hi]` with `f(lo) = f_lo`, `f(hi) = f_hi` of opposite signs (module doc;
+/// [`crate::exact::roots::illinois`], at most 200 evaluations), to a bracket of `x_tol` or an exact zero:
+/// the end of the last bracket with the smaller value.
+pub fn illinois<F>(f: F, lo: f64, hi: f64, f_lo: f64, f_hi: f64, x_tol: f64) -> Result<f64, SagTensionError>
 where
     F: FnMut(f64) -> Result<f64, SagTensionError>,
 {
@@ -40,36 +35,15 @@ where
             detail: format!("f({lo}) = {f_lo} and f({hi}) = {f_hi} have one sign"),
         });
     }
-    let mut side = 0;
-    for _ in 0..200 {
-        let mut x = (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
-        if !(x > lo && x < hi) {
-            x = 0.5 * (lo + hi);
-        }
-        let fx = f(x)?;
-        if fx == 0.0 {
-            return Ok(x);
-        }
-        if fx.signum() == f_lo.signum() {
-            lo = x;
-            f_lo = fx;
-            if side == -1 {
-                f_hi *= 0.5;
-            }
-            side = -1;
-        } else {
-            hi = x;
-            f_hi = fx;
-            if side == 1 {
-                f_lo *= 0.5;
-            }
-            side = 1;
-        }
-        if hi - lo <= x_tol {
-            return Ok(if f_lo.abs() < f_hi.abs() { lo } else { hi });
-        }
+    let end = roots::illinois(f, lo, hi, f_lo, f_hi, x_tol, 200)?;
+    match (end.zero, end.converged) {
+        (Some(x), _) => Ok(x),
+        (None, true) => Ok(if end.f_lo.abs() < end.f_hi.abs() { end.lo } else { end.hi }),
+        (None, false) => Err(SagTensionError::NoSolution {
+            what: "bracketed root",
+            detail: format!("no convergence in [{}, {}]", end.lo, end.hi),
+        }),
     }
-    Err(SagTensionError::NoSolution { what: "bracketed root", detail: format!("no convergence in [{lo}, {hi}]") })
 }
 
 impl Strung {

@@ -19,6 +19,8 @@
 //!   conductor above `T_m` (`q_c + q_r <= q_S`) there is no ampacity: an error.
 
 use super::{HeatBalance, HeatTerms};
+use crate::exact::roots::illinois;
+use std::convert::Infallible;
 
 /// Why a steady-state computation failed.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
@@ -74,50 +76,14 @@ const MAX_EXCESS_K: f64 = 2000.0;
 const BRACKET_TOL_K: f64 = 1e-9;
 
 /// A root of `f` in `[lo, hi]` with `f(lo) >= 0 >= f(hi)` or the reverse (the Illinois variant of regula
-/// falsi: the secant point of the bracket, with the retained end's value halved when the same end is kept
-/// twice in a row). Returns the root and the evaluations spent; stops when the bracket is narrower than
-/// `tol` or `f` vanishes. `f_lo`, `f_hi` are `f` at the ends, already known to the caller.
-pub fn bracketed_root(
-    mut f: impl FnMut(f64) -> f64,
-    mut lo: f64,
-    mut hi: f64,
-    mut f_lo: f64,
-    mut f_hi: f64,
-    tol: f64,
-) -> (f64, usize) {
+/// falsi, [`illinois`], at most 400 evaluations). Returns the root (where `f` vanished, else the midpoint
+/// of the last bracket) and the evaluations spent; stops when the bracket is narrower than `tol` or `f`
+/// vanishes. `f_lo`, `f_hi` are `f` at the ends, already known to the caller.
+pub fn bracketed_root(f: impl FnMut(f64) -> f64, lo: f64, hi: f64, f_lo: f64, f_hi: f64, tol: f64) -> (f64, usize) {
     debug_assert!(f_lo * f_hi <= 0.0, "not a bracket: f({lo}) = {f_lo}, f({hi}) = {f_hi}");
-    let mut evaluations = 0;
-    let mut side = 0i8;
-    for _ in 0..400 {
-        if (hi - lo).abs() <= tol {
-            break;
-        }
-        let mut x = (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
-        if !x.is_finite() || x <= lo.min(hi) || x >= lo.max(hi) {
-            x = 0.5 * (lo + hi);
-        }
-        let fx = f(x);
-        evaluations += 1;
-        if fx == 0.0 {
-            return (x, evaluations);
-        }
-        if (fx > 0.0) == (f_lo > 0.0) {
-            lo = x;
-            f_lo = fx;
-            if side == -1 {
-                f_hi *= 0.5;
-            }
-            side = -1;
-        } else {
-            hi = x;
-            f_hi = fx;
-            if side == 1 {
-                f_lo *= 0.5;
-            }
-            side = 1;
-        }
-    }
-    (0.5 * (lo + hi), evaluations)
+    let mut f = f;
+    let end = illinois(|x| Ok::<f64, Infallible>(f(x)), lo, hi, f_lo, f_hi, tol, 400).unwrap_or_else(|e| match e {});
+    (end.zero.unwrap_or(0.5 * (end.lo + end.hi)), end.evaluations)
 }
 
 /// The steady conductor temperature carrying `current_a` [A] (module doc).
