@@ -40,7 +40,8 @@ fn compute(quantity: &str, p: &BTreeMap<String, f64>) -> f64 {
     // g_n: the standard's 9.81 unless the source is known to use another value (input `g`)
     let g_n = p.get("g").copied().unwrap_or(G_N);
     // E_eff as printed, or from E by eq. (26) where the source prints no E_eff
-    let e_eff = || p.get("e_eff").copied().unwrap_or_else(|| eq::effective_modulus(g("e"), g("f_st"), g("n"), g("a_s")));
+    let e_eff =
+        || p.get("e_eff").copied().unwrap_or_else(|| eq::effective_modulus(g("e"), g("f_st"), g("n"), g("a_s")));
     match quantity {
         "f_prime_three_phase" => eq::characteristic_force(true, g("current_a"), g("a"), g("l_c"), g("l")),
         "m_s_with_masses" => g("m_s") + g("m_c") / (g("n") * g("l_c")),
