@@ -1,6 +1,7 @@
 //! IEC 60865-1 simplified method for flexible conductors (issue 25, `ohl::shortcircuit::iec60865`): the
-//! published worked examples of IEC TR 60865-2 as far as public sources give them (tests/data/iec60865,
-//! docs/short_circuit_iec60865.md), step by step, and the method's invariants.
+//! published worked examples of IEC TR 60865-2 and the FAU program's project "Riet" as far as public sources
+//! give them (tests/data/iec60865, docs/short_circuit_iec60865.md), step by step and end to end, and the
+//! method's invariants.
 
 use ohl::shortcircuit::iec60865::equations as eq;
 use ohl::shortcircuit::iec60865::psi::psi;
