@@ -70,7 +70,7 @@ pub struct EmNumerics {
 impl Default for EmNumerics {
     /// The defaults chosen from the measurements of docs/short_circuit.md ("Fast evaluation").
     fn default() -> Self {
-        EmNumerics { chord_segments: 5, refresh_steps: 10, extrapolate: true }
+        EmNumerics { chord_segments: 4, refresh_steps: 8, extrapolate: true }
     }
 }
 
