@@ -382,3 +382,27 @@ impl EmState {
         self.refreshes += 1;
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::chord_weights;
+
+    /// The spread keeps the chord's force and first moment: `sum_j w_F = 1`, `sum_j w_M = 0`,
+    /// `sum_j u_j w_F = 0`, `sum_j u_j w_M = 1` (so `sum_j f_j = F`, `sum_j u_j f_j = M`), on uneven node
+    /// fractions; and a chord of one segment is the pair element's own split, exactly.
+    #[test]
+    fn spread_keeps_force_and_moment() {
+        let u = [0.0, 0.1, 0.35, 0.5, 0.8, 1.0];
+        let mut w = Vec::new();
+        chord_weights(&u, &mut w, 7);
+        assert_eq!(w.iter().map(|x| x.0).collect::<Vec<_>>(), vec![7, 8, 9, 10, 11, 12]);
+        let s = |f: &dyn Fn(usize, &(usize, f64, f64)) -> f64| w.iter().enumerate().map(|(j, x)| f(j, x)).sum::<f64>();
+        assert!((s(&|_, x| x.1) - 1.0).abs() < 1e-14);
+        assert!(s(&|_, x| x.2).abs() < 1e-14);
+        assert!(s(&|j, x| u[j] * x.1).abs() < 1e-14);
+        assert!((s(&|j, x| u[j] * x.2) - 1.0).abs() < 1e-14);
+        let mut one = Vec::new();
+        chord_weights(&[0.0, 1.0], &mut one, 3);
+        assert_eq!(one, vec![(3, 1.0, -1.0), (4, 0.0, 1.0)]);
+    }
+}
