@@ -14,7 +14,7 @@
 
 use ohl::element::em_force::MU0_H_PER_M;
 use ohl::element::tension::LawKind;
-use ohl::line::electromagnetic::{Carrier, EmError, EmNumerics, Electromagnetic};
+use ohl::line::electromagnetic::{Carrier, Electromagnetic, EmError, EmNumerics};
 use ohl::line::{LineConductor, Model, Role};
 use ohl::scheme::{Explicit, LineExplicit, Loads, StepParams, WindGate};
 use ohl::shortcircuit::current::{FaultCurrent, FaultCurrentSpec, FaultKind};
@@ -29,7 +29,13 @@ const RHO: f64 = 1.628;
 const RADIUS: f64 = 0.01405;
 
 fn loads(g: f64) -> Loads {
-    Loads { gravity_m_per_s2: g, uniform_load_n_per_m: [0.0; 3], wind: None, wind_scale: 1.0, wind_gate: WindGate::Always }
+    Loads {
+        gravity_m_per_s2: g,
+        uniform_load_n_per_m: [0.0; 3],
+        wind: None,
+        wind_scale: 1.0,
+        wind_gate: WindGate::Always,
+    }
 }
 
 fn params(dt_s: f64) -> StepParams {
@@ -39,7 +45,8 @@ fn params(dt_s: f64) -> StepParams {
 /// A straight wire from `a` to `b` in `n` segments, stretched by `strain` (rest length `|b - a| / (1 +
 /// strain)`), both ends fixed.
 fn straight(a: [f64; 3], b: [f64; 3], n: usize, rho: f64, strain: f64) -> Wire {
-    let xs: [Vec<f64>; 3] = std::array::from_fn(|k| (0..=n).map(|i| a[k] + (b[k] - a[k]) * i as f64 / n as f64).collect());
+    let xs: [Vec<f64>; 3] =
+        std::array::from_fn(|k| (0..=n).map(|i| a[k] + (b[k] - a[k]) * i as f64 / n as f64).collect());
     let len = ((b[0] - a[0]).powi(2) + (b[1] - a[1]).powi(2) + (b[2] - a[2]).powi(2)).sqrt();
     let c = Conductor { axial_stiffness_n: EA, internal_friction_n_s: 0.0, law: LawKind::TensionOnly };
     Wire::new(c, xs, vec![len / (1.0 + strain) / n as f64; n], rho)
@@ -141,7 +148,8 @@ fn parallel_conductors_carry_the_closed_form_force_per_length() {
     let ds = l / n as f64;
     let mid = n / 2;
     let ym = mid as f64 * ds;
-    let hat = gl(&|y| fp(y) * (1.0 - (y - ym).abs() / ds), ym - ds, ym, 64) + gl(&|y| fp(y) * (1.0 - (y - ym).abs() / ds), ym, ym + ds, 64);
+    let hat = gl(&|y| fp(y) * (1.0 - (y - ym).abs() / ds), ym - ds, ym, 64)
+        + gl(&|y| fp(y) * (1.0 - (y - ym).abs() / ds), ym, ym + ds, 64);
     let f_b = line.em_force_n(1).unwrap();
     let f_a = line.em_force_n(0).unwrap();
     let got = f_b[0][mid];
@@ -326,7 +334,8 @@ fn force_error(n: usize, numerics: EmNumerics) -> (f64, f64) {
             tdiff = tdiff.max(((ta[0] - tb[0]).powi(2) + (ta[1] - tb[1]).powi(2) + (ta[2] - tb[2]).powi(2)).sqrt());
             tsize = tsize.max((tb[0].powi(2) + tb[1].powi(2) + tb[2].powi(2)).sqrt());
             for i in 0..=n {
-                let d = ((a[0][i] - b[0][i]).powi(2) + (a[1][i] - b[1][i]).powi(2) + (a[2][i] - b[2][i]).powi(2)).sqrt();
+                let d =
+                    ((a[0][i] - b[0][i]).powi(2) + (a[1][i] - b[1][i]).powi(2) + (a[2][i] - b[2][i]).powi(2)).sqrt();
                 diff = diff.max(d);
                 size = size.max((b[0][i].powi(2) + b[1][i].powi(2) + b[2][i].powi(2)).sqrt());
             }
@@ -388,7 +397,11 @@ fn chord_and_refresh_errors_against_all_pairs() {
     }
     let (p_held, p_ex) = (fit(&ms, &held), fit(&ms[..3], &extrapolated[..3]));
     let e = |v: &[f64]| v.iter().map(|x| format!("{x:.3e}")).collect::<Vec<_>>().join(", ");
-    eprintln!("refresh M = {ms:?}: held {} (order {p_held:.2}), extrapolated {} (order over M <= 8 {p_ex:.2})", e(&held), e(&extrapolated));
+    eprintln!(
+        "refresh M = {ms:?}: held {} (order {p_held:.2}), extrapolated {} (order over M <= 8 {p_ex:.2})",
+        e(&held),
+        e(&extrapolated)
+    );
     assert!((p_held - 1.0).abs() < 0.4, "{held:?}");
     assert!((p_ex - 2.0).abs() < 0.5, "{extrapolated:?}");
     let defaults = EmNumerics::default();
@@ -415,7 +428,12 @@ fn no_current_no_change() {
     }
     for c in 0..2 {
         for k in 0..3 {
-            assert!(plain.conductors()[c].wire().x[k].iter().zip(&later.conductors()[c].wire().x[k]).all(|(a, b)| a.to_bits() == b.to_bits()));
+            assert!(
+                plain.conductors()[c].wire().x[k]
+                    .iter()
+                    .zip(&later.conductors()[c].wire().x[k])
+                    .all(|(a, b)| a.to_bits() == b.to_bits())
+            );
         }
     }
     assert_eq!(later.em_work_j(), 0.0);
@@ -452,21 +470,28 @@ fn bad_carriers_are_typed_errors() {
     assert!(matches!(line.set_electromagnetic(Some(e)), Err(EmError::Carrier { .. })));
     let mut e = base.clone();
     e.carriers[0].share = f64::NAN;
-    assert!(matches!(line.set_electromagnetic(Some(e)), Err(EmError::Value { what, .. }) if what == "carriers[0].share"));
+    assert!(
+        matches!(line.set_electromagnetic(Some(e)), Err(EmError::Value { what, .. }) if what == "carriers[0].share")
+    );
     let mut e = base.clone();
     e.carriers[0].phase = 3;
-    assert!(matches!(line.set_electromagnetic(Some(e)), Err(EmError::Value { what, .. }) if what == "carriers[0].phase"));
+    assert!(
+        matches!(line.set_electromagnetic(Some(e)), Err(EmError::Value { what, .. }) if what == "carriers[0].phase")
+    );
     let mut e = base.clone();
     e.carriers[0].core_radius_m = 0.0;
-    assert!(matches!(line.set_electromagnetic(Some(e)), Err(EmError::Value { what, .. }) if what == "carriers[0].core_radius_m"));
+    assert!(
+        matches!(line.set_electromagnetic(Some(e)), Err(EmError::Value { what, .. }) if what == "carriers[0].core_radius_m")
+    );
     let mut e = base.clone();
     e.numerics.refresh_steps = 0;
-    assert!(matches!(line.set_electromagnetic(Some(e)), Err(EmError::Value { what, .. }) if what == "numerics.refresh_steps"));
+    assert!(
+        matches!(line.set_electromagnetic(Some(e)), Err(EmError::Value { what, .. }) if what == "numerics.refresh_steps")
+    );
     assert!(line.electromagnetic().is_none());
     line.set_electromagnetic(Some(base)).unwrap();
     assert!(line.electromagnetic().is_some());
 }
-
 
 /// The cost per step (ignored: timing; `cargo test --release --test library short_circuit_line::cost --
 /// --ignored --nocapture`). A 40 m span at 100 segments per conductor (Drake, Courant 0.9: dt = 7.7e-5
@@ -484,11 +509,15 @@ fn cost_per_step() {
         } else {
             vec![(-3.0, 0), (0.0, 1), (3.0, 2)]
         };
-        let wires: Vec<Wire> = xs.iter().map(|&(x, _)| settled(straight([x, 0.0, 10.0], [x, 40.0, 10.0], n, RHO, 5e-4))).collect();
+        let wires: Vec<Wire> =
+            xs.iter().map(|&(x, _)| settled(straight([x, 0.0, 10.0], [x, 40.0, 10.0], n, RHO, 5e-4))).collect();
         let m = model(wires, G);
         let share = if twin { 0.5 } else { 1.0 };
-        let carriers: Vec<Carrier> =
-            xs.iter().enumerate().map(|(c, &(_, p))| Carrier { conductor: c, phase: p, share, core_radius_m: RADIUS }).collect();
+        let carriers: Vec<Carrier> = xs
+            .iter()
+            .enumerate()
+            .map(|(c, &(_, p))| Carrier { conductor: c, phase: p, share, core_radius_m: RADIUS })
+            .collect();
         let mut rows = Vec::new();
         for (label, numerics) in [
             ("none", None),
@@ -498,7 +527,8 @@ fn cost_per_step() {
             let mut line = LineExplicit::new(&m, params(dt)).unwrap();
             if let Some(numerics) = numerics {
                 let current = fault(FaultKind::ThreePhase, 40_000.0, 0.0, 1.0);
-                line.set_electromagnetic(Some(Electromagnetic { carriers: carriers.clone(), current, numerics })).unwrap();
+                line.set_electromagnetic(Some(Electromagnetic { carriers: carriers.clone(), current, numerics }))
+                    .unwrap();
             }
             for _ in 0..20 {
                 line.step(dt).unwrap();
