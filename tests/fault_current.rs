@@ -241,7 +241,8 @@ fn peak_factor_inverse_and_worst_angles() {
 /// Every field out of range is a typed error naming it, its value and the allowed range; no NaN passes.
 #[test]
 fn bad_values_are_typed_errors() {
-    let cases: Vec<(&str, Box<dyn Fn(&mut FaultCurrentSpec)>)> = vec![
+    type Set = Box<dyn Fn(&mut FaultCurrentSpec)>;
+    let cases: Vec<(&str, Set)> = vec![
         ("initial_current_a", Box::new(|s| s.initial_current_a = 0.0)),
         ("initial_current_a", Box::new(|s| s.initial_current_a = f64::NAN)),
         ("frequency_hz", Box::new(|s| s.frequency_hz = -50.0)),
