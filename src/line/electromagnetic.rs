@@ -38,6 +38,9 @@
 //! The measured errors of both against the all-pairs, every-step evaluation and the defaults' sources:
 //! docs/short_circuit.md and `tests/short_circuit_line.rs`.
 
+// Units in brackets, `[N]`, `[m]`, `[A]`, would otherwise be taken for intra-doc links.
+#![allow(rustdoc::broken_intra_doc_links)]
+
 use crate::shortcircuit::current::FaultCurrent;
 
 /// A conductor that carries a share of a phase's fault current.

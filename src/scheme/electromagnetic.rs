@@ -24,6 +24,9 @@
 //! A pair of chords that intersect (a clash of two carriers, [`crate::element::em_force::EmForceError`])
 //! contributes nothing; the first such event is kept ([`EmState::intersection`]) for the caller to report.
 
+// Units in brackets, `[N]`, `[m]`, `[A]`, would otherwise be taken for intra-doc links.
+#![allow(rustdoc::broken_intra_doc_links)]
+
 use super::explicit::Explicit;
 use crate::element::em_force::{EmForceError, pair_force};
 use crate::line::electromagnetic::Electromagnetic;
