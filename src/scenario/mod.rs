@@ -13,6 +13,8 @@ pub mod range;
 pub mod rating;
 pub mod sagtension;
 pub mod sagtension_table;
+pub mod short_circuit;
+pub mod short_circuit_iec;
 pub mod schema;
 pub mod section;
 pub mod temperature;
