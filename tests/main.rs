@@ -11,6 +11,7 @@ mod em_force;
 mod energy;
 mod equilibrium;
 mod events;
+mod fault_current;
 mod fuzz_scenarios;
 mod ground_friction;
 mod iec60865;

@@ -23,6 +23,7 @@
 pub mod build;
 pub mod clearance;
 pub mod dof;
+pub mod electromagnetic;
 pub mod handle;
 pub mod model;
 pub mod support;

@@ -393,6 +393,15 @@ impl Explicit {
         self.nodal_force = f;
     }
 
+    /// The prescribed nodal forces in place, to set, change or remove without marking the level's segment
+    /// pass stale (it does not read them; the node pass and the diagnostics do): for a load evaluated at
+    /// each level from the state, the short circuit's electromagnetic force
+    /// ([`crate::scheme::electromagnetic`]), with no allocation once its arrays exist. Three arrays of
+    /// length `N + 1` [N].
+    pub fn nodal_force_slot(&mut self) -> &mut Option<[Vec<f64>; 3]> {
+        &mut self.nodal_force
+    }
+
     /// Point forces `(node, F)` [N] acting on the conductor from outside it (the links of a multi-conductor
     /// line, [`crate::line`]), added to the node's force from now on (copied; no allocation once the list
     /// has grown to its size). They enter the node pass as the strings' forces do (after the node loop,

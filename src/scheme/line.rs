@@ -34,7 +34,9 @@
 //! [`crate::wire::insulator::clamp_stable_step_s`]; links and point masses can only lower it.
 //! [`LineExplicit::new`] refuses a step above it, naming the node.
 
+use super::electromagnetic::{EmIntersection, EmState};
 use super::explicit::{Explicit, Instability, StepParams};
+use crate::line::electromagnetic::{EmError, Electromagnetic};
 use crate::line::handle::Endpoint;
 use crate::line::model::{DeadEnd, Link, Model, ModelError, Role};
 use crate::line::support::Support;
@@ -122,6 +124,8 @@ pub struct LineExplicit {
     points: Vec<Vec<(usize, [f64; 3])>>,
     /// sum of the link forces on each support at the current level [N]
     support_load: Vec<[f64; 3]>,
+    /// the electromagnetic load of a short circuit, if any ([`LineExplicit::set_electromagnetic`])
+    em: Option<EmState>,
 }
 
 impl LineExplicit {
@@ -166,6 +170,7 @@ impl LineExplicit {
             link_tension: vec![0.0; model.links.len()],
             points: vec![Vec::new(); n],
             support_load: vec![[0.0; 3]; model.supports.len()],
+            em: None,
         })
     }
 
@@ -192,6 +197,9 @@ impl LineExplicit {
                 s.position_m[k] += dt * s.velocity_m_per_s[k];
             }
         }
+        if let Some(em) = &mut self.em {
+            em.after_step(&self.conductors, dt);
+        }
         self.dt_prev = dt;
         self.time_s += dt;
         self.steps += 1;
@@ -212,7 +220,55 @@ impl LineExplicit {
             c.ensure_forces();
         }
         self.evaluate_links();
+        if let Some(em) = &mut self.em {
+            em.evaluate(&mut self.conductors, self.time_s, self.steps, self.dt_prev);
+        }
         self.fresh = true;
+    }
+
+    /// Set (or remove) the electromagnetic load of a short circuit ([`crate::line::electromagnetic`],
+    /// evaluated by [`crate::scheme::electromagnetic`]): from the next evaluated level on, every carrier
+    /// takes the Biot-Savart force of all carriers' currents while current flows. Refuses carriers that do
+    /// not fit the line. Without current flowing (and without the load) the step is bitwise the one
+    /// without it. The work counted so far ([`LineExplicit::em_work_j`]) starts again from 0.
+    pub fn set_electromagnetic(&mut self, em: Option<Electromagnetic>) -> Result<(), EmError> {
+        if let Some(e) = &em {
+            e.check(self.conductors.len())?;
+        }
+        if let Some(old) = &mut self.em {
+            old.detach(&mut self.conductors);
+        }
+        self.em = em.map(|e| EmState::new(e, &self.conductors));
+        self.fresh = false;
+        Ok(())
+    }
+
+    /// The electromagnetic load, if any.
+    pub fn electromagnetic(&self) -> Option<&Electromagnetic> {
+        self.em.as_ref().map(|e| e.load())
+    }
+
+    /// The electromagnetic nodal forces on `conductor` at the evaluated level [N] (three arrays of its
+    /// nodes; zero while no current flows); `None` if it carries no current.
+    pub fn em_force_n(&self, conductor: usize) -> Option<&[Vec<f64>; 3]> {
+        assert!(self.fresh, "em_force_n needs evaluate_forces at this time level");
+        self.em.as_ref().and_then(|e| e.force_n(conductor))
+    }
+
+    /// Work of the electromagnetic forces since t = 0 (or since the load was set) to the evaluated level
+    /// [J]: the trapezoidal rule over each step ([`crate::scheme::electromagnetic`]), for the energy budget.
+    pub fn em_work_j(&self) -> f64 {
+        self.em.as_ref().map_or(0.0, |e| e.work_j())
+    }
+
+    /// The first meeting of two carriers (intersecting current filaments, left out of the force), if any.
+    pub fn em_intersection(&self) -> Option<EmIntersection> {
+        self.em.as_ref().and_then(|e| e.intersection())
+    }
+
+    /// How many times the electromagnetic geometric factors were evaluated (0 without the load).
+    pub fn em_refreshes(&self) -> u64 {
+        self.em.as_ref().map_or(0, |e| e.refreshes())
     }
 
     /// The links' forces of the current state only, without the conductors' segment passes: set on the

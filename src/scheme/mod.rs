@@ -4,6 +4,7 @@
 pub mod configs;
 pub mod contact;
 pub mod courant;
+pub mod electromagnetic;
 pub mod explicit;
 pub mod line;
 pub mod smoothing;
