@@ -906,6 +906,29 @@ fn assemble(s: &LineScenario, plans: Vec<Plan>, global_only: Vec<Option<Plan>>) 
     if let Some(w) = step_warning {
         line_plans[0].warnings.push(w);
     }
+    // The short circuit's electromagnetic load, after the initial equilibrium (the currents flow from
+    // `short_circuit.start_s`; without current the step is the one without it).
+    if let Some(sc) = &s.short_circuit {
+        let spec_of = |g: &String| spec.conductors.iter().find(|c| &c.name == g);
+        let radius: Vec<f64> = group_names
+            .iter()
+            .map(|g| spec_of(g).and_then(|c| c.conductor.diameter_m).map_or(f64::NAN, |d| 0.5 * d))
+            .collect();
+        let direction: Vec<[f64; 2]> = group_names
+            .iter()
+            .map(|g| {
+                spec_of(g).map_or([0.0, 1.0], |c| {
+                    let h = towards_span(&c.section, 0);
+                    [h[0], h[1]]
+                })
+            })
+            .collect();
+        let em = sc
+            .electromagnetic(&group_names, &groups, &radius, &direction)
+            .map_err(|(field, why)| problem(field, "(short circuit)".into(), why))?;
+        line.set_electromagnetic(Some(em))
+            .map_err(|e| problem("short_circuit".into(), "(carriers)".into(), e.to_string()))?;
+    }
     Ok(LinePlan {
         name: s.name.clone().unwrap_or_else(|| "line".into()),
         line,

@@ -246,9 +246,81 @@ impl ShortCircuitSpec {
                 }
                 Some(_) => {}
             }
+            if let Some(x) = line.conductors.iter().position(|x| &x.name == p)
+                && line.conductors[x].conductor.diameter_m.is_none()
+            {
+                c.fail(
+                    &format!("line.conductors[{x}].conductor.diameter_m"),
+                    "(missing)",
+                    "a phase of [short_circuit] needs its diameter: the core radius of its current filament",
+                );
+            }
             if self.phases[..j].contains(p) {
                 c.fail(&field, format!("{p:?}"), "names a conductor already named: each phase is a different conductor");
             }
         }
+    }
+}
+
+impl ShortCircuitSpec {
+    /// The fault current of the library ([`crate::shortcircuit::current`]) from this table (validated).
+    pub fn fault_current_spec(&self) -> crate::shortcircuit::current::FaultCurrentSpec {
+        use crate::shortcircuit::current::{FaultCurrentSpec, FaultKind, Reclose};
+        FaultCurrentSpec {
+            kind: match self.kind {
+                FaultKindSpec::ThreePhase => FaultKind::ThreePhase,
+                FaultKindSpec::LineToLine => FaultKind::LineToLine,
+                FaultKindSpec::LineToEarth => FaultKind::LineToEarth,
+            },
+            initial_current_a: self.initial_current_a,
+            frequency_hz: self.frequency_hz,
+            r_over_x: self.r_over_x(),
+            inception_angle_deg: self.inception_angle_deg,
+            start_s: self.start_s,
+            duration_s: self.duration_s,
+            reclose: self.reclose.map(|r| Reclose { dead_time_s: r.dead_time_s, duration_s: r.duration_s }),
+        }
+    }
+
+    /// The electromagnetic load of the line: one carrier per conductor of each phase (a bundle's
+    /// sub-conductors each with `1/n` of the phase current), its core radius the conductor's radius, its
+    /// share negative where the conductor is strung against L1's direction (from its section's first
+    /// support to its last). `groups` and `names` are the line's conductor groups and their names
+    /// ([`super::line::LinePlan`]), `radius_m` the radius of each group's conductor and `direction` the
+    /// horizontal direction of each group's section. `Err`: the field and why.
+    pub fn electromagnetic(
+        &self,
+        names: &[String],
+        groups: &[Vec<usize>],
+        radius_m: &[f64],
+        direction: &[[f64; 2]],
+    ) -> Result<crate::line::electromagnetic::Electromagnetic, (String, String)> {
+        use crate::line::electromagnetic::{Carrier, EmNumerics, Electromagnetic};
+        use crate::shortcircuit::current::FaultCurrent;
+        let current = FaultCurrent::new(self.fault_current_spec())
+            .map_err(|e| ("short_circuit".to_string(), format!("the fault current: {e}")))?;
+        let mut carriers = Vec::new();
+        let mut reference: Option<[f64; 2]> = None;
+        for (phase, name) in self.phases.iter().enumerate() {
+            let g = names
+                .iter()
+                .position(|n| n == name)
+                .ok_or_else(|| (format!("short_circuit.phases[{phase}]"), "not a conductor of the line".to_string()))?;
+            let d = direction[g];
+            let r = *reference.get_or_insert(d);
+            let sign = if d[0] * r[0] + d[1] * r[1] < 0.0 { -1.0 } else { 1.0 };
+            let share = sign / groups[g].len() as f64;
+            for &conductor in &groups[g] {
+                carriers.push(Carrier { conductor, phase, share, core_radius_m: radius_m[g] });
+            }
+        }
+        let mut numerics = EmNumerics::default();
+        if let Some(k) = self.chord_segments {
+            numerics.chord_segments = k;
+        }
+        if let Some(m) = self.refresh_steps {
+            numerics.refresh_steps = m;
+        }
+        Ok(Electromagnetic { carriers, current, numerics })
     }
 }
