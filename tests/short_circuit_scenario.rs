@@ -20,15 +20,15 @@ fn rel(x: f64, y: f64) -> f64 {
 }
 
 /// A small line written here: three single conductors (a catalogue conductor, ACSR Drake) of one 40 m span
-/// between dead-ends at 2 m and 3 m phase spacing; the middle phase B (`b` its extra keys) on tension
-/// strings hung from two elastic portals of 1e6 and 4e6 N/m along the line, all strung at H = 5000 N and
+/// between dead-ends at 2 m and 3 m phase spacing; the phase A (L1, the main conductor; `b` its extra
+/// keys) on tension strings hung from two elastic portals of 1e6 and 4e6 N/m along the line, all strung at H = 5000 N and
 /// started as strung. Everything the mapping reads is set here.
 fn small(extra: &str, b: &str) -> String {
     let mut t = String::from(
         "[line]\ntowers = [\n  { name = \"P0\", position_m = [0.0, 0.0, 10.0], elastic = { along_n_per_m = 1.0e6, across_n_per_m = 1.0e6, mass_kg = 50.0 } },\n  { name = \"P1\", position_m = [0.0, 40.0, 10.0], elastic = { along_n_per_m = 4.0e6, across_n_per_m = 1.0e6, mass_kg = 50.0 } },\n]\n",
     );
     for (name, x) in [("A", -2.0), ("B", 0.0), ("C", 3.0)] {
-        let own = if name == "B" { b } else { "" };
+        let own = if name == "A" { b } else { "" };
         t += &format!(
             "[[line.conductors]]\nname = \"{name}\"\nconductor = {{ catalog = \"ACSR Drake\" }}\n{own}\n[line.conductors.section]\nhorizontal_tension_n = 5000.0\nsegments_per_span = 20\nsupports = [{{ kind = \"dead_end\", point_m = [{x}, 0.0, 10.0] }}, {{ kind = \"dead_end\", point_m = [{x}, 40.0, 10.0] }}]\n"
         );
@@ -38,7 +38,7 @@ fn small(extra: &str, b: &str) -> String {
         + "\n[duration]\nend_time_s = 0.01\n"
 }
 
-/// B on two strings of 2 m from the portals P0 and P1.
+/// A on two strings of 2 m from the portals P0 and P1.
 const STRAINED: &str = "towers = [\"P0\", \"P1\"]\ntension_strings = [{ support = 0, length_m = 2.0, mass_kg = 0.0, stiffness_n = 1.0e8 }, { support = 1, length_m = 2.0, mass_kg = 0.0, stiffness_n = 1.0e8 }]";
 
 fn mapped(text: &str) -> Result<ohl::scenario::short_circuit_iec::Mapped, MappingError> {
@@ -61,7 +61,7 @@ fn small_line_maps_onto_the_hand_derived_input() {
     let drake = ohl::thermal::catalog::find("ACSR Drake").unwrap();
     let m = mapped(&small("kind = \"three_phase\"", STRAINED)).unwrap();
     let i = m.input;
-    assert_eq!(m.main, "B");
+    assert_eq!(m.main, "A");
     assert_eq!(i.span_m, 40.0);
     assert_eq!(i.phase_distance_m, 2.0);
     assert_eq!(i.mounting, Mounting::Strained { insulator_chain_length_m: 2.0 });
@@ -102,7 +102,7 @@ fn unmappable_lines_are_refused_with_their_field() {
     assert_eq!(field(e), "short_circuit.kind");
     let one = "tension_strings = [{ support = 0, length_m = 2.0, mass_kg = 0.0, stiffness_n = 1.0e8 }]";
     let e = mapped(&small("kind = \"three_phase\"", one)).unwrap_err();
-    assert_eq!(field(e), "line.conductors[1].tension_strings");
+    assert_eq!(field(e), "line.conductors[0].tension_strings");
     let rigid = STRAINED.replace("towers = [\"P0\", \"P1\"]", "");
     let e = mapped(&small("kind = \"three_phase\"", &rigid)).unwrap_err();
     assert_eq!(field(e), "short_circuit.spring_constant_n_per_m");
@@ -123,7 +123,7 @@ fn example_8_case_maps_onto_the_tr_input() {
     let m = map(&s, &plan).unwrap();
     let i = m.input;
     println!("{i:#?}\n{:?}", m.notes);
-    assert_eq!(m.main, "B");
+    assert_eq!(m.main, "A");
     assert_eq!(i.span_m, 48.0);
     assert_eq!(i.phase_distance_m, 5.0);
     assert_eq!(i.mounting, Mounting::Strained { insulator_chain_length_m: 5.3 });

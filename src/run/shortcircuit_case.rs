@@ -81,7 +81,7 @@ pub fn compare(s: &LineScenario, plan: LinePlan, out_dir: Option<&Path>) -> Resu
     let iec = mapped.as_ref().ok().map(|m| evaluate(&m.input).map_err(|e| e.to_string()));
     let main = match &mapped {
         Ok(m) => m.main.clone(),
-        Err(_) => sc.phases.get(1).or(sc.phases.first()).cloned().unwrap_or_default(),
+        Err(_) => sc.phases.first().cloned().unwrap_or_default(),
     };
     let opts = LineRunOptions { out_dir: out_dir.map(Path::to_path_buf), record: false };
     let outcome = run_line_observed(plan, &opts, &mut [])?;
@@ -191,4 +191,56 @@ pub fn compare(s: &LineScenario, plan: LinePlan, out_dir: Option<&Path>) -> Resu
         },
     ];
     Ok(Comparison { mapped, iec, outcome, dynamic, main, rows })
+}
+
+/// Both halves as `shortcircuit.json` holds them (the command's file, the Python package's dict).
+pub fn to_json(c: &Comparison) -> serde_json::Value {
+    let mapped = match &c.mapped {
+        Ok(m) => {
+            let i = &m.input;
+            serde_json::json!({
+                "main": m.main,
+                "span_m": i.span_m,
+                "phase_distance_m": i.phase_distance_m,
+                "insulator_chain_length_m": match i.mounting { crate::shortcircuit::iec60865::Mounting::Slack => None, crate::shortcircuit::iec60865::Mounting::Strained { insulator_chain_length_m } => Some(insulator_chain_length_m) },
+                "subconductors": i.subconductors,
+                "mass_per_length_kg_per_m": i.mass_per_length_kg_per_m,
+                "concentrated_mass_kg": i.concentrated_mass_kg,
+                "area_m2": i.area_m2,
+                "young_modulus_pa": i.young_modulus_pa,
+                "diameter_m": i.diameter_m,
+                "static_tension_n": i.static_tension_n,
+                "spring_constant_n_per_m": i.spring_constant_n_per_m,
+                "current_a": i.fault.current_a(),
+                "first_duration_s": i.first_duration_s,
+                "thermal_constant_m4_per_a2s": i.thermal_constant_m4_per_a2s,
+                "gravity_m_per_s2": i.gravity_m_per_s2,
+                "subconductor_distance_m": i.bundle.map(|b| b.subconductor_distance_m),
+                "spacer_distance_m": i.bundle.map(|b| b.spacer_distance_m),
+                "notes": m.notes,
+            })
+        }
+        Err(e) => serde_json::json!({ "refused": e }),
+    };
+    let iec = match &c.iec {
+        Some(Err(e)) => serde_json::json!({ "refused": e }),
+        Some(Ok(_)) | None => serde_json::Value::Null,
+    };
+    let rows: Vec<serde_json::Value> = c
+        .rows
+        .iter()
+        .map(|r| {
+            serde_json::json!({
+                "quantity": r.quantity, "symbol": r.symbol, "equation": r.equation, "unit": r.unit,
+                "iec": r.iec, "dynamic": r.dynamic, "difference": r.difference(),
+            })
+        })
+        .collect();
+    serde_json::json!({
+        "main": c.main,
+        "iec_input": mapped,
+        "iec_refusal": iec,
+        "rows": rows,
+        "dynamic": c.dynamic,
+    })
 }

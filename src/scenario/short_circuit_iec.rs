@@ -2,9 +2,11 @@
 //! ([`crate::shortcircuit::iec60865::Input`]): the one span of the standard, read off the line the dynamic
 //! run simulates (`ohl shortcircuit`, docs/short_circuit.md, "The mapping").
 //!
-//! The main conductor is the phase L2 (`short_circuit.phases[1]`: for a three-phase fault the centre
-//! phase, the one eq. (19a) is written for; for a line-to-line fault a phase that carries current). Its
-//! section must be one span between two dead-ends.
+//! The main conductor is the phase L1 (`short_circuit.phases[0]`): for a three-phase fault in a flat
+//! arrangement an outer phase, the one eq. (19a) is written for (the factor 0.75 is the time average of
+//! the force on an outer conductor, `i1 (i2 / a + i3 / 2a)` with `<i1 i2> = <i1 i3> = -I^2 / 2`; the centre
+//! conductor's average is zero); for a line-to-line fault a phase that carries current. Its section must
+//! be one span between two dead-ends.
 //!
 //! - `l`: the distance between the section's two dead-end points (the portals' string points);
 //! - `a`: the distance between the dead-end points of L1 and L2 at the first support (three-phase: the
@@ -99,7 +101,7 @@ pub fn map(s: &LineScenario, plan: &LinePlan) -> Result<Mapped, MappingError> {
         })?;
         spec_of(name).ok_or_else(|| unsupported(format!("short_circuit.phases[{j}]"), format!("{name:?}"), "not a conductor"))
     };
-    let main_k = phase(1)?;
+    let main_k = phase(0)?;
     let main = &s.line.conductors[main_k];
     let f = |name: &str| format!("line.conductors[{main_k}].{name}");
     let sec = &main.section;
@@ -117,12 +119,13 @@ pub fn map(s: &LineScenario, plan: &LinePlan) -> Result<Mapped, MappingError> {
     let (p0, p1) = (point(main, 0, f("section.supports[0]"))?, point(main, 1, f("section.supports[1]"))?);
     let span_m = distance(p0, p1);
     // The phase distance at the first support.
-    let l1 = phase(0)?;
-    let a12 = distance(point(&s.line.conductors[l1], 0, format!("line.conductors[{l1}].section.supports[0]"))?, p0);
+    let l2 = phase(1)?;
+    let q2 = point(&s.line.conductors[l2], 0, format!("line.conductors[{l2}].section.supports[0]"))?;
+    let a12 = distance(q2, p0);
     let mut phase_distance_m = a12;
     if sc.kind == FaultKindSpec::ThreePhase {
         let l3 = phase(2)?;
-        let a23 = distance(point(&s.line.conductors[l3], 0, format!("line.conductors[{l3}].section.supports[0]"))?, p0);
+        let a23 = distance(point(&s.line.conductors[l3], 0, format!("line.conductors[{l3}].section.supports[0]"))?, q2);
         if (a23 - a12).abs() > 1e-9 * a12.max(a23) {
             notes.push(format!("a: L1-L2 {a12} m and L2-L3 {a23} m differ; the smaller is taken (the larger force)"));
         }

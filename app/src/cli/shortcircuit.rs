@@ -13,7 +13,7 @@
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-use ohl::run::shortcircuit_case::{CompareError, Comparison, compare};
+use ohl::run::shortcircuit_case::{CompareError, Comparison, compare, to_json};
 use ohl::scenario;
 use ohl::shortcircuit::iec60865::Mounting;
 
@@ -64,7 +64,7 @@ pub fn main(args: ShortCircuitArgs) -> ExitCode {
     }
     print(&s.name.clone().unwrap_or_default(), &c);
     let path = args.out.join("shortcircuit.json");
-    let text = serde_json::to_string_pretty(&json(&c)).expect("serialises") + "\n";
+    let text = serde_json::to_string_pretty(&to_json(&c)).expect("serialises") + "\n";
     if let Err(e) = std::fs::write(&path, text) {
         err!("error: {}: {e}", path.display());
         return ExitCode::from(1);
@@ -129,55 +129,4 @@ fn print(name: &str, c: &Comparison) {
         c.dynamic.end_s,
         c.dynamic.em_work_j
     );
-}
-
-fn json(c: &Comparison) -> serde_json::Value {
-    let mapped = match &c.mapped {
-        Ok(m) => {
-            let i = &m.input;
-            serde_json::json!({
-                "main": m.main,
-                "span_m": i.span_m,
-                "phase_distance_m": i.phase_distance_m,
-                "insulator_chain_length_m": match i.mounting { Mounting::Slack => None, Mounting::Strained { insulator_chain_length_m } => Some(insulator_chain_length_m) },
-                "subconductors": i.subconductors,
-                "mass_per_length_kg_per_m": i.mass_per_length_kg_per_m,
-                "concentrated_mass_kg": i.concentrated_mass_kg,
-                "area_m2": i.area_m2,
-                "young_modulus_pa": i.young_modulus_pa,
-                "diameter_m": i.diameter_m,
-                "static_tension_n": i.static_tension_n,
-                "spring_constant_n_per_m": i.spring_constant_n_per_m,
-                "current_a": i.fault.current_a(),
-                "first_duration_s": i.first_duration_s,
-                "thermal_constant_m4_per_a2s": i.thermal_constant_m4_per_a2s,
-                "gravity_m_per_s2": i.gravity_m_per_s2,
-                "subconductor_distance_m": i.bundle.map(|b| b.subconductor_distance_m),
-                "spacer_distance_m": i.bundle.map(|b| b.spacer_distance_m),
-                "notes": m.notes,
-            })
-        }
-        Err(e) => serde_json::json!({ "refused": e }),
-    };
-    let iec = match &c.iec {
-        Some(Err(e)) => serde_json::json!({ "refused": e }),
-        Some(Ok(_)) | None => serde_json::Value::Null,
-    };
-    let rows: Vec<serde_json::Value> = c
-        .rows
-        .iter()
-        .map(|r| {
-            serde_json::json!({
-                "quantity": r.quantity, "symbol": r.symbol, "equation": r.equation, "unit": r.unit,
-                "iec": r.iec, "dynamic": r.dynamic, "difference": r.difference(),
-            })
-        })
-        .collect();
-    serde_json::json!({
-        "main": c.main,
-        "iec_input": mapped,
-        "iec_refusal": iec,
-        "rows": rows,
-        "dynamic": c.dynamic,
-    })
 }
