@@ -14,8 +14,8 @@ mod dict_input;
 mod errors;
 mod line;
 mod sagtension;
-mod shortcircuit;
 mod scenario;
+mod shortcircuit;
 mod thermal;
 
 use pyo3::prelude::*;

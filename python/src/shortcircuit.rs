@@ -18,9 +18,8 @@ use crate::errors::input_error;
 pub fn shortcircuit_raw(py: Python<'_>, path: &Bound<'_, PyAny>) -> PyResult<String> {
     let path = crate::args::path("path", path)?;
     let file = path.display().to_string();
-    let s = scenario::read_text(&path)
-        .and_then(|t| scenario::line::parse(&t, &file))
-        .map_err(|e| input_error(py, e))?;
+    let s =
+        scenario::read_text(&path).and_then(|t| scenario::line::parse(&t, &file)).map_err(|e| input_error(py, e))?;
     let plan = scenario::line::plan(&s, &file).map_err(|e| input_error(py, e))?;
     let c = py.detach(|| compare(&s, plan, None)).map_err(|e| match e {
         CompareError::NoShortCircuit => PyValueError::new_err(format!("{file}: {e}")),

@@ -312,7 +312,11 @@ impl ShortCircuitTracker {
 
     /// The summary at the end of the run; `a_min` from the line's clearances (`least` between phases by
     /// name, `[a, b]`, the least distance and its time).
-    pub fn finish(mut self, line: &LineExplicit, clearances: &[([String; 2], f64, f64)]) -> Result<ShortCircuitSummary, OutputError> {
+    pub fn finish(
+        mut self,
+        line: &LineExplicit,
+        clearances: &[([String; 2], f64, f64)],
+    ) -> Result<ShortCircuitSummary, OutputError> {
         if let (Some(f), Some(path)) = (self.file.as_mut(), self.path.as_ref()) {
             f.finish().map_err(OutputError::at(path))?;
         }

@@ -17,8 +17,8 @@ use serde::Deserialize;
 
 use super::line::{LineSpec, RoleSpec};
 use super::range::Range as Allowed;
-use super::validate::MAX_TIME_S;
 use super::validate::Check;
+use super::validate::MAX_TIME_S;
 
 /// The kind of the short circuit.
 #[derive(Clone, Copy, Debug, Deserialize, PartialEq, Eq)]
@@ -239,7 +239,11 @@ impl ShortCircuitSpec {
             match line.conductors.iter().find(|x| &x.name == p) {
                 None => {
                     let names: Vec<&str> = line.conductors.iter().map(|x| x.name.as_str()).collect();
-                    c.fail(&field, format!("{p:?}"), &format!("must name a conductor of the line: {}", names.join(", ")));
+                    c.fail(
+                        &field,
+                        format!("{p:?}"),
+                        &format!("must name a conductor of the line: {}", names.join(", ")),
+                    );
                 }
                 Some(x) if x.role == RoleSpec::EarthWire => {
                     c.fail(&field, format!("{p:?}"), "names an earth wire: the phases must be phase conductors");
@@ -256,7 +260,11 @@ impl ShortCircuitSpec {
                 );
             }
             if self.phases[..j].contains(p) {
-                c.fail(&field, format!("{p:?}"), "names a conductor already named: each phase is a different conductor");
+                c.fail(
+                    &field,
+                    format!("{p:?}"),
+                    "names a conductor already named: each phase is a different conductor",
+                );
             }
         }
     }
@@ -295,7 +303,7 @@ impl ShortCircuitSpec {
         radius_m: &[f64],
         direction: &[[f64; 2]],
     ) -> Result<crate::line::electromagnetic::Electromagnetic, (String, String)> {
-        use crate::line::electromagnetic::{Carrier, EmNumerics, Electromagnetic};
+        use crate::line::electromagnetic::{Carrier, Electromagnetic, EmNumerics};
         use crate::shortcircuit::current::FaultCurrent;
         let current = FaultCurrent::new(self.fault_current_spec())
             .map_err(|e| ("short_circuit".to_string(), format!("the fault current: {e}")))?;

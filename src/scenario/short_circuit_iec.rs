@@ -99,7 +99,8 @@ pub fn map(s: &LineScenario, plan: &LinePlan) -> Result<Mapped, MappingError> {
         let name = sc.phases.get(j).ok_or_else(|| {
             unsupported("short_circuit.phases", format!("{:?}", sc.phases), "the method needs the phases L1 and L2")
         })?;
-        spec_of(name).ok_or_else(|| unsupported(format!("short_circuit.phases[{j}]"), format!("{name:?}"), "not a conductor"))
+        spec_of(name)
+            .ok_or_else(|| unsupported(format!("short_circuit.phases[{j}]"), format!("{name:?}"), "not a conductor"))
     };
     let main_k = phase(0)?;
     let main = &s.line.conductors[main_k];
@@ -114,7 +115,11 @@ pub fn map(s: &LineScenario, plan: &LinePlan) -> Result<Mapped, MappingError> {
     }
     let point = |c: &super::line::LineConductorSpec, j: usize, field: String| match c.section.supports.get(j) {
         Some(SupportSpec::DeadEnd { point_m }) => Ok(*point_m),
-        _ => Err(unsupported(field, "a suspension", "the method's span ends at dead-ends (tension strings or fixed points)")),
+        _ => Err(unsupported(
+            field,
+            "a suspension",
+            "the method's span ends at dead-ends (tension strings or fixed points)",
+        )),
     };
     let (p0, p1) = (point(main, 0, f("section.supports[0]"))?, point(main, 1, f("section.supports[1]"))?);
     let span_m = distance(p0, p1);
@@ -135,7 +140,10 @@ pub fn map(s: &LineScenario, plan: &LinePlan) -> Result<Mapped, MappingError> {
         [] => Mounting::Slack,
         [x, y] => {
             if x.length_m != y.length_m {
-                notes.push(format!("l_i: the two tension strings are {} m and {} m; their mean is taken", x.length_m, y.length_m));
+                notes.push(format!(
+                    "l_i: the two tension strings are {} m and {} m; their mean is taken",
+                    x.length_m, y.length_m
+                ));
             }
             Mounting::Strained { insulator_chain_length_m: 0.5 * (x.length_m + y.length_m) }
         }
@@ -177,14 +185,13 @@ pub fn map(s: &LineScenario, plan: &LinePlan) -> Result<Mapped, MappingError> {
         }
     };
     // The members of the main conductor in the line and their horizontal tensions at t = 0.
-    let group = plan.group_names.iter().position(|g| g == &main.name).ok_or_else(|| {
-        unsupported(f("name"), format!("{:?}", main.name), "not a conductor group of the built line")
-    })?;
+    let group =
+        plan.group_names.iter().position(|g| g == &main.name).ok_or_else(|| {
+            unsupported(f("name"), format!("{:?}", main.name), "not a conductor group of the built line")
+        })?;
     let static_tension_n: f64 =
         plan.groups[group].iter().map(|&m| horizontal_tension_n(&plan.line.conductors()[m])).sum();
-    let spring = |t: &str| {
-        s.line.towers.iter().find(|x| x.name == t).and_then(|x| x.elastic).map(|e| e.along_n_per_m)
-    };
+    let spring = |t: &str| s.line.towers.iter().find(|x| x.name == t).and_then(|x| x.elastic).map(|e| e.along_n_per_m);
     let spring_constant_n_per_m = match sc.spring_constant_n_per_m {
         Some(k) => k,
         None => {

@@ -120,7 +120,14 @@ fn print(name: &str, c: &Comparison) {
     }
     let s = &c.outcome.summary;
     out!("");
-    out!("run: {} at t = {:.4} s after {} steps of {:.4e} s, wall {:.2} s", s.status, s.final_time_s, s.steps, s.dt_s, s.wall_time_s);
+    out!(
+        "run: {} at t = {:.4} s after {} steps of {:.4e} s, wall {:.2} s",
+        s.status,
+        s.final_time_s,
+        s.steps,
+        s.dt_s,
+        s.wall_time_s
+    );
     out!(
         "fault: inception angle {:.2} deg, kappa {:.4}, flow {} s to {} s; EM work {:.4e} J",
         c.dynamic.inception_angle_deg,
