@@ -110,7 +110,8 @@ fn joule_integral_matches_its_closed_form() {
         let tau = 1.0 / (w * rx);
         let e = ((-t / tau).exp() * (-(w * t + a).sin() / tau - w * (w * t + a).cos()) + a.sin() / tau + w * a.cos())
             / (1.0 / (tau * tau) + w * w);
-        2.0 * i * i
+        2.0 * i
+            * i
             * (0.5 * t - ((2.0 * w * t + 2.0 * a).sin() - (2.0 * a).sin()) / (4.0 * w) - 2.0 * a.sin() * e
                 + a.sin().powi(2) * 0.5 * tau * (1.0 - (-2.0 * t / tau).exp()))
     };
@@ -177,7 +178,18 @@ fn reclose_intervals() {
         assert!((a - wa).abs() < 1e-15 && (b - wb).abs() < 1e-15, "{:?}", c.intervals_s());
     }
     assert!((c.end_s() - 1.15).abs() < 1e-15);
-    for (t, on) in [(0.0, false), (0.0999, false), (0.1, true), (0.5999, true), (0.6, false), (0.8, false), (0.9, true), (1.1499, true), (1.15, false), (2.0, false)] {
+    for (t, on) in [
+        (0.0, false),
+        (0.0999, false),
+        (0.1, true),
+        (0.5999, true),
+        (0.6, false),
+        (0.8, false),
+        (0.9, true),
+        (1.1499, true),
+        (1.15, false),
+        (2.0, false),
+    ] {
         assert_eq!(c.is_flowing(t), on, "t {t}");
         if !on {
             assert_eq!(c.phase_currents_a(t), [0.0; 3]);
@@ -219,14 +231,18 @@ fn peak_factor_inverse_and_worst_angles() {
     let i = c.phase_currents_a(0.1 + 1.01)[0];
     assert!((i / (2.0 * SQRT_2 * 31_500.0) - 1.0).abs() < 1e-12, "{i}");
     for bad in [1.02, 1.0, 2.0001, f64::NAN] {
-        assert!(matches!(FaultCurrent::r_over_x_from_peak_factor(bad), Err(CurrentError::Value { field: "kappa", .. })));
+        assert!(matches!(
+            FaultCurrent::r_over_x_from_peak_factor(bad),
+            Err(CurrentError::Value { field: "kappa", .. })
+        ));
     }
 }
 
 /// Every field out of range is a typed error naming it, its value and the allowed range; no NaN passes.
 #[test]
 fn bad_values_are_typed_errors() {
-    let cases: Vec<(&str, Box<dyn Fn(&mut FaultCurrentSpec)>)> = vec![
+    type Set = Box<dyn Fn(&mut FaultCurrentSpec)>;
+    let cases: Vec<(&str, Set)> = vec![
         ("initial_current_a", Box::new(|s| s.initial_current_a = 0.0)),
         ("initial_current_a", Box::new(|s| s.initial_current_a = f64::NAN)),
         ("frequency_hz", Box::new(|s| s.frequency_hz = -50.0)),

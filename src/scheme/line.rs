@@ -36,7 +36,7 @@
 
 use super::electromagnetic::{EmIntersection, EmState};
 use super::explicit::{Explicit, Instability, StepParams};
-use crate::line::electromagnetic::{EmError, Electromagnetic};
+use crate::line::electromagnetic::{Electromagnetic, EmError};
 use crate::line::handle::Endpoint;
 use crate::line::model::{DeadEnd, Link, Model, ModelError, Role};
 use crate::line::support::Support;

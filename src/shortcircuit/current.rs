@@ -59,6 +59,9 @@
 //!   factor 0.75 of equation (19a) for flexible conductors) takes as carrying the largest force;
 //! - line-to-earth: the full offset in L1, `gamma = phi_k - 90 deg`.
 
+// Units in brackets, `[N]`, `[m]`, `[A]`, would otherwise be taken for intra-doc links.
+#![allow(rustdoc::broken_intra_doc_links)]
+
 /// Which phases carry the fault current.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum FaultKind {
