@@ -156,3 +156,42 @@ fn example_8_case_maps_onto_the_tr_input() {
     assert!(near(out.c_f, 1.082, 0.0005 + 0.001), "C_F {}", out.c_f);
     assert_eq!(out.pinch, Some(Pinch::EffectiveClash { force_n: 1.1 * out.f_t_n }));
 }
+
+/// The phases A and B of the small line (40 m, 2 m apart) under a line-to-line fault (`i_A = -i_B`): at the
+/// first level of current flow (the geometry still the initial one, both conductors sagging alike, so 2 m
+/// apart all along)
+/// `short_circuit.csv`'s force per unit length across the line at mid-span is the repulsion of two parallel
+/// filaments, `mu0 i^2 / (2 pi d)` times the finite-length factor `(L/2) / sqrt((L/2)^2 + d^2)` at mid-span
+/// (Biot-Savart of a straight filament of length L). Tolerance 1 %: the sag's curvature and the chord
+/// approximation of the EM mesh (second order, below 1e-3 at these chords: docs/short_circuit.md). The
+/// current columns are the library's `FaultCurrent` at the row's time; the run with files and the run
+/// without give the same `short_circuit` block (outputs never change the trajectory).
+#[test]
+fn short_circuit_csv_holds_the_parallel_force_at_the_first_level_of_flow() {
+    let text = small("kind = \"line_to_line\"\nspring_constant_n_per_m = 3.0e5", "").replace("start_s = 0.0", "start_s = 0.002");
+    let s = line::parse(&text, "small.toml").unwrap();
+    let plan = line::plan(&s, "small.toml").unwrap();
+    let dir = std::env::temp_dir().join(format!("ohl-sc-csv-{}", std::process::id()));
+    let with = ohl::run::line::run_line(plan.clone(), Some(&dir)).unwrap();
+    let without = ohl::run::line::run_line(plan, None).unwrap();
+    assert_eq!(with.summary.short_circuit, without.summary.short_circuit);
+    let csv = std::fs::read_to_string(dir.join("short_circuit.csv")).unwrap();
+    let mut lines = csv.lines();
+    let head: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let col = |name: &str| head.iter().position(|h| *h == name).unwrap();
+    let (t, i1, fa) = (col("t_s"), col("i_l1_a"), col("f_A_across_n_per_m"));
+    let current = ohl::shortcircuit::current::FaultCurrent::new(s.short_circuit.as_ref().unwrap().fault_current_spec())
+        .unwrap();
+    let rows: Vec<Vec<f64>> = lines.map(|l| l.split(',').map(|x| x.parse().unwrap()).collect()).collect();
+    assert!(rows.len() > 10, "a row every level");
+    for r in &rows {
+        assert_eq!(r[i1], current.phase_currents_a(r[t])[0]);
+    }
+    let first = rows.iter().find(|r| r[i1] != 0.0).unwrap();
+    let (i, d, half) = (first[i1], 2.0, 20.0);
+    let expected = 4.0e-7 * std::f64::consts::PI / (2.0 * std::f64::consts::PI) * i * i / d * half
+        / (half * half + d * d).sqrt();
+    // A lies at -x of B: repulsion pushes A towards -x, the across direction of a line along +y is -x.
+    assert!(rel(first[fa], expected) < 1e-2, "f_A {} against {expected} at i = {i} A", first[fa]);
+    let _ = std::fs::remove_dir_all(&dir);
+}
