@@ -168,7 +168,8 @@ fn example_8_case_maps_onto_the_tr_input() {
 /// without give the same `short_circuit` block (outputs never change the trajectory).
 #[test]
 fn short_circuit_csv_holds_the_parallel_force_at_the_first_level_of_flow() {
-    let text = small("kind = \"line_to_line\"\nspring_constant_n_per_m = 3.0e5", "").replace("start_s = 0.0", "start_s = 0.002");
+    let text = small("kind = \"line_to_line\"\nspring_constant_n_per_m = 3.0e5", "")
+        .replace("start_s = 0.0", "start_s = 0.002");
     let s = line::parse(&text, "small.toml").unwrap();
     let plan = line::plan(&s, "small.toml").unwrap();
     let dir = std::env::temp_dir().join(format!("ohl-sc-csv-{}", std::process::id()));
@@ -180,8 +181,8 @@ fn short_circuit_csv_holds_the_parallel_force_at_the_first_level_of_flow() {
     let head: Vec<&str> = lines.next().unwrap().split(',').collect();
     let col = |name: &str| head.iter().position(|h| *h == name).unwrap();
     let (t, i1, fa) = (col("t_s"), col("i_l1_a"), col("f_A_across_n_per_m"));
-    let current = ohl::shortcircuit::current::FaultCurrent::new(s.short_circuit.as_ref().unwrap().fault_current_spec())
-        .unwrap();
+    let current =
+        ohl::shortcircuit::current::FaultCurrent::new(s.short_circuit.as_ref().unwrap().fault_current_spec()).unwrap();
     let rows: Vec<Vec<f64>> = lines.map(|l| l.split(',').map(|x| x.parse().unwrap()).collect()).collect();
     assert!(rows.len() > 10, "a row every level");
     for r in &rows {
@@ -189,8 +190,8 @@ fn short_circuit_csv_holds_the_parallel_force_at_the_first_level_of_flow() {
     }
     let first = rows.iter().find(|r| r[i1] != 0.0).unwrap();
     let (i, d, half) = (first[i1], 2.0, 20.0);
-    let expected = 4.0e-7 * std::f64::consts::PI / (2.0 * std::f64::consts::PI) * i * i / d * half
-        / (half * half + d * d).sqrt();
+    let expected =
+        4.0e-7 * std::f64::consts::PI / (2.0 * std::f64::consts::PI) * i * i / d * half / (half * half + d * d).sqrt();
     // A lies at -x of B: repulsion pushes A towards -x, the across direction of a line along +y is -x.
     assert!(rel(first[fa], expected) < 1e-2, "f_A {} against {expected} at i = {i} A", first[fa]);
     let _ = std::fs::remove_dir_all(&dir);
