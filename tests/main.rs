@@ -29,6 +29,7 @@ mod section_events;
 mod section_step;
 mod section_stringing;
 mod short_circuit_line;
+mod short_circuit_scenario;
 mod statics;
 mod terrain;
 mod thermal_conductor;

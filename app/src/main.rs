@@ -8,6 +8,8 @@
 //! - `ohl thermal CASE.toml` evaluates a conductor's heat balance (steady temperature, ampacity, transient,
 //!   de-icing);
 //! - `ohl rating SCENARIO.toml` rates a span or section by clearance or sag (steady, and after a step);
+//! - `ohl shortcircuit CASE.toml` prints the IEC 60865-1 simplified method's short-circuit forces beside
+//!   those of the dynamic run of the same line (docs/short_circuit.md).
 //! - `ohl sagtension CASE.toml` prints a span's or ruling span's sag-tension table (initial, after creep,
 //!   after load, final) and writes it with a figure of sag against temperature;
 //! - `ohl load-case NAME` prints a code's combined ice-and-wind load case (NESC 250B districts, IEC 60826,
@@ -52,6 +54,9 @@ enum Command {
     /// Sag-tension table of a span or ruling span (initial, after creep, after load, final; knee point,
     /// temperature at a sag limit); writes sagtension.csv, sagtension.json, sag_vs_temperature.png/.svg.
     Sagtension(cli::sagtension::SagTensionArgs),
+    /// Short-circuit forces on a line span with [short_circuit]: the IEC 60865-1 simplified method beside
+    /// the dynamic run; writes the run's files, short_circuit.csv and shortcircuit.json.
+    Shortcircuit(cli::shortcircuit::ShortCircuitArgs),
     /// Print a code's combined ice-and-wind load case as scenario TOML (`list`: the cases).
     LoadCase(cli::load_case::LoadCaseArgs),
     /// Draw a run's time series, support forces and shapes (RUN_DIR/plots/*.png and *.svg).
@@ -69,6 +74,7 @@ fn main() -> ExitCode {
         Command::Thermal(a) => cli::thermal::main(a),
         Command::Rating(a) => cli::rating::main(a),
         Command::Sagtension(a) => cli::sagtension::main(a),
+        Command::Shortcircuit(a) => cli::shortcircuit::main(a),
         Command::LoadCase(a) => cli::load_case::main(a),
         Command::Plot(a) => cli::plot::main(a),
         Command::Sweep(a) => cli::sweep::main(a),

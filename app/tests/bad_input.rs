@@ -251,6 +251,24 @@ const CASES: &[(&str, &[&str])] = &[
         &["line 15, column 13", "field `ground.profile_m`: point [1] has 3 numbers"],
     ),
     ("thermal_case_given_to_run", &["a thermal case", "`ohl thermal`"]),
+    // Issue 25: [short_circuit] of a line scenario.
+    (
+        "short_circuit_unknown_phase",
+        &["field `short_circuit.phases[2]` = \"X\"", "must name a conductor of the line: A, B, C"],
+    ),
+    ("short_circuit_phase_twice", &["field `short_circuit.phases[2]` = \"A\"", "already named"]),
+    (
+        "short_circuit_current_out_of_range",
+        &["field `short_circuit.initial_current_a` = 19000000", "must be in [100, 300000] A"],
+    ),
+    ("short_circuit_kappa_and_r_over_x", &["field `short_circuit.r_over_x` = 0.07", "not both"]),
+    ("short_circuit_peak_factor_above_two", &["field `short_circuit.peak_factor` = 2.5", "(1.02, 2)"]),
+    ("short_circuit_start_after_end", &["field `short_circuit.start_s` = 0.5", "before the end time"]),
+    ("short_circuit_two_phases_for_three_phase", &["field `short_circuit.phases`", "must name 3 conductors"]),
+    (
+        "short_circuit_reclose_negative_dead_time",
+        &["field `short_circuit.reclose.dead_time_s` = -0.3", "must be in [0.05, 600] s"],
+    ),
     ("sagtension_case_given_to_run", &["a sag-tension case", "`ohl sagtension`"]),
 ];
 

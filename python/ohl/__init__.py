@@ -68,6 +68,7 @@ __all__ = [
     "run",
     "run_line",
     "sagtension",
+    "shortcircuit",
     "steady_temperature",
     "transient",
 ]
@@ -491,6 +492,26 @@ def line_equilibrium(
 
 
 # --- sag-tension -------------------------------------------------------------------------------------
+
+
+def shortcircuit(path: Union[str, "os.PathLike[str]"]) -> Dict[str, Any]:
+    """A line scenario with ``[short_circuit]`` by the IEC 60865-1 simplified method and by the dynamic
+    run of the same line, side by side (the numbers of ``ohl shortcircuit``, docs/short_circuit.md);
+    nothing is written.
+
+    Returns the dict of ``shortcircuit.json``: ``main`` (the conductor compared), ``iec_input`` (the
+    standard's input read off the line, or ``{"refused": why}``), ``iec_refusal`` (why the method
+    refused, or ``None``), ``rows`` (one dict per quantity: ``quantity``, ``symbol``, ``equation``,
+    ``unit``, ``iec``, ``dynamic``, ``difference``; ``None`` where a value does not exist) and
+    ``dynamic`` (the run's ``short_circuit`` block of ``summary.json``: F_t, F_f, F_pi per phase and
+    end with their times, b_h, a_min).
+
+    Raises :class:`ScenarioError` for invalid input, ``ValueError`` without ``[short_circuit]`` and
+    ``RuntimeError`` if the run goes unstable.
+    """
+    import json
+
+    return json.loads(_ohl.shortcircuit_raw(path))
 
 
 def sagtension(

@@ -303,6 +303,7 @@ def line_equilibrium(
 
 # --- sag-tension -------------------------------------------------------------------------------------
 
+def shortcircuit(path: Union[str, os.PathLike[str]]) -> Dict[str, Any]: ...
 def sagtension(case: Union[Mapping, str, os.PathLike[str]], *, name: str = "<dict>") -> Dict[str, Any]: ...
 
 # --- thermal -----------------------------------------------------------------------------------------

@@ -15,6 +15,7 @@ mod errors;
 mod line;
 mod sagtension;
 mod scenario;
+mod shortcircuit;
 mod thermal;
 
 use pyo3::prelude::*;
@@ -37,6 +38,7 @@ fn _ohl(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(thermal::deicing, m)?)?;
     m.add_function(wrap_pyfunction!(thermal::deicing_current, m)?)?;
     m.add_function(wrap_pyfunction!(sagtension::sagtension_raw, m)?)?;
+    m.add_function(wrap_pyfunction!(shortcircuit::shortcircuit_raw, m)?)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

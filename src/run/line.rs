@@ -158,6 +158,9 @@ pub struct LineSummary {
     pub events: Vec<LineEventRecord>,
     /// why the run stopped early, if it did: time, conductor, node and reason
     pub instability: Option<String>,
+    /// the short circuit's results ([`super::short_circuit`]); absent without `[short_circuit]`
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub short_circuit: Option<super::short_circuit::ShortCircuitSummary>,
 }
 
 /// What a line run leaves.
@@ -393,6 +396,16 @@ pub fn run_line_observed<'o>(
         }
         None => None,
     };
+    let mut short = match &plan.short_circuit {
+        Some(sc) if line.electromagnetic().is_some() => Some(super::short_circuit::ShortCircuitTracker::new(
+            &line,
+            &sc.phases,
+            &plan.group_names,
+            &plan.groups,
+            out_dir,
+        )?),
+        _ => None,
+    };
     let mut clock = SampleClock::new(plan.sample_interval_s);
     let mut samples = opts.record.then(|| LineSamples {
         pairs: pair_names.clone(),
@@ -425,6 +438,9 @@ pub fn run_line_observed<'o>(
             timelines[c].before_step(line.conductor_mut(c), t);
         }
         line.evaluate_forces();
+        if let Some(sc) = short.as_mut() {
+            sc.observe(&line, t)?;
+        }
         let mut all_settled = true;
         for c in 0..n {
             let level = Level { solver: &line.conductors()[c], t_s: t, tau_per_s: plan.plans[c].tau(1.0) };
@@ -530,6 +546,18 @@ pub fn run_line_observed<'o>(
         cl.finish().map_err(OutputError::at(&d.join("clearances.csv")))?;
         tw.finish().map_err(OutputError::at(&d.join("towers.csv")))?;
     }
+    let short_circuit = match short {
+        Some(sc) => {
+            let least: Vec<([String; 2], f64, f64)> = clearance
+                .least()
+                .iter()
+                .zip(&pair_names)
+                .filter_map(|(l, between)| l.map(|l| (between.clone(), l.closest.distance_m, l.time_s)))
+                .collect();
+            Some(sc.finish(&line, &least)?)
+        }
+        None => None,
+    };
     let wall = started.elapsed().as_secs_f64();
     let nodes: usize = line.conductors().iter().map(|c| c.wire().nodes()).sum();
     let summary = LineSummary {
@@ -627,6 +655,7 @@ pub fn run_line_observed<'o>(
             .collect(),
         events: log,
         instability: failure.as_ref().map(|f| f.to_string()),
+        short_circuit,
     };
     if let Some(d) = out_dir {
         let text = serde_json::to_string_pretty(&summary).expect("the summary serialises") + "\n";

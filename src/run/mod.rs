@@ -12,6 +12,8 @@
 
 pub mod line;
 pub mod settle;
+pub mod short_circuit;
+pub mod shortcircuit_case;
 pub mod start_up;
 
 use std::path::{Path, PathBuf};

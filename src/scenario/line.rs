@@ -87,6 +87,10 @@ pub struct LineScenario {
     /// single-conductor scenario; a conductor's own events are in its `events`
     #[serde(default)]
     pub events: Vec<EventSpec>,
+    /// a short circuit: fault currents in the phases and their electromagnetic forces
+    /// ([`super::short_circuit`]); absent: none
+    #[serde(default)]
+    pub short_circuit: Option<super::short_circuit::ShortCircuitSpec>,
     /// the temperature fields the file gave in degrees Celsius (set by [`parse`], not a key of the file)
     #[serde(skip)]
     pub celsius: super::temperature::Celsius,
@@ -341,6 +345,8 @@ pub struct LinePlan {
     pub sample_interval_s: f64,
     /// the static solve of `[initial] shape = "equilibrium"`, if it was asked for
     pub initial_equilibrium: Option<crate::statics::StaticReport>,
+    /// the short circuit of `[short_circuit]`, validated, if any
+    pub short_circuit: Option<super::short_circuit::ShortCircuitSpec>,
 }
 
 /// Parse a line scenario from TOML text (`file` names it in messages). Each conductor's `conductor`
@@ -567,6 +573,9 @@ fn build_line(s: &LineScenario) -> Result<LinePlan, Vec<Problem>> {
                 plans.push(None);
             }
         }
+    }
+    if let Some(sc) = &s.short_circuit {
+        sc.check(spec, s.duration.end_time_s, &mut c);
     }
     let Check(mut problems) = c;
     problems.extend(nested);
@@ -897,6 +906,29 @@ fn assemble(s: &LineScenario, plans: Vec<Plan>, global_only: Vec<Option<Plan>>) 
     if let Some(w) = step_warning {
         line_plans[0].warnings.push(w);
     }
+    // The short circuit's electromagnetic load, after the initial equilibrium (the currents flow from
+    // `short_circuit.start_s`; without current the step is the one without it).
+    if let Some(sc) = &s.short_circuit {
+        let spec_of = |g: &String| spec.conductors.iter().find(|c| &c.name == g);
+        let radius: Vec<f64> = group_names
+            .iter()
+            .map(|g| spec_of(g).and_then(|c| c.conductor.diameter_m).map_or(f64::NAN, |d| 0.5 * d))
+            .collect();
+        let direction: Vec<[f64; 2]> = group_names
+            .iter()
+            .map(|g| {
+                spec_of(g).map_or([0.0, 1.0], |c| {
+                    let h = towards_span(&c.section, 0);
+                    [h[0], h[1]]
+                })
+            })
+            .collect();
+        let em = sc
+            .electromagnetic(&group_names, &groups, &radius, &direction)
+            .map_err(|(field, why)| problem(field, "(short circuit)".into(), why))?;
+        line.set_electromagnetic(Some(em))
+            .map_err(|e| problem("short_circuit".into(), "(carriers)".into(), e.to_string()))?;
+    }
     Ok(LinePlan {
         name: s.name.clone().unwrap_or_else(|| "line".into()),
         line,
@@ -906,5 +938,6 @@ fn assemble(s: &LineScenario, plans: Vec<Plan>, global_only: Vec<Option<Plan>>) 
         stop: plans[0].stop,
         sample_interval_s: plans[0].sample_interval_s,
         initial_equilibrium,
+        short_circuit: s.short_circuit.clone(),
     })
 }

@@ -15,6 +15,8 @@ pub mod sagtension;
 pub mod sagtension_table;
 pub mod schema;
 pub mod section;
+pub mod short_circuit;
+pub mod short_circuit_iec;
 pub mod temperature;
 pub mod thermal;
 pub mod thermal_conductor;

@@ -37,5 +37,6 @@ pub mod plot;
 pub mod rating;
 pub mod run;
 pub mod sagtension;
+pub mod shortcircuit;
 pub mod sweep;
 pub mod thermal;
