@@ -26,12 +26,19 @@
 //! The lower end is a node fixed at the terminal point (a [`super::DeadEnd`] on a rigid support of its
 //! own, so that the terminal's load is a support resultant), or free.
 //!
-//! Initial shape ([`dropper_nodes`]): with a terminal, the parabola of arc length `S` in the vertical plane
-//! through the chord from the joint to the terminal, sagging perpendicular to the chord (exactly the
-//! parabola `y = 4 f u (1 - u)` over the chord `c`, of length `c/2 sqrt(1 + k^2) + c/(2k) asinh k`, `k = 4
-//! f / c`, the sag `f` found by bisection), nodes equally spaced in arc length; `S = c` is the straight
-//! chord. A free dropper hangs plumb. Neither is at rest: `initial.shape = "equilibrium"` of a line finds
-//! the hanging shape ([`crate::statics::solve_line`]: the joint is a link, already in its Jacobian).
+//! Initial shape ([`dropper_nodes`]): with a terminal, the elastic catenary of unstretched length `S`
+//! between the joint and the terminal under the dropper's weight ([`crate::exact::catenary`], as a
+//! section's spans are strung), node `j` at its Lagrangian coordinate `s = j S / N`; where that has no
+//! solution (no weight), the parabola of arc length `S` in the vertical plane through the chord, sagging
+//! perpendicular to it (`y = 4 f u (1 - u)` over the chord `c`, of length `c/2 sqrt(1 + k^2) + c/(2k) asinh
+//! k`, `k = 4 f / c`, the sag `f` by bisection), nodes equally spaced in arc length. A free dropper hangs
+//! plumb, each segment stretched by the weight below it (`T_j = w l0 (N - j - 1/2)`, its discrete rest
+//! state). The catenary is the continuous rest state of the dropper on a fixed joint: the span's node
+//! moves under the dropper's weight, so `initial.shape = "equilibrium"` of a line finds the hanging shape
+//! of both ([`crate::statics::solve_line`]: the joint is a link, already in its Jacobian). A taut start
+//! matters: from a shape whose segments are all slack (a parabola of the unstretched length) the
+//! regularised Newton iteration of a short stiff dropper (strain 1e-4 between slack and taut) does not
+//! find the tension's switch-on (observed: no progress in 40 iterations on a 6.5 m 243-AL1 dropper).
 
 use super::handle::{Endpoint, NodeRef};
 use super::model::{DeadEnd, LineConductor, Link, LinkKind, Model, ModelError, PointMass};
@@ -67,28 +74,43 @@ pub enum DropperError {
 }
 
 /// The `N + 1` node positions [m] of a dropper of unstretched length `length_m` [m] in `segments` (`N`)
-/// equal segments, from its joint at `top_m` to its terminal `terminal_m` (the parabola of the module doc),
-/// or hanging plumb from `top_m` when `terminal_m` is `None`. Node 0 is the joint (the span conductor's
-/// node); nodes `1..=N` are the dropper wire's.
+/// equal segments, weight `weight_n_per_m` [N/m] per unstretched metre and axial stiffness `ea_n` [N], from
+/// its joint at `top_m` to its terminal `terminal_m` (the elastic catenary of the module doc, or the
+/// parabola without weight), or hanging plumb from `top_m` when `terminal_m` is `None`. Node 0 is the
+/// joint (the span conductor's node); nodes `1..=N` are the dropper wire's.
 pub fn dropper_nodes(
     top_m: [f64; 3],
     terminal_m: Option<[f64; 3]>,
     length_m: f64,
     segments: usize,
+    weight_n_per_m: f64,
+    ea_n: f64,
 ) -> Result<[Vec<f64>; 3], DropperError> {
     if segments < 3 {
         return Err(DropperError::Segments(segments));
     }
     let n = segments;
     let mut x = [vec![0.0; n + 1], vec![0.0; n + 1], vec![0.0; n + 1]];
+    let l0 = length_m / n as f64;
     let Some(b) = terminal_m else {
+        let mut z = top_m[2];
         for i in 0..=n {
             x[0][i] = top_m[0];
             x[1][i] = top_m[1];
-            x[2][i] = top_m[2] - length_m * i as f64 / n as f64;
+            x[2][i] = z;
+            // Segment i carries the weight of the nodes below it: N - i - 1/2 segments' worth.
+            let t = weight_n_per_m * l0 * (n as f64 - i as f64 - 0.5);
+            z -= l0 * (1.0 + t.max(0.0) / ea_n);
         }
         return Ok(x);
     };
+    let taut = crate::exact::catenary::ElasticCatenary::solve(
+        top_m,
+        b,
+        length_m,
+        [0.0, 0.0, -weight_n_per_m],
+        ea_n,
+    );
     let d = [b[0] - top_m[0], b[1] - top_m[1], b[2] - top_m[2]];
     let chord = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
     let horizontal = (d[0] * d[0] + d[1] * d[1]).sqrt();
@@ -99,6 +121,17 @@ pub fn dropper_nodes(
     let slack = length_m > chord * (1.0 + 1e-12);
     if slack && horizontal < 1e-3 * chord {
         return Err(DropperError::Plumb { horizontal_m: horizontal, chord_m: chord });
+    }
+    if let Ok(c) = taut.as_ref()
+        && horizontal >= 1e-3 * chord
+    {
+        for i in 0..=n {
+            let p = c.position(length_m * i as f64 / n as f64);
+            for k in 0..3 {
+                x[k][i] = p[k];
+            }
+        }
+        return Ok(x);
     }
     // Unit chord t, and the unit normal in the vertical plane through the chord pointing down:
     // nrm = (t (t . e3) - e3) / |...|.
@@ -225,14 +258,14 @@ mod tests {
             .collect()
     }
 
-    /// The parabola's nodes are equally spaced in arc length: the chord of an arc of length `l0` and
+    /// Without weight, the parabola's nodes are equally spaced in arc length: the chord of an arc of length `l0` and
     /// curvature at most `kappa` is shorter by at most `l0^3 kappa^2 / 24`; here (sag 1.73 m on a chord of
     /// 5.83 m, `kappa <= 8 f / c^2 = 0.41 /m`, `l0 = 0.175 m`) that is 2.1e-4 of `l0`, so each chord is
     /// within 2.5e-4 of `S / N` and their sum within 2.5e-4 of `S`; a taut dropper is its chord.
     #[test]
     fn nodes_lie_on_a_parabola_of_the_given_length() {
         let (a, b) = ([0.0, 0.0, 10.0], [0.0, 3.0, 5.0]);
-        let x = dropper_nodes(a, Some(b), 7.0, 40).unwrap();
+        let x = dropper_nodes(a, Some(b), 7.0, 40, 0.0, 1e7).unwrap();
         let l = arc_lengths(&x);
         let sum: f64 = l.iter().sum();
         assert!(sum < 7.0 && (sum - 7.0).abs() < 2.5e-4 * 7.0, "{sum}");
@@ -240,16 +273,16 @@ mod tests {
         assert_eq!([x[0][40], x[1][40], x[2][40]], b);
         // The sag is downwards: the middle node is below the chord.
         assert!(x[2][20] < 7.5);
-        let taut = dropper_nodes(a, Some(b), 34.0_f64.sqrt(), 10).unwrap();
+        let taut = dropper_nodes(a, Some(b), 34.0_f64.sqrt(), 10, 0.0, 1e7).unwrap();
         assert!((arc_lengths(&taut).iter().sum::<f64>() - 34.0_f64.sqrt()).abs() < 1e-12);
     }
 
     #[test]
     fn refuses_a_short_or_plumb_slack_dropper() {
         let a = [0.0, 0.0, 10.0];
-        assert!(matches!(dropper_nodes(a, Some([0.0, 3.0, 6.0]), 4.9, 10), Err(DropperError::TooShort { .. })));
-        assert!(matches!(dropper_nodes(a, Some([0.0, 0.0, 5.0]), 6.0, 10), Err(DropperError::Plumb { .. })));
-        assert!(dropper_nodes(a, Some([0.0, 0.0, 5.0]), 5.0, 10).is_ok());
-        assert_eq!(dropper_nodes(a, None, 5.0, 2), Err(DropperError::Segments(2)));
+        assert!(matches!(dropper_nodes(a, Some([0.0, 3.0, 6.0]), 4.9, 10, 6.0, 1e7), Err(DropperError::TooShort { .. })));
+        assert!(matches!(dropper_nodes(a, Some([0.0, 0.0, 5.0]), 6.0, 10, 6.0, 1e7), Err(DropperError::Plumb { .. })));
+        assert!(dropper_nodes(a, Some([0.0, 0.0, 5.0]), 5.0, 10, 6.0, 1e7).is_ok());
+        assert_eq!(dropper_nodes(a, None, 5.0, 2, 6.0, 1e7), Err(DropperError::Segments(2)));
     }
 }
