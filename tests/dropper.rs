@@ -34,7 +34,13 @@ const EA: f64 = 1.334e7;
 const RHO: f64 = 0.6711;
 
 fn loads() -> Loads {
-    Loads { gravity_m_per_s2: G, uniform_load_n_per_m: [0.0; 3], wind: None, wind_scale: 1.0, wind_gate: WindGate::Always }
+    Loads {
+        gravity_m_per_s2: G,
+        uniform_load_n_per_m: [0.0; 3],
+        wind: None,
+        wind_scale: 1.0,
+        wind_gate: WindGate::Always,
+    }
 }
 
 fn conductor() -> Conductor {

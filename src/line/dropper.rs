@@ -51,7 +51,9 @@ use crate::wire::Constraint;
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum DropperError {
     /// the unstretched length is shorter than the distance from the joint to the terminal
-    #[error("the dropper's length {length_m} m is shorter than the distance {chord_m} m from its joint to its terminal")]
+    #[error(
+        "the dropper's length {length_m} m is shorter than the distance {chord_m} m from its joint to its terminal"
+    )]
     TooShort {
         /// the unstretched length [m]
         length_m: f64,
@@ -104,13 +106,7 @@ pub fn dropper_nodes(
         }
         return Ok(x);
     };
-    let taut = crate::exact::catenary::ElasticCatenary::solve(
-        top_m,
-        b,
-        length_m,
-        [0.0, 0.0, -weight_n_per_m],
-        ea_n,
-    );
+    let taut = crate::exact::catenary::ElasticCatenary::solve(top_m, b, length_m, [0.0, 0.0, -weight_n_per_m], ea_n);
     let d = [b[0] - top_m[0], b[1] - top_m[1], b[2] - top_m[2]];
     let chord = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
     let horizontal = (d[0] * d[0] + d[1] * d[1]).sqrt();
@@ -253,9 +249,7 @@ mod tests {
     use super::*;
 
     fn arc_lengths(x: &[Vec<f64>; 3]) -> Vec<f64> {
-        (0..x[0].len() - 1)
-            .map(|i| (0..3).map(|k| (x[k][i + 1] - x[k][i]).powi(2)).sum::<f64>().sqrt())
-            .collect()
+        (0..x[0].len() - 1).map(|i| (0..3).map(|k| (x[k][i + 1] - x[k][i]).powi(2)).sum::<f64>().sqrt()).collect()
     }
 
     /// Without weight, the parabola's nodes are equally spaced in arc length: the chord of an arc of length `l0` and
@@ -280,7 +274,10 @@ mod tests {
     #[test]
     fn refuses_a_short_or_plumb_slack_dropper() {
         let a = [0.0, 0.0, 10.0];
-        assert!(matches!(dropper_nodes(a, Some([0.0, 3.0, 6.0]), 4.9, 10, 6.0, 1e7), Err(DropperError::TooShort { .. })));
+        assert!(matches!(
+            dropper_nodes(a, Some([0.0, 3.0, 6.0]), 4.9, 10, 6.0, 1e7),
+            Err(DropperError::TooShort { .. })
+        ));
         assert!(matches!(dropper_nodes(a, Some([0.0, 0.0, 5.0]), 6.0, 10, 6.0, 1e7), Err(DropperError::Plumb { .. })));
         assert!(dropper_nodes(a, Some([0.0, 0.0, 5.0]), 5.0, 10, 6.0, 1e7).is_ok());
         assert_eq!(dropper_nodes(a, None, 5.0, 2, 6.0, 1e7), Err(DropperError::Segments(2)));

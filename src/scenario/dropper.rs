@@ -80,9 +80,10 @@ pub fn plan(
     if let Some(t) = d.to_m {
         ok &= c.coordinates(&f("dropper.to_m"), t);
     }
-    let Some(a) = joint_m else { return None };
+    let a = joint_m?;
     let at = format!("[{:.3}, {:.3}, {:.3}] m", a[0], a[1], a[2]);
-    let distance = d.to_m.map_or(0.0, |t| ((t[0] - a[0]).powi(2) + (t[1] - a[1]).powi(2) + (t[2] - a[2]).powi(2)).sqrt());
+    let distance =
+        d.to_m.map_or(0.0, |t| ((t[0] - a[0]).powi(2) + (t[1] - a[1]).powi(2) + (t[2] - a[2]).powi(2)).sqrt());
     let length_ok = d.length_m.is_finite() && d.length_m > 0.0 && d.length_m <= 1000.0;
     if !length_ok || (d.to_m.is_some() && d.length_m < distance * (1.0 - 1e-12)) {
         let allowed = match d.to_m {

@@ -619,7 +619,11 @@ fn dropper_checks(
     ];
     for (name, given) in not {
         if given {
-            c.fail(&f(name), "(given)", "a dropper has none: it hangs from its `dropper.from` conductor (docs/line.md)");
+            c.fail(
+                &f(name),
+                "(given)",
+                "a dropper has none: it hangs from its `dropper.from` conductor (docs/line.md)",
+            );
         }
     }
     if let Some(p) = super::dropper::check_from(&s.line.conductors, k) {
@@ -679,7 +683,11 @@ fn assemble(s: &LineScenario, plans: Vec<Plan>, global_only: Vec<Option<Plan>>) 
                 own.events = later;
                 for e in now {
                     if e.action.apply_ice(&mut wire) == Some(false) {
-                        return Err(problem(f("events"), "ice at t = 0".into(), "leaves a segment without mass".into()));
+                        return Err(problem(
+                            f("events"),
+                            "ice at t = 0".into(),
+                            "leaves a segment without mass".into(),
+                        ));
                     }
                 }
             }

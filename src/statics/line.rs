@@ -51,9 +51,8 @@ pub fn solve_line(line: &mut LineExplicit, opts: &StaticOptions) -> Result<Stati
     let wires: Vec<[Vec<f64>; 3]> = line.conductors().iter().map(|c| c.wire().x.clone()).collect();
     let supports: Vec<[f64; 3]> = (0..line.supports().count()).map(|s| line.support_position_m(s)).collect();
     let first = solve_line_once(line, opts);
-    let tension_only: Vec<usize> = (0..line.conductors().len())
-        .filter(|&c| line.conductors()[c].wire().law == LawKind::TensionOnly)
-        .collect();
+    let tension_only: Vec<usize> =
+        (0..line.conductors().len()).filter(|&c| line.conductors()[c].wire().law == LawKind::TensionOnly).collect();
     let Err(StaticError::NotConverged { .. }) = first else { return first };
     if tension_only.is_empty() {
         return first;
