@@ -1,7 +1,7 @@
 //! `docs/line.md`'s table of the `[line]` scenario fields is the schema: for every table of a line
 //! scenario that the page documents (`line`, `line.towers[]`, `line.towers[].elastic`,
 //! `line.conductors[]`, `line.conductors[].tension_strings[]`, `line.conductors[].bundle`,
-//! `line.conductors[].bundle.spacers[]`, `initial`, and the top level), the fields the page lists are exactly those the parser accepts. The accepted fields
+//! `line.conductors[].bundle.spacers[]`, `line.conductors[].dropper`, `initial`, and the top level), the fields the page lists are exactly those the parser accepts. The accepted fields
 //! come from the parser itself: a probe key added to the table makes serde (`deny_unknown_fields`) list
 //! every field it accepts. Fields of the single-conductor tables (`conductor`, `section`, `events`, and
 //! the top-level `loads`, `numerics`, `duration`, `output`, `ground`, `name`, `description`) are
@@ -30,6 +30,16 @@ tension_strings = [{ support = 2, length_m = 3.0, mass_kg = 60.0, stiffness_n = 
 sub_conductors = 2
 diameter_m = 0.4
 spacers = [{ span = 0, at_fraction = 0.5 }]
+[[line.conductors]]
+name = "B"
+conductor = { axial_stiffness_n = 2.9e7, linear_density_kg_per_m = 1.628 }
+section = { horizontal_tension_n = 28000.0, segments_per_span = 8, supports = [
+  { kind = "dead_end", point_m = [10.0, 0.0, 26.5] },
+  { kind = "dead_end", point_m = [10.0, 400.0, 26.5] } ] }
+[[line.conductors]]
+name = "D"
+conductor = { axial_stiffness_n = 2.9e7, linear_density_kg_per_m = 1.628 }
+dropper = { from = "B", span = 0, at_fraction = 0.5, length_m = 12.0, segments = 4, to_m = [13.0, 200.0, 5.0] }
 [initial]
 shape = "strung"
 [duration]
@@ -71,28 +81,41 @@ fn split(path: &str) -> (String, String) {
     }
 }
 
-/// The table at `path` (`line.conductors[].bundle`) of the document, the first element of each array.
-fn table_at<'a>(doc: &'a mut toml::Table, path: &str) -> &'a mut toml::Table {
+/// The table at `path` (`line.conductors[].bundle`) of the document, and its path as the file writes it
+/// (`line.conductors[0].bundle`): of each array, the first element that has the path's next key (the
+/// first element if none has, or the path ends there).
+fn table_at<'a>(doc: &'a mut toml::Table, path: &str) -> (&'a mut toml::Table, String) {
+    let keys: Vec<&str> = path.split('.').filter(|k| !k.is_empty()).map(|k| k.trim_end_matches("[]")).collect();
     let mut t = doc;
-    for key in path.split('.').filter(|k| !k.is_empty()) {
-        let name = key.trim_end_matches("[]");
-        let v = t.get_mut(name).unwrap_or_else(|| panic!("no {name} in the full example"));
+    let mut written = Vec::new();
+    for (i, name) in keys.iter().enumerate() {
+        let v = t.get_mut(*name).unwrap_or_else(|| panic!("no {name} in the full example"));
         t = match v {
-            toml::Value::Table(x) => x,
-            toml::Value::Array(a) => match &mut a[0] {
-                toml::Value::Table(x) => x,
-                other => panic!("{name}: {other:?}"),
-            },
+            toml::Value::Table(x) => {
+                written.push(name.to_string());
+                x
+            }
+            toml::Value::Array(a) => {
+                let next = keys.get(i + 1);
+                let k = next
+                    .and_then(|n| a.iter().position(|e| e.as_table().is_some_and(|x| x.contains_key(*n))))
+                    .unwrap_or(0);
+                written.push(format!("{name}[{k}]"));
+                match &mut a[k] {
+                    toml::Value::Table(x) => x,
+                    other => panic!("{name}: {other:?}"),
+                }
+            }
             other => panic!("{name}: {other:?}"),
         };
     }
-    t
+    (t, written.join("."))
 }
 
 /// The fields serde accepts at `path`: the list in its error for an unknown key.
 fn accepted(path: &str) -> BTreeSet<String> {
     let mut doc: toml::Table = FULL.parse().unwrap();
-    table_at(&mut doc, path).insert("zz_probe".into(), toml::Value::Integer(1));
+    table_at(&mut doc, path).0.insert("zz_probe".into(), toml::Value::Integer(1));
     let text = toml::to_string(&doc).unwrap();
     let err = match ohl::scenario::line::parse(&text, "probe") {
         Err(e) => e.to_string(),
@@ -134,6 +157,7 @@ fn the_line_reference_is_the_schema() {
         "line.conductors[]",
         "line.conductors[].tension_strings[]",
         "line.conductors[].bundle",
+        "line.conductors[].dropper",
         "initial",
     ] {
         assert!(tables.contains_key(t), "docs/line.md documents no field of {t}");
@@ -164,13 +188,13 @@ fn every_documented_line_range_is_the_validators() {
         let Some((expected, _)) = leading_interval(rest) else { continue };
         let (table, name) = split(&path);
         let mut doc: toml::Table = FULL.parse().unwrap();
-        let t = table_at(&mut doc, &table);
+        let (t, written) = table_at(&mut doc, &table);
         let bad = match t.get(&name) {
             Some(toml::Value::Integer(_)) => toml::Value::Integer(expected.1 as i64 - 1),
             _ => toml::Value::Float(f64::NAN),
         };
         t.insert(name.clone(), bad.clone());
-        let field = path.replace("[]", "[0]");
+        let field = if written.is_empty() { name.clone() } else { format!("{written}.{name}") };
         let text = toml::to_string(&doc).unwrap();
         // The line's own tables are validated by `plan`.
         let planned = ohl::scenario::line::parse(&text, "full").and_then(|sc| ohl::scenario::line::plan(&sc, "full"));

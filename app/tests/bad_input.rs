@@ -270,6 +270,20 @@ const CASES: &[(&str, &[&str])] = &[
         &["field `short_circuit.reclose.dead_time_s` = -0.3", "must be in [0.05, 600] s"],
     ),
     ("sagtension_case_given_to_run", &["a sag-tension case", "`ohl sagtension`"]),
+    // Droppers (docs/line.md).
+    (
+        "dropper_from_unknown_conductor",
+        &["field `line.conductors[1].dropper.from` = \"bus\"", "listed before this one"],
+    ),
+    ("dropper_fraction_outside_the_span", &["field `line.conductors[1].dropper.at_fraction` = 1.2", "(0, 1)"]),
+    (
+        "dropper_shorter_than_its_chord",
+        &["field `line.conductors[1].dropper.length_m` = 3", "must be in [3.8989, 1000] m", "at least the distance"],
+    ),
+    (
+        "dropper_slack_and_plumb",
+        &["field `line.conductors[1].dropper.to_m` = [0.0, 7.5, 5.0]", "plumb below the joint", "offset the terminal"],
+    ),
 ];
 
 /// Cases for `ohl thermal` (file stem, message substrings; exit code 2).

@@ -5,7 +5,8 @@
 //! top or crossarm, rigid or elastic, shared by every attachment on it) and attachments ([`Link`]: an axial
 //! spring-damper, [`crate::element::link`], between two ends named by handle, [`Endpoint`]: a conductor
 //! node ([`NodeRef`]) or a point of a support). Suspension strings, tension (dead-end) strings, spacer
-//! arms and interphase spacers are all links; a conductor node fixed on a rigid support is a [`DeadEnd`].
+//! arms, interphase spacers and the joints of droppers ([`dropper`]: a conductor hanging from another's node)
+//! are all links; a conductor node fixed on a rigid support is a [`DeadEnd`].
 //! Topology is data, not array offsets: adding an element between two conductors adds a link (or, for a
 //! distributed pair force, a pair element over two conductors' segments, [`crate::element::pair`]).
 //!
@@ -23,6 +24,7 @@
 pub mod build;
 pub mod clearance;
 pub mod dof;
+pub mod dropper;
 pub mod electromagnetic;
 pub mod handle;
 pub mod model;

@@ -58,6 +58,9 @@ pub enum LinkKind {
     Spacer,
     /// an interphase spacer between two phases (pushes and pulls)
     InterphaseSpacer,
+    /// the joint of a dropper: its first segment, from the span conductor's node (end `a`) to the dropper
+    /// wire's first node (end `b`), with the dropper's segment law ([`super::dropper`])
+    Clamp,
 }
 
 /// An attachment: an axial link ([`LinkLaw`]) between two ends.

@@ -413,7 +413,13 @@ pub fn run_line_observed<'o>(
         ..LineSamples::default()
     });
     // The largest tension magnitude of each link kind: (link, tension, time).
-    let kinds = [LinkKind::SuspensionString, LinkKind::TensionString, LinkKind::Spacer, LinkKind::InterphaseSpacer];
+    let kinds = [
+        LinkKind::SuspensionString,
+        LinkKind::TensionString,
+        LinkKind::Spacer,
+        LinkKind::InterphaseSpacer,
+        LinkKind::Clamp,
+    ];
     let mut link_peak: Vec<Option<(usize, f64, f64)>> = vec![None; kinds.len()];
     let mut tower_peak: Vec<([f64; 3], f64, f64)> = vec![([0.0; 3], 0.0, 0.0); towers.len()];
     let mut initial_clearance: Vec<Option<f64>> = Vec::new();
@@ -643,6 +649,7 @@ pub fn run_line_observed<'o>(
                         LinkKind::TensionString => "tension_string",
                         LinkKind::Spacer => "spacer",
                         LinkKind::InterphaseSpacer => "interphase_spacer",
+                        LinkKind::Clamp => "dropper_clamp",
                     }
                     .into(),
                     count: line.links().iter().filter(|x| x.kind == *kind).count(),

@@ -193,8 +193,13 @@ pub struct LineConductorSpec {
     pub role: RoleSpec,
     /// the conductor, as `[conductor]` of a single-conductor scenario
     pub conductor: ConductorSpec,
-    /// its section, as `[section]` of a single-conductor scenario
+    /// its section, as `[section]` of a single-conductor scenario (none for a dropper)
+    #[serde(default = "super::dropper::no_section")]
     pub section: SectionSpec,
+    /// a dropper hanging from a node of another conductor ([`super::dropper`]); absent: a conductor
+    /// strung as its section
+    #[serde(default)]
+    pub dropper: Option<super::dropper::DropperToml>,
     /// for each support of the section, the tower that holds it (`""`: a support of its own); empty:
     /// every support its own
     #[serde(default)]
@@ -464,6 +469,11 @@ fn build_line(s: &LineScenario) -> Result<LinePlan, Vec<Problem>> {
         if cd.name.is_empty() || spec.conductors[..k].iter().any(|o| o.name == cd.name) {
             c.fail(&f("name"), format!("{:?}", cd.name), "must be a non-empty name, unique among the conductors");
         }
+        if let Some(d) = &cd.dropper {
+            let p = dropper_checks(&mut c, s, k, d, &plans);
+            plans.push(p);
+            continue;
+        }
         let n_sup = cd.section.supports.len();
         if !cd.towers.is_empty() && cd.towers.len() != n_sup {
             c.fail(
@@ -598,6 +608,47 @@ fn build_line(s: &LineScenario) -> Result<LinePlan, Vec<Problem>> {
     assemble(s, plans, global_only)
 }
 
+/// The checks of a dropper conductor `k` (its fields and those it may not have) and its plan
+/// ([`super::dropper`]); `plans` holds the plans of the conductors before it.
+fn dropper_checks(
+    c: &mut Check,
+    s: &LineScenario,
+    k: usize,
+    d: &super::dropper::DropperToml,
+    plans: &[Option<Plan>],
+) -> Option<Plan> {
+    let cd = &s.line.conductors[k];
+    let f = |name: &str| format!("line.conductors[{k}].{name}");
+    let not = [
+        ("section", !cd.section.supports.is_empty() || !cd.section.spans.is_empty()),
+        ("towers", !cd.towers.is_empty()),
+        ("tension_strings", !cd.tension_strings.is_empty()),
+        ("bundle", cd.bundle.is_some()),
+        ("events_on", !cd.events_on.is_empty()),
+    ];
+    for (name, given) in not {
+        if given {
+            c.fail(
+                &f(name),
+                "(given)",
+                "a dropper has none: it hangs from its `dropper.from` conductor (docs/line.md)",
+            );
+        }
+    }
+    if let Some(p) = super::dropper::check_from(&s.line.conductors, k) {
+        c.0.push(p);
+        return None;
+    }
+    let j = s.line.conductors[..k].iter().position(|o| o.name == d.from)?;
+    let joint = plans[j].as_ref().and_then(|p| {
+        let node = super::dropper::joint_node(&p.spans, d.span, d.at_fraction)?;
+        (d.at_fraction > 0.0 && d.at_fraction < 1.0).then(|| p.solver.wire().position(node))
+    });
+    let plan = super::dropper::plan(c, &f, d, joint, single(s, cd));
+    // A plan only if the conductor it hangs from has one (its problems are its own).
+    plan.filter(|_| plans[j].is_some())
+}
+
 /// Join the conductors' plans into the line's model and solver.
 fn assemble(s: &LineScenario, plans: Vec<Plan>, global_only: Vec<Option<Plan>>) -> Result<LinePlan, Vec<Problem>> {
     let spec = &s.line;
@@ -621,11 +672,57 @@ fn assemble(s: &LineScenario, plans: Vec<Plan>, global_only: Vec<Option<Plan>>) 
     }
     let tower_index = |name: &str| spec.towers.iter().position(|t| t.name == name);
     let mut line_plans = Vec::new();
-    let (mut groups, mut group_names) = (Vec::new(), Vec::new());
+    let (mut groups, mut group_names): (Vec<Vec<usize>>, Vec<String>) = (Vec::new(), Vec::new());
     let mut bundles = 0;
     let mut names_seen: Vec<String> = Vec::new();
+    // The model's conductors of each of the file's conductors, and each one's clearance group.
+    let mut members_of: Vec<Vec<usize>> = Vec::new();
+    let mut group_of: Vec<usize> = Vec::new();
     for (k, (c, plan)) in spec.conductors.iter().zip(&plans).enumerate() {
         let f = |name: &str| format!("line.conductors[{k}].{name}");
+        if let Some(d) = &c.dropper {
+            let j = spec.conductors[..k].iter().position(|o| o.name == d.from).expect("validated: dropper.from");
+            let master = members_of[j][0];
+            let node = super::dropper::joint_node(&plans[j].spans, d.span, d.at_fraction).expect("validated");
+            let mut own = plan.clone();
+            let mut wire = plan.solver.wire().clone();
+            if s.initial.shape == LineShapeSpec::Equilibrium {
+                let (now, later): (Vec<_>, Vec<_>) =
+                    std::mem::take(&mut own.events).into_iter().partition(|e| e.time_s == 0.0 && e.action.is_ice());
+                own.events = later;
+                for e in now {
+                    if e.action.apply_ice(&mut wire) == Some(false) {
+                        return Err(problem(
+                            f("events"),
+                            "ice at t = 0".into(),
+                            "leaves a segment without mass".into(),
+                        ));
+                    }
+                }
+            }
+            let slug = crate::run::line::slug(&c.name);
+            if names_seen.contains(&slug) {
+                return Err(problem(
+                    f("name"),
+                    format!("{:?}", c.name),
+                    format!(
+                        "its outputs would go where another conductor's go (conductors/{slug}/): choose another name"
+                    ),
+                ));
+            }
+            names_seen.push(slug);
+            let role = model.conductors[master].role;
+            let conductor = LineConductor { name: c.name.clone(), role, wire, loads: *plan.solver.loads() };
+            let top = Endpoint::Node(NodeRef::new(master, node));
+            let (index, _) = crate::line::dropper::add_dropper(&mut model, conductor, top, d.to_m.is_some())
+                .map_err(|e| problem(f("dropper"), "(model)".into(), e.to_string()))?;
+            line_plans.push(own);
+            members_of.push(vec![index]);
+            // A dropper is part of its span conductor's phase: its clearance is the phase's.
+            groups[group_of[j]].push(index);
+            group_of.push(group_of[j]);
+            continue;
+        }
         let base = plan.solver.wire().clone();
         // A bundle member on a crossarm of its own would carry a crossarm per sub-conductor, its spring
         // preloaded by the member's offset: the elasticity of a bundle's support belongs to a tower.
@@ -830,6 +927,8 @@ fn assemble(s: &LineScenario, plans: Vec<Plan>, global_only: Vec<Option<Plan>>) 
                 crate::line::build::add_spacer(&mut model, &members, &offsets, node, arm, b.spacer_mass_kg);
             }
         }
+        members_of.push(members.clone());
+        group_of.push(groups.len());
         groups.push(members);
         group_names.push(c.name.clone());
     }

@@ -6,6 +6,7 @@
 //! run is refused.
 
 pub mod build;
+pub mod dropper;
 pub mod events;
 pub mod line;
 pub mod locate;

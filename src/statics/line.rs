@@ -23,6 +23,7 @@ use super::jacobian::{pattern, values};
 use super::line_jacobian::{link_block, support_block};
 use super::newton::{Equations, Scales, StaticError, StaticOptions, StaticReport, iterate, load_scales};
 use crate::element::LinkLaw;
+use crate::element::tension::LawKind;
 use crate::line::dof::DofMap;
 use crate::line::handle::Endpoint;
 use crate::scheme::WindGate;
@@ -36,8 +37,46 @@ use faer::sparse::Pair;
 /// supports. Refused (an error, never a panic): the downwind gate, ground contact, a conductor's own
 /// elastic crossarm (use an elastic support of the line), a conductor with a broken segment, a conductor
 /// that neither a fixed node nor a link holds.
+///
+/// A taut start for short, stiff, lightly loaded conductors (a dropper: strain 1e-6 between slack and
+/// taut, below the polygon's own chord shortening, so every segment of a strung start is slack): where
+/// the iteration does not converge, it is started again from the same state with every tension-only
+/// conductor's law made linear (compression allowed, so the residual is smooth and Newton converges at
+/// its quadratic rate to the hanging shape, whose segments are all taut), then continued with the
+/// tension-only law from there (the same equations at a state where they coincide). A line that
+/// converged before takes the first path only, bit for bit as before. The report is the last solve's,
+/// with the iterations of both.
 pub fn solve_line(line: &mut LineExplicit, opts: &StaticOptions) -> Result<StaticReport, StaticError> {
     check_supported(line)?;
+    let wires: Vec<[Vec<f64>; 3]> = line.conductors().iter().map(|c| c.wire().x.clone()).collect();
+    let supports: Vec<[f64; 3]> = (0..line.supports().count()).map(|s| line.support_position_m(s)).collect();
+    let first = solve_line_once(line, opts);
+    let tension_only: Vec<usize> =
+        (0..line.conductors().len()).filter(|&c| line.conductors()[c].wire().law == LawKind::TensionOnly).collect();
+    let Err(StaticError::NotConverged { .. }) = first else { return first };
+    if tension_only.is_empty() {
+        return first;
+    }
+    for (c, x) in wires.into_iter().enumerate() {
+        line.conductor_mut(c).wire_mut().x = x;
+    }
+    for (s, p) in supports.into_iter().enumerate() {
+        line.set_support_position(s, p);
+    }
+    for &c in &tension_only {
+        line.conductor_mut(c).wire_mut().law = LawKind::Linear;
+    }
+    let linear = solve_line_once(line, opts);
+    for &c in &tension_only {
+        line.conductor_mut(c).wire_mut().law = LawKind::TensionOnly;
+    }
+    let linear = linear?;
+    let mut report = solve_line_once(line, opts)?;
+    report.iterations += linear.iterations;
+    Ok(report)
+}
+
+fn solve_line_once(line: &mut LineExplicit, opts: &StaticOptions) -> Result<StaticReport, StaticError> {
     line.stop();
     let dofs = line_dofs(line);
     let pat = line_pattern(line, &dofs);
