@@ -22,6 +22,7 @@
 
 pub mod build;
 pub mod clearance;
+pub mod contact;
 pub mod dof;
 pub mod electromagnetic;
 pub mod handle;
