@@ -7,6 +7,7 @@
 mod catenary_sag;
 mod common;
 mod conductor_catalog;
+mod conductor_contact;
 mod dropper;
 mod em_force;
 mod energy;

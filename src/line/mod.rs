@@ -23,6 +23,7 @@
 
 pub mod build;
 pub mod clearance;
+pub mod contact;
 pub mod dof;
 pub mod dropper;
 pub mod electromagnetic;

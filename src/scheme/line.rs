@@ -34,8 +34,10 @@
 //! [`crate::wire::insulator::clamp_stable_step_s`]; links and point masses can only lower it.
 //! [`LineExplicit::new`] refuses a step above it, naming the node.
 
+use super::conductor_contact::ContactState;
 use super::electromagnetic::{EmIntersection, EmState};
 use super::explicit::{Explicit, Instability, StepParams};
+use crate::line::contact::{ConductorContact, ContactError};
 use crate::line::electromagnetic::{Electromagnetic, EmError};
 use crate::line::handle::Endpoint;
 use crate::line::model::{DeadEnd, Link, Model, ModelError, Role};
@@ -126,6 +128,8 @@ pub struct LineExplicit {
     support_load: Vec<[f64; 3]>,
     /// the electromagnetic load of a short circuit, if any ([`LineExplicit::set_electromagnetic`])
     em: Option<EmState>,
+    /// contact between conductors, if set ([`LineExplicit::set_contact`])
+    contact: Option<ContactState>,
 }
 
 impl LineExplicit {
@@ -171,6 +175,7 @@ impl LineExplicit {
             points: vec![Vec::new(); n],
             support_load: vec![[0.0; 3]; model.supports.len()],
             em: None,
+            contact: None,
         })
     }
 
@@ -243,6 +248,24 @@ impl LineExplicit {
         Ok(())
     }
 
+    /// Set (or remove) the contact between conductors ([`crate::line::contact`], evaluated by
+    /// [`crate::scheme::conductor_contact`]) from the next evaluated level on, its penalty scaled to the
+    /// line's nominal step. Refuses pairs that do not fit the line. Without it (the default) nothing is
+    /// evaluated and the step is bitwise the one without it.
+    pub fn set_contact(&mut self, contact: Option<ConductorContact>) -> Result<(), ContactError> {
+        if let Some(c) = &contact {
+            c.check(self.conductors.len())?;
+        }
+        self.contact = contact.map(|c| ContactState::new(c, &self.conductors, self.params.dt_s));
+        self.fresh = false;
+        Ok(())
+    }
+
+    /// The contact between conductors and its state (energy, nodes touching, the first contact), if set.
+    pub fn contact(&self) -> Option<&ContactState> {
+        self.contact.as_ref()
+    }
+
     /// The electromagnetic load, if any.
     pub fn electromagnetic(&self) -> Option<&Electromagnetic> {
         self.em.as_ref().map(|e| e.load())
@@ -303,6 +326,9 @@ impl LineExplicit {
                     }
                 }
             }
+        }
+        if let Some(ct) = &mut self.contact {
+            ct.evaluate(&self.conductors, self.time_s, &mut self.points);
         }
         for (c, p) in self.conductors.iter_mut().zip(&self.points) {
             if !(p.is_empty() && c.point_forces().is_empty()) {
@@ -466,6 +492,9 @@ impl LineExplicit {
             let (rb, _) = self.endpoint_state(&link.b);
             let d = sub(rb, ra);
             e.elastic_j += link.law.energy_j((d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt());
+        }
+        if let Some(ct) = &self.contact {
+            e.elastic_j += ct.energy_j();
         }
         let half = 0.5 * self.dt_prev;
         for (s, load) in self.supports.iter().zip(&self.support_load) {

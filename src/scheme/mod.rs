@@ -1,6 +1,7 @@
 //! Numerical schemes: the explicit staggered-grid leapfrog (3.1), (3.6) with velocity smoothing (3.3)
 //! and the Courant time step (3.7).
 
+pub mod conductor_contact;
 pub mod configs;
 pub mod contact;
 pub mod courant;

@@ -1,0 +1,131 @@
+//! Contact between conductors of a line: sub-conductors of a bundle that clash under the pinch of a short
+//! circuit, phases that swing into each other ([`crate::scheme::conductor_contact`] evaluates it).
+//!
+//! # Model
+//!
+//! Two conductors `A` and `B` of radii `r_A`, `r_B` touch where their axes come closer than the gap
+//! `g = r_A + r_B`. The contact is a penalty: a node `i` of `A` (rest length `l_i`, half of each adjacent
+//! segment) at the distance `d_i` from the nearest point `q(u)` of a segment of `B` penetrates by
+//! `delta_i = g - d_i > 0` and is pushed along the normal `n = (x_i - q) / d_i` by
+//!
+//! ```text
+//! F_i = max(0, k' l_i delta_i / 2 - c' l_i (v_i - v_q) . n / 2) n,      on B: -F_i at q, split (1 - u, u)
+//! ```
+//!
+//! and likewise every node of `B` against the segments of `A` (each direction carries half the stiffness,
+//! so that two parallel conductors in contact along a length `L` press with `k' delta` per unit length).
+//! No friction; no adhesion (the force never pulls).
+//!
+//! `k'` [N/m^2] and `c'` [N s/m^2] follow from the time step `dt` of the line and the pair's reduced linear
+//! mass `mu = mu_A mu_B / (mu_A + mu_B)`: `k' = mu (w_c)^2` with `w_c dt = stiffness_dt` (default 0.25),
+//! `c' = 2 zeta sqrt(k' mu)` with `zeta = -ln e / sqrt(pi^2 + ln^2 e)` the damping ratio of the restitution
+//! coefficient `e` of a linear spring-dashpot (default 0.5). The penalty stiffness grows as `dt^-2`, so
+//! the penetration under a given force falls as `dt^2`, the order of the scheme; its frequency `w_c` adds
+//! `w_c^2 dt^2 / 4 = 0.016` and its damping `zeta w_c dt = 0.05` to the leapfrog's stability sum `W dt^2 / 4
+//! + D dt / 2 <= 1` ([`crate::scheme::line`]), which a line at Courant number 0.9 has to spare. The
+//! restitution of clashing stranded conductors is not a published value: 0.5 is an assumption; the
+//! contact forces (and the pinch tension of an effective clash) depend on it, and the case's output names
+//! it.
+//!
+//! A crossing at an angle steeper than about `atan(g / l)` (`l` the segment length) can be missed, since
+//! only nodes are tested: conductors that run side by side (sub-conductors, phases of one span) meet
+//! node against segment.
+
+// Units in brackets would otherwise be taken for intra-doc links.
+#![allow(rustdoc::broken_intra_doc_links)]
+
+/// A pair of conductors that may touch.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ContactPair {
+    /// the first conductor's index in the line model
+    pub a: usize,
+    /// the second conductor's index
+    pub b: usize,
+    /// the distance between the axes at which they touch, `r_A + r_B` [m], > 0
+    pub gap_m: f64,
+}
+
+/// Contact between conductors of a line ([module doc](self)).
+#[derive(Clone, Debug, PartialEq)]
+pub struct ConductorContact {
+    /// the pairs that may touch
+    pub pairs: Vec<ContactPair>,
+    /// coefficient of restitution `e` of a clash, in (0, 1] [-]; default 0.5 (an assumption, module doc)
+    pub restitution: f64,
+    /// penalty frequency times the line's time step, `w_c dt`, in (0, 0.5] [-]; default 0.25
+    pub stiffness_dt: f64,
+}
+
+impl Default for ConductorContact {
+    fn default() -> Self {
+        ConductorContact { pairs: Vec::new(), restitution: 0.5, stiffness_dt: 0.25 }
+    }
+}
+
+/// A contact that does not fit the line.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum ContactError {
+    /// a pair names a conductor that does not exist, or one conductor twice
+    #[error("contact pair {pair}: {detail}")]
+    Pair {
+        /// index of the pair
+        pair: usize,
+        /// what is wrong
+        detail: String,
+    },
+    /// a value outside its range
+    #[error("{what} = {value} must be {allowed}")]
+    Value {
+        /// which value
+        what: String,
+        /// the value
+        value: f64,
+        /// the allowed range
+        allowed: &'static str,
+    },
+}
+
+impl ConductorContact {
+    /// The damping ratio `zeta = -ln e / sqrt(pi^2 + ln^2 e)` of the restitution coefficient [-].
+    pub fn damping_ratio(&self) -> f64 {
+        let l = self.restitution.ln();
+        -l / (std::f64::consts::PI * std::f64::consts::PI + l * l).sqrt()
+    }
+
+    /// Check the pairs against a line of `conductors` conductors and the values against their ranges.
+    pub fn check(&self, conductors: usize) -> Result<(), ContactError> {
+        if !(self.restitution > 0.0 && self.restitution <= 1.0) {
+            return Err(ContactError::Value {
+                what: "restitution".into(),
+                value: self.restitution,
+                allowed: "in (0, 1]",
+            });
+        }
+        if !(self.stiffness_dt > 0.0 && self.stiffness_dt <= 0.5) {
+            return Err(ContactError::Value {
+                what: "stiffness_dt".into(),
+                value: self.stiffness_dt,
+                allowed: "in (0, 0.5]",
+            });
+        }
+        for (k, p) in self.pairs.iter().enumerate() {
+            if p.a >= conductors || p.b >= conductors {
+                return Err(ContactError::Pair {
+                    pair: k,
+                    detail: format!("conductor {} or {} does not exist ({conductors} conductors)", p.a, p.b),
+                });
+            }
+            if p.a == p.b {
+                return Err(ContactError::Pair { pair: k, detail: format!("conductor {} with itself", p.a) });
+            }
+            if !(p.gap_m.is_finite() && p.gap_m > 0.0) {
+                return Err(ContactError::Value {
+                    what: format!("pairs[{k}].gap_m"),
+                    value: p.gap_m,
+                    allowed: "a finite number > 0",
+                });
+            }
+        }
+        Ok(())
+    }
+}
