@@ -83,8 +83,10 @@ fn clamped_restitution(zeta: f64) -> f64 {
 
 /// Pressed by `f'` [N/m] on each (towards the other), with mass damping, the two come to rest at `gap -
 /// f' / k'`. `k' = mu w_c^2`, `mu = RHO / 2`: the relation is exact at rest (every node carries `l_i` of the
-/// load and of the penalty; nodes face nodes, so the reactions fall on the facing node), so the only
-/// error is the residual motion after 40 damping times: the tolerance 1e-9 of the penetration.
+/// load and of the penalty; points face points, so the reactions fall on the facing points), so the only
+/// error is the residual motion after 40 damping times: the tolerance 1e-9 of the penetration. (The
+/// contact points of a segment, at the midpoints of its thirds, give each node exactly its `l_i` share of
+/// a uniform penetration's force.)
 #[test]
 fn pressed_conductors_rest_at_the_penalty_penetration() {
     let dt = 1.0e-4;
@@ -109,17 +111,19 @@ fn pressed_conductors_rest_at_the_penalty_penetration() {
     let delta = 2.0 * RADIUS - (xb - xa);
     println!("penetration {delta:.9e} m, f'/k' = {expected:.9e} m (k' = {k:.4e} N/m^2)");
     assert!((delta - expected).abs() < 1e-9 * expected.max(1e-3), "{delta} vs {expected}");
-    // Every node touches, in both directions.
-    assert_eq!(l.contact().unwrap().touching(), 2 * (N + 1));
+    // Every contact point touches, in both directions.
+    assert_eq!(l.contact().unwrap().touching(), 2 * 3 * N);
 }
 
 /// The clash of two free conductors approaching at 2 m/s: the rebound ratio against the closed form
-/// `e_c(zeta)` at `w_c dt` = 0.25, 0.2, 0.1, 0.05. The error falls at FIRST order: the dashpot's force
-/// jumps from 0 to `c' v0` at the onset, which falls anywhere within a step (the spring alone is second
-/// order: `undamped_clash_keeps_the_kinetic_energy`). Measured 3.4e-2 (6.2 %) at the default 0.25 for e =
-/// 0.5 and 5.4e-2 (17 %) for e = 0.2, always less dissipative than asked. Asserted: the observed order of
-/// the last pair within 1 +- 0.2, and the error at the default below 8 % of `e_c` for e = 0.5 and 20 % for
-/// e = 0.2 (the restitution of clashing conductors is itself an assumption, docs/short_circuit.md).
+/// `e_c(zeta)` at `w_c dt` = 0.5 (the default), 0.2, 0.1, 0.05. The error falls at FIRST order: the
+/// dashpot's force jumps from 0 to `c' v0` at the onset, which falls anywhere within a step (the spring
+/// alone is second order: `undamped_clash_keeps_the_kinetic_energy`). Measured at the default: 6.7e-2
+/// (12 % of e_c) for e = 0.5, the clash more dissipative than asked (reading the closing speed extrapolated
+/// to the level instead of at the half step was tried and changed nothing measurable). Asserted: the
+/// observed order of the last pair within 1 +- 0.2, and the error at the default below 15 % of `e_c` for e
+/// = 0.5 and 40 % for e = 0.2 (measured 34 %; the restitution of clashing conductors is itself an assumption,
+/// docs/short_circuit.md).
 #[test]
 fn clash_rebound_matches_the_clamped_spring_dashpot() {
     for e in [0.5, 0.2] {
@@ -127,7 +131,7 @@ fn clash_rebound_matches_the_clamped_spring_dashpot() {
         let zeta = spec0.damping_ratio();
         let e_c = clamped_restitution(zeta);
         let mut errs = vec![];
-        let rates = [0.25, 0.2, 0.1, 0.05];
+        let rates = [0.5, 0.2, 0.1, 0.05];
         for &wdt in &rates {
             let dt = 1.0e-4;
             let mut l = line(free_wire(0.0), free_wire(0.1), dt, 0.0, contact(e, wdt));
@@ -151,7 +155,7 @@ fn clash_rebound_matches_the_clamped_spring_dashpot() {
             println!("e = {e}: w_c dt = {wdt}: rebound ratio {ratio:.8}, closed form {e_c:.8}, error {err:.3e}");
             errs.push(err);
         }
-        let bound = if e == 0.5 { 0.08 } else { 0.2 };
+        let bound = if e == 0.5 { 0.15 } else { 0.4 };
         assert!(errs[0] < bound * e_c, "e = {e}: error {} at the default", errs[0]);
         let p = (errs[2] / errs[3]).ln() / 2f64.ln();
         println!("e = {e}: order of the last pair {p:.3}");

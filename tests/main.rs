@@ -30,6 +30,7 @@ mod section;
 mod section_events;
 mod section_step;
 mod section_stringing;
+mod short_circuit_contact;
 mod short_circuit_line;
 mod short_circuit_scenario;
 mod statics;

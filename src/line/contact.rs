@@ -4,32 +4,42 @@
 //! # Model
 //!
 //! Two conductors `A` and `B` of radii `r_A`, `r_B` touch where their axes come closer than the gap
-//! `g = r_A + r_B`. The contact is a penalty: a node `i` of `A` (rest length `l_i`, half of each adjacent
-//! segment) at the distance `d_i` from the nearest point `q(u)` of a segment of `B` penetrates by
-//! `delta_i = g - d_i > 0` and is pushed along the normal `n = (x_i - q) / d_i` by
+//! `g = r_A + r_B`. The contact is a penalty on a line of contact points: each segment of `A` (rest length
+//! `l`) carries three points, at the midpoints of its thirds (`s` = 1/6, 1/2, 5/6), each standing for
+//! `l / 3` of it. A point `x(s)` at the distance `d` from the nearest point `q(u)` of a segment of `B`
+//! penetrates by `delta = g - d > 0` and is pushed along the normal `n = (x - q) / d` by
 //!
 //! ```text
-//! F_i = max(0, k' l_i delta_i / 2 - c' l_i (v_i - v_q) . n / 2) n,      on B: -F_i at q, split (1 - u, u)
+//! F = max(0, k' (l/3) delta / 2 - c' (l/3) (v(s) - v(u)) . n / 2) n,
+//!     on A's nodes (1 - s, s) F, on B's nodes -(1 - u, u) F
 //! ```
 //!
-//! and likewise every node of `B` against the segments of `A` (each direction carries half the stiffness,
-//! so that two parallel conductors in contact along a length `L` press with `k' delta` per unit length).
-//! No friction; no adhesion (the force never pulls).
+//! and likewise every point of `B` against the segments of `A` (each direction carries half the stiffness,
+//! so that two parallel conductors in contact along a length `L` press with `k' delta` per unit length;
+//! for a uniform penetration the nodal forces are exactly the consistent load of `k' delta`). No friction;
+//! no adhesion (the force never pulls). Points rather than nodes: sub-conductors that roll over each other
+//! cross at small angles (6 degrees in case h) with the deepest point inside a segment, where a node test
+//! (the first version) let them pass.
 //!
 //! `k'` [N/m^2] and `c'` [N s/m^2] follow from the time step `dt` of the line and the pair's reduced linear
-//! mass `mu = mu_A mu_B / (mu_A + mu_B)`: `k' = mu (w_c)^2` with `w_c dt = stiffness_dt` (default 0.25),
-//! `c' = 2 zeta sqrt(k' mu)` with `zeta = -ln e / sqrt(pi^2 + ln^2 e)` the damping ratio of the restitution
-//! coefficient `e` of a linear spring-dashpot (default 0.5). The penalty stiffness grows as `dt^-2`, so
-//! the penetration under a given force falls as `dt^2`, the order of the scheme; its frequency `w_c` adds
-//! `w_c^2 dt^2 / 4 = 0.016` and its damping `zeta w_c dt = 0.05` to the leapfrog's stability sum `W dt^2 / 4
-//! + D dt / 2 <= 1` ([`crate::scheme::line`]), which a line at Courant number 0.9 has to spare. The
-//! restitution of clashing stranded conductors is not a published value: 0.5 is an assumption; the
-//! contact forces (and the pinch tension of an effective clash) depend on it, and the case's output names
-//! it.
+//! mass `mu = mu_A mu_B / (mu_A + mu_B)`: `k' = mu (w_c)^2` with `w_c dt = stiffness_dt` (default 0.5, the
+//! largest allowed), `c' = 2 zeta sqrt(k' mu)` with `zeta = -ln e / sqrt(pi^2 + ln^2 e)` the damping ratio
+//! of the restitution coefficient `e` of a linear spring-dashpot (default 0.5). The penalty stiffness
+//! grows as `dt^-2`, so the penetration under a given force falls as `dt^2`. Its frequency `w_c` adds
+//! `w_c^2 dt^2 / 4 = 0.0625` and its damping `zeta w_c dt = 0.11` to the leapfrog's stability sum `W dt^2 /
+//! 4 + D dt / 2 <= 1` ([`crate::scheme::line`]), which the line's step check does not include: a line at a
+//! Courant number up to about 0.8 has that to spare (the short-circuit cases run at 0.5). Why the stiffest:
+//! under the pinch of case h (63 kA on a twin 0.1 m apart) the sub-conductors meet at several m/s and the
+//! attraction grows as `1/d`; at `w_c dt = 0.25` they penetrate 13 mm of the 43 mm gap and the tension
+//! peaks of the first 0.4 s reach 58 kN, at 0.5 they penetrate 8 mm and the peaks are 36 kN
+//! (docs/short_circuit.md): the dynamic tension of an effective clash depends on the contact's stiffness,
+//! and the penalty stays as stiff as the explicit step allows. The restitution of clashing stranded
+//! conductors is not a published value: 0.5 is an assumption; the contact forces (and the pinch tension of
+//! an effective clash) depend on it, and the case's output names it.
 //!
-//! A crossing at an angle steeper than about `atan(g / l)` (`l` the segment length) can be missed, since
-//! only nodes are tested: conductors that run side by side (sub-conductors, phases of one span) meet
-//! node against segment.
+//! A crossing at an angle steeper than about `atan(6 g / l)` (`l` the segment length) can be missed, since
+//! only the points are tested: conductors that run side by side (sub-conductors, phases of one span) meet
+//! at small angles.
 
 // Units in brackets would otherwise be taken for intra-doc links.
 #![allow(rustdoc::broken_intra_doc_links)]
@@ -52,13 +62,13 @@ pub struct ConductorContact {
     pub pairs: Vec<ContactPair>,
     /// coefficient of restitution `e` of a clash, in (0, 1] [-]; default 0.5 (an assumption, module doc)
     pub restitution: f64,
-    /// penalty frequency times the line's time step, `w_c dt`, in (0, 0.5] [-]; default 0.25
+    /// penalty frequency times the line's time step, `w_c dt`, in (0, 0.5] [-]; default 0.5 (module doc)
     pub stiffness_dt: f64,
 }
 
 impl Default for ConductorContact {
     fn default() -> Self {
-        ConductorContact { pairs: Vec::new(), restitution: 0.5, stiffness_dt: 0.25 }
+        ConductorContact { pairs: Vec::new(), restitution: 0.5, stiffness_dt: 0.5 }
     }
 }
 

@@ -49,6 +49,7 @@ use super::schema::{
 use super::validate::{Check, Problem};
 use crate::element::LinkLaw;
 use crate::events::Action;
+use crate::line::contact::{ConductorContact, ContactPair};
 use crate::line::{
     DeadEnd, ElasticSupport, Endpoint, LineConductor, Link, LinkKind, Model, NodeRef, PointMass, Role, Support,
 };
@@ -1027,6 +1028,30 @@ fn assemble(s: &LineScenario, plans: Vec<Plan>, global_only: Vec<Option<Plan>>) 
             .map_err(|(field, why)| problem(field, "(short circuit)".into(), why))?;
         line.set_electromagnetic(Some(em))
             .map_err(|e| problem("short_circuit".into(), "(carriers)".into(), e.to_string()))?;
+        if sc.contact {
+            // The sub-conductors of each bundle, and every two conductors of different phases named in
+            // `phases`; gap: the two radii (a conductor without a diameter: its group's).
+            let group_of = |c: usize| groups.iter().position(|g| g.contains(&c));
+            let named: Vec<usize> = sc.phases.iter().filter_map(|p| group_names.iter().position(|g| g == p)).collect();
+            let roles = line.roles().to_vec();
+            let mut pairs = Vec::new();
+            let n = line.conductors().len();
+            for a in 0..n {
+                for b in a + 1..n {
+                    let (Some(ga), Some(gb)) = (group_of(a), group_of(b)) else { continue };
+                    let same_bundle = roles[a].bundle().is_some() && roles[a].bundle() == roles[b].bundle();
+                    let phases = ga != gb && named.contains(&ga) && named.contains(&gb);
+                    let gap = radius[ga] + radius[gb];
+                    if (same_bundle || phases) && gap.is_finite() && gap > 0.0 {
+                        pairs.push(ContactPair { a, b, gap_m: gap });
+                    }
+                }
+            }
+            let contact =
+                ConductorContact { pairs, restitution: sc.contact_restitution, ..ConductorContact::default() };
+            line.set_contact(Some(contact))
+                .map_err(|e| problem("short_circuit.contact".into(), "(pairs)".into(), e.to_string()))?;
+        }
     }
     Ok(LinePlan {
         name: s.name.clone().unwrap_or_else(|| "line".into()),

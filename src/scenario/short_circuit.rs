@@ -104,6 +104,16 @@ pub struct ShortCircuitSpec {
     /// absent: the library's default
     #[serde(default)]
     pub refresh_steps: Option<usize>,
+    /// contact between conductors (the sub-conductors of each bundle, and the conductors of different
+    /// phases named in `phases`): a penalty that keeps them from passing through each other when they
+    /// clash ([`crate::line::contact`]); default true. Without it a bundle's sub-conductors that clash
+    /// under the pinch cross and the force between them diverges (docs/short_circuit.md)
+    #[serde(default = "default_contact")]
+    pub contact: bool,
+    /// coefficient of restitution of a clash between conductors [-], in (0, 1]; default 0.5 (an
+    /// assumption: no published value for stranded conductors, [`crate::line::contact`])
+    #[serde(default = "default_restitution")]
+    pub contact_restitution: f64,
     /// IEC 60865-1 eq. (35): material constant `c_th` [m^4/(A^2 s)], in [1e-20, 1e-17]; default 0.27e-18
     /// (Al, Al alloy and Al/St with section ratio > 6, IEC 60865-1:2011, clause 6.2.4, as used for the
     /// TR 60865-2 examples: docs/short_circuit_iec60865.md)
@@ -117,6 +127,14 @@ pub struct ShortCircuitSpec {
     /// the catalogue entry's total area (the conductor's `catalog`); its modulus is then `E = EA / A_s`
     #[serde(default)]
     pub conductor_area_m2: Option<f64>,
+}
+
+fn default_contact() -> bool {
+    true
+}
+
+fn default_restitution() -> f64 {
+    crate::line::contact::ConductorContact::default().restitution
 }
 
 /// 50 Hz: the frequency of most of the world's grids (IEC 60909-0 examples).
@@ -210,6 +228,7 @@ impl ShortCircuitSpec {
                 c.fail(&f(name), v, "must be a whole number in [1, 1000]");
             }
         }
+        c.range(&f("contact_restitution"), self.contact_restitution, &Allowed::open_closed(0.0, 1.0, ""));
         c.range(
             &f("thermal_constant_m4_per_a2s"),
             self.thermal_constant_m4_per_a2s,

@@ -8,8 +8,8 @@
 //! Reading the closing speed extrapolated to the level instead of at the half step was tried and changes
 //! nothing measurable (tests/conductor_contact.rs).
 //!
-//! For every pair `(A, B)` and each direction (nodes of `A` against segments of `B`, then the reverse), a
-//! node's nearest segment is found by a walk from the one found at the previous level (at the first, the
+//! For every pair `(A, B)` and each direction (contact points of `A` against segments of `B`, then the
+//! reverse), a point's nearest segment is found by a walk from the one found at the previous level (at the first, the
 //! segment at the same fraction of the conductor): step to the neighbouring segment while it is closer.
 //! Conductors that run side by side keep their nearest segment within a step or two, so a level costs
 //! `O(N)` per pair, not `O(N^2)`. The walk finds a local minimum of the distance; for a conductor that
@@ -23,10 +23,10 @@ use crate::line::contact::ConductorContact;
 pub struct FirstContact {
     /// time of the level [s]
     pub time_s: f64,
-    /// the two conductors (the node's, the segment's)
+    /// the two conductors (the contact point's, the segment's)
     pub conductors: (usize, usize),
-    /// the node that touched
-    pub node: usize,
+    /// the segment of the first that touched
+    pub segment: usize,
 }
 
 /// The state of the contact during a run.
@@ -35,22 +35,18 @@ pub struct ContactState {
     spec: ConductorContact,
     /// per pair: `k'` [N/m^2] and `c'` [N s/m^2], both already halved (each direction carries half)
     coeff: Vec<(f64, f64)>,
-    /// per pair and direction, per node: its nearest segment at the last level
+    /// per pair and direction, per contact point: its nearest segment at the last level
     hint: Vec<[Vec<usize>; 2]>,
     /// elastic energy of the penalty springs at the evaluated level [J]
     energy_j: f64,
-    /// nodes in contact at the evaluated level
+    /// contact points in contact at the evaluated level
     touching: usize,
     first: Option<FirstContact>,
 }
 
-/// Rest length carried by node `i`: half of each adjacent segment [m].
-fn node_length(w: &crate::wire::Wire, i: usize) -> f64 {
-    let n = w.segments();
-    let left = if i > 0 { w.rest_length[i - 1] } else { 0.0 };
-    let right = if i < n { w.rest_length[i] } else { 0.0 };
-    0.5 * (left + right)
-}
+/// Contact points per segment: the midpoints of its thirds, each carrying a third of its rest length.
+const SAMPLES: usize = 3;
+const SAMPLE_AT: [f64; SAMPLES] = [1.0 / 6.0, 0.5, 5.0 / 6.0];
 
 /// Linear density of a conductor: its mass over its rest length [kg/m].
 fn linear_density(w: &crate::wire::Wire) -> f64 {
@@ -81,8 +77,8 @@ impl ContactState {
             .map(|p| {
                 let (wa, wb) = (conductors[p.a].wire(), conductors[p.b].wire());
                 let guess = |from: &crate::wire::Wire, to: &crate::wire::Wire| -> Vec<usize> {
-                    let (nf, st) = (from.nodes(), to.segments());
-                    (0..nf).map(|i| ((i * st) / nf.max(1)).min(st.saturating_sub(1))).collect()
+                    let (sf, st) = (from.segments(), to.segments());
+                    (0..sf * SAMPLES).map(|h| ((h / SAMPLES * st) / sf.max(1)).min(st.saturating_sub(1))).collect()
                 };
                 [guess(wa, wb), guess(wb, wa)]
             })
@@ -100,7 +96,7 @@ impl ContactState {
         self.energy_j
     }
 
-    /// Nodes in contact at the evaluated level.
+    /// Contact points in contact at the evaluated level (3 per segment and direction).
     pub fn touching(&self) -> usize {
         self.touching
     }
@@ -125,8 +121,14 @@ impl ContactState {
                 if st == 0 {
                     continue;
                 }
-                for (i, hint) in hints.iter_mut().enumerate() {
-                    let x = wf.position(i);
+                for (h, hint) in hints.iter_mut().enumerate() {
+                    // Sample point h: segment i of `from` at the fraction s (the midpoints of its thirds).
+                    let (i, s) = (h / SAMPLES, SAMPLE_AT[h % SAMPLES]);
+                    if wf.intact[i] == 0.0 {
+                        continue;
+                    }
+                    let (p0, p1) = (wf.position(i), wf.position(i + 1));
+                    let x = [0, 1, 2].map(|c| p0[c] + s * (p1[c] - p0[c]));
                     let seg = |j: usize| -> (f64, f64) {
                         let (q0, q1) = (wt.position(j), wt.position(j + 1));
                         let d = [q1[0] - q0[0], q1[1] - q0[1], q1[2] - q0[2]];
@@ -168,18 +170,19 @@ impl ContactState {
                     let (q0, q1) = (wt.position(j), wt.position(j + 1));
                     let q = [0, 1, 2].map(|c| q0[c] + u * (q1[c] - q0[c]));
                     let nrm = [0, 1, 2].map(|c| (x[c] - q[c]) / d);
-                    let vi = [wf.v[0][i], wf.v[1][i], wf.v[2][i]];
+                    let vx = [0, 1, 2].map(|c| (1.0 - s) * wf.v[c][i] + s * wf.v[c][i + 1]);
                     let vq = [0, 1, 2].map(|c| (1.0 - u) * wt.v[c][j] + u * wt.v[c][j + 1]);
-                    let closing = (0..3).map(|c| (vi[c] - vq[c]) * nrm[c]).sum::<f64>();
-                    let (li, delta) = (node_length(wf, i), p.gap_m - d);
+                    let closing = (0..3).map(|c| (vx[c] - vq[c]) * nrm[c]).sum::<f64>();
+                    let (li, delta) = (wf.rest_length[i] / SAMPLES as f64, p.gap_m - d);
                     let f = (kk * li * delta - cc * li * closing).max(0.0);
                     self.energy_j += 0.5 * kk * li * delta * delta;
                     self.touching += 1;
                     if self.first.is_none() {
-                        self.first = Some(FirstContact { time_s: t_s, conductors: (from, to), node: i });
+                        self.first = Some(FirstContact { time_s: t_s, conductors: (from, to), segment: i });
                     }
                     let g = nrm.map(|c| f * c);
-                    points[from].push((i, g));
+                    points[from].push((i, [0, 1, 2].map(|c| (1.0 - s) * g[c])));
+                    points[from].push((i + 1, [0, 1, 2].map(|c| s * g[c])));
                     points[to].push((j, [0, 1, 2].map(|c| -(1.0 - u) * g[c])));
                     points[to].push((j + 1, [0, 1, 2].map(|c| -u * g[c])));
                 }

@@ -21,6 +21,12 @@
 //! the step, the half with `f^{n+1}` when level `n + 1` is evaluated, so that at an evaluated level the
 //! energy budget `E^n - E^0 = W^n` closes to the scheme's `O(dt^2)` (no damping).
 //!
+//! Near field. Two carriers of one phase (the sub-conductors of a bundle) are not evaluated by chords and
+//! refreshed factors but segment by segment at every level, each target segment against the source
+//! segments within a window around its own place (`NEAR_SEGMENTS`, `NEAR_DISTANCES`): the pinch pulls
+//! them together until they touch, where the chords' error (chords much longer than the distance) is
+//! unbounded.
+//!
 //! A pair of chords that intersect (a clash of two carriers, [`crate::element::em_force::EmForceError`])
 //! contributes nothing; the first such event is kept ([`EmState::intersection`]) for the caller to report.
 
@@ -69,6 +75,18 @@ struct Chord {
 /// the tests, with no consistent gain in the chord error.
 const EXCLUDE: usize = 1;
 type Factors = [[f64; 6]; 3];
+/// The near field of two carriers of one phase (a bundle's sub-conductors, a few centimetres to decimetres
+/// apart, which the pinch pulls together until they touch) covers at least this many segments on each
+/// side of the target segment's place...
+const NEAR_SEGMENTS: usize = 2;
+/// ... and at least this many times their initial distance at mid-span. Beyond it the sibling's force is
+/// left out: for parallel conductors at `d` the part beyond `D` is the fraction `1 - D / sqrt(D^2 + d^2)
+/// ~ d^2 / (2 D^2)` of the force per length, 0.5 % at `D = 10 d` (less as the pinch closes them). Chords
+/// longer than the distance between the carriers misplace the force (docs/short_circuit.md): when the
+/// sub-conductors met under the pinch, the chords of 4 segments refreshed every 8 steps let them pass
+/// through the contact penalty (tests/short_circuit_contact.rs); segment by segment at every level they
+/// do not.
+const NEAR_DISTANCES: f64 = 10.0;
 
 /// The state of the electromagnetic load during a run.
 #[derive(Clone, Debug)]
@@ -104,6 +122,11 @@ pub struct EmState {
     intersection: Option<EmIntersection>,
     /// refreshes of the geometric factors so far
     refreshes: u64,
+    /// near pairs (target carrier, source carrier): two carriers of one phase (a bundle's sub-conductors),
+    /// evaluated segment by segment at every level within `window` segments, not by chords
+    near: Vec<(usize, usize)>,
+    /// half-width of the near field [segments]
+    window: usize,
 }
 
 /// The spreading weights of a chord over its nodes with rest-length fractions `u` (module docs of
@@ -177,6 +200,23 @@ impl EmState {
         }
         let nc = chords.len();
         let spare = forces.iter().map(|f| Some(f.clone())).collect();
+        let mut near = Vec::new();
+        let mut window = NEAR_SEGMENTS;
+        for (b, cb) in em.carriers.iter().enumerate() {
+            for (a, ca) in em.carriers.iter().enumerate() {
+                if a != b && ca.phase == cb.phase {
+                    near.push((b, a));
+                    let (wa, wb) = (conductors[ca.conductor].wire(), conductors[cb.conductor].wire());
+                    let (pa, pb) = (wa.position(wa.nodes() / 2), wb.position(wb.nodes() / 2));
+                    let d = ((pa[0] - pb[0]).powi(2) + (pa[1] - pb[1]).powi(2) + (pa[2] - pb[2]).powi(2)).sqrt();
+                    let ds = wb.total_rest_length() / wb.segments() as f64;
+                    let w = (NEAR_DISTANCES * d / ds).ceil();
+                    if w.is_finite() && w > window as f64 {
+                        window = (w as usize).min(wb.segments());
+                    }
+                }
+            }
+        }
         EmState {
             conductor: em.carriers.iter().map(|c| c.conductor).collect(),
             em,
@@ -198,7 +238,14 @@ impl EmState {
             half_added: None,
             intersection: None,
             refreshes: 0,
+            near,
+            window,
         }
+    }
+
+    /// The near field's half-width [segments] (0 sub-conductor pairs: its least value).
+    pub fn near_window(&self) -> usize {
+        self.window
     }
 
     /// The load.
@@ -296,6 +343,7 @@ impl EmState {
                 }
             }
         }
+        self.near_field(conductors, t_s, &i);
         // Into the carriers' node passes.
         for (k, &c) in self.conductor.iter().enumerate() {
             let slot = conductors[c].nodal_force_slot();
@@ -335,6 +383,48 @@ impl EmState {
         p
     }
 
+    /// The near field: every target segment of a near pair against the source segments within the window
+    /// around the one at the same fraction, on the present geometry, with the present currents.
+    fn near_field(&mut self, conductors: &[Explicit], t_s: f64, i: &[f64; 3]) {
+        for &(b, a) in &self.near {
+            let (cb, ca) = (&self.em.carriers[b], &self.em.carriers[a]);
+            let (ib, ia) = (cb.share * i[cb.phase], ca.share * i[ca.phase]);
+            let (wb, wa) = (conductors[cb.conductor].wire(), conductors[ca.conductor].wire());
+            let (nb, na) = (wb.segments(), wa.segments());
+            for j in 0..nb {
+                let (b0, b1) = (wb.position(j), wb.position(j + 1));
+                let centre = (j * na + na / 2) / nb.max(1);
+                let lo = centre.saturating_sub(self.window);
+                let hi = (centre + self.window + 1).min(na);
+                for s in lo..hi {
+                    match pair_force(wa.position(s), wa.position(s + 1), ia, b0, b1, ib, cb.core_radius_m) {
+                        Ok(f) => {
+                            let out = &mut self.forces[b];
+                            for k in 0..3 {
+                                out[k][j] += f.total_n[k] - f.at_b1_n[k];
+                                out[k][j + 1] += f.at_b1_n[k];
+                            }
+                        }
+                        Err(e) => {
+                            if self.intersection.is_none() {
+                                let distance_m = match e {
+                                    EmForceError::Intersecting { distance_m } => distance_m,
+                                    EmForceError::Degenerate => 0.0,
+                                };
+                                self.intersection = Some(EmIntersection {
+                                    time_s: t_s,
+                                    source: (ca.conductor, s),
+                                    target: (cb.conductor, j),
+                                    distance_m,
+                                });
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+
     /// Recompute the geometric factors on the present geometry.
     fn refresh(&mut self, conductors: &[Explicit], t_s: f64) {
         if self.have_geom {
@@ -351,6 +441,10 @@ impl EmState {
             let [b0, b1] = self.ends[bi];
             for (ai, a) in self.chords.iter().enumerate() {
                 if a.carrier == b.carrier && a.index.abs_diff(b.index) <= EXCLUDE {
+                    continue;
+                }
+                if a.carrier != b.carrier && a.phase == b.phase {
+                    // A near pair: segment by segment at every level (`near_field`).
                     continue;
                 }
                 let [a0, a1] = self.ends[ai];

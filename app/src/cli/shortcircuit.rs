@@ -74,7 +74,8 @@ pub fn main(args: ShortCircuitArgs) -> ExitCode {
 }
 
 fn value(x: Option<f64>) -> String {
-    x.map_or("-".into(), |v| format!("{v:.4}"))
+    // Small values (the stiffness norm N, 1e-7 1/N) in exponent form, so that they do not print as 0.
+    x.map_or("-".into(), |v| if v != 0.0 && v.abs() < 1e-2 { format!("{v:.4e}") } else { format!("{v:.4}") })
 }
 
 fn print(name: &str, c: &Comparison) {
