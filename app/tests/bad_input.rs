@@ -257,6 +257,7 @@ const CASES: &[(&str, &[&str])] = &[
         &["field `short_circuit.phases[2]` = \"X\"", "must name a conductor of the line: A, B, C"],
     ),
     ("short_circuit_phase_twice", &["field `short_circuit.phases[2]` = \"A\"", "already named"]),
+    ("short_circuit_contact_restitution", &["field `short_circuit.contact_restitution` = 1.5", "must be in (0, 1]"]),
     (
         "short_circuit_current_out_of_range",
         &["field `short_circuit.initial_current_a` = 19000000", "must be in [100, 300000] A"],
