@@ -292,7 +292,7 @@ fn the_line_cases_parse_validate_and_build() {
         let least = if file.ends_with("k_slack_span_dropper.toml") { 2 } else { 3 };
         assert!(plan.line.conductors().len() >= least, "{file}");
     }
-    assert_eq!(found, 7, "cases e, f, g, k and the short-circuit cases h, i, j");
+    assert_eq!(found, 8, "cases e, f, g, k and the short-circuit cases h, i, j, l");
 }
 
 /// The file's `[[events]]` act on every sub-conductor of a bundle, `events_on` selects only which take the
