@@ -10,8 +10,8 @@ pub mod sagtension;
 pub mod section_energy;
 pub mod section_statics;
 pub mod section_transients;
-pub mod short_circuit;
 pub mod sensitivity;
+pub mod short_circuit;
 pub mod static_convergence;
 pub mod thermal;
 

@@ -352,9 +352,12 @@ fn clash_run(n: usize, t_k1: f64, reclose: Reclose) -> Result<(f64, f64), String
     Ok((r.a_min, d))
 }
 
+/// The runs of a bisection: `(T_k1 [s], a_min [m])`.
+type Runs = Vec<(f64, f64)>;
+
 /// The largest first-flow duration in `[lo, hi]` without contact (`a_min > d`), to `CLEARING_RESOLUTION_S`
 /// by bisection; `None` if `lo` already clashes, `Some(hi)` if `hi` does not. Also the runs made.
-fn critical_clearing(n: usize, lo: f64, hi: f64, reclose: Reclose) -> Result<(Option<f64>, Vec<(f64, f64)>), String> {
+fn critical_clearing(n: usize, lo: f64, hi: f64, reclose: Reclose) -> Result<(Option<f64>, Runs), String> {
     let mut runs = Vec::new();
     let mut clash = |t: f64| -> Result<bool, String> {
         let (a, d) = clash_run(n, t, reclose)?;
@@ -395,10 +398,11 @@ pub fn run(budget: Budget, dir: &Path) -> Result<StudyReport, String> {
     let (strained, f_st_welded) = strained_base()?;
     let mut seqs = Vec::new();
     for case in [Case::Slack, Case::Strained] {
-        let base = ns[0] * match case {
-            Case::Slack => 2,
-            Case::Strained => 4,
-        };
+        let base = ns[0]
+            * match case {
+                Case::Slack => 2,
+                Case::Strained => 4,
+            };
         let grid_ns: Vec<usize> = (0..levels).map(|k| base << k).collect();
         let mid = base * 2;
         let b = base_of(case, &strained)?;
@@ -409,8 +413,19 @@ pub fn run(budget: Budget, dir: &Path) -> Result<StudyReport, String> {
         "shortcircuit_runs",
         "Every refinement run: main phase L1, both ends' largest (the cost per step is wall time / steps)",
         &[
-            "case", "refinement", "N", "Courant", "dt [s]", "F_t [N]", "F_f [N]", "b_h [m]", "a_min [m]", "steps",
-            "wall [s]", "us/step", "node-steps/s",
+            "case",
+            "refinement",
+            "N",
+            "Courant",
+            "dt [s]",
+            "F_t [N]",
+            "F_f [N]",
+            "b_h [m]",
+            "a_min [m]",
+            "steps",
+            "wall [s]",
+            "us/step",
+            "node-steps/s",
         ],
     );
     let mut conv_t = Table::new(
@@ -585,7 +600,10 @@ pub fn run(budget: Budget, dir: &Path) -> Result<StudyReport, String> {
             rep.check(
                 format!("case j, reclose {label}: the bisection brackets the contact"),
                 "no contact at T_k1 crit; contact at a T_k1 at most 10 ms above it (or none up to 1 s)",
-                format!("T_k1 crit {t:.3} s, a_min there {:.4} m, least clashing T_k1 {above:.3} s", at(t).unwrap_or(f64::NAN)),
+                format!(
+                    "T_k1 crit {t:.3} s, a_min there {:.4} m, least clashing T_k1 {above:.3} s",
+                    at(t).unwrap_or(f64::NAN)
+                ),
                 ok,
             );
         }
