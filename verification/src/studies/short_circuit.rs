@@ -471,7 +471,14 @@ pub fn run(budget: Budget, dir: &Path) -> Result<StudyReport, String> {
             gcis.push((s.case, s.grid, q, c));
         }
     }
-    // The IEC half beside the finest grid.
+    // The IEC half beside the finest grid; F_pi's own grid sequence on case h as written.
+    let pi_ns: Vec<usize> = if full { vec![20, 40, 80, 160] } else { vec![10, 20, 40] };
+    let mut pi_t = Table::new(
+        "shortcircuit_pinch",
+        "Case h as written (twin bundles): F_pi of phase L1 up to the sub-conductors' first contact, 0.2 s simulated",
+        &["N", "F_pi [N]", "steps", "wall [s]", "us/step", "node-steps/s"],
+    );
+    let mut pi_check = None;
     let mut cmp_t = Table::new(
         "shortcircuit_iec",
         "IEC 60865-1 simplified method (the mapping of `ohl shortcircuit`) beside the dynamic value on the finest \
@@ -506,23 +513,59 @@ pub fn run(budget: Budget, dir: &Path) -> Result<StudyReport, String> {
             "-".into(),
         ]);
         if case == Case::Strained {
-            // F_pi on the case as written (the bundle), up to the sub-conductors' contact, at its own grid.
-            let doc = refined(read(CASE_H)?, 40, COURANT, SMOOTHING, 0.2);
-            let (sh, ph) = build(&doc, CASE_H)?;
-            let oh = iec(&sh, &ph)?;
-            let dh = run_dyn(ph, false)?;
-            cmp_t.row(vec![
-                "strained (h as written, N = 40)".into(),
+            // F_pi on the case as written (the bundle), up to the sub-conductors' contact: its own grid
+            // sequence (0.2 s simulated: the contraction ends about 15 ms after inception at 0.1 s).
+            let mut f_pi = Vec::new();
+            let mut oh = None;
+            for &n in &pi_ns {
+                let (sh, ph) = build(&refined(read(CASE_H)?, n, COURANT, SMOOTHING, 0.2), CASE_H)?;
+                oh = Some(iec(&sh, &ph)?);
+                let d = run_dyn(ph, false)?;
+                f_pi.push(d.f_pi.unwrap_or(f64::NAN));
+                pi_t.row(vec![
+                    n.to_string(),
+                    fmt(d.f_pi.unwrap_or(f64::NAN)),
+                    d.steps.to_string(),
+                    format!("{:.2}", d.wall_s),
+                    format!("{:.1}", 1e6 * d.wall_s / d.steps as f64),
+                    format!("{:.3e}", d.node_steps_per_s),
+                ]);
+            }
+            let c = converge(&f_pi);
+            let k = f_pi.len();
+            let change = ((f_pi[k - 1] - f_pi[k - 2]) / f_pi[k - 1]).abs();
+            conv_t.row(vec![
+                "strained (h as written)".into(),
+                "grid".into(),
                 "F_pi [N]".into(),
-                iec_pinch(&oh).map_or("-".into(), fmt),
-                dh.f_pi.map_or("-".into(), fmt),
-                "not refined".into(),
-                match (iec_pinch(&oh), dh.f_pi) {
-                    (Some(i), Some(d)) => format!("{:+.1} %", 100.0 * (d - i) / i),
-                    _ => "-".into(),
-                },
+                fmt(f_pi[k - 1]),
+                format!("{:.2}", c.order),
+                (if c.monotone { "yes" } else { "no" }).into(),
+                fmt(c.extrapolated),
+                format!("{:.2e}", c.gci),
+                c.form.into(),
+            ]);
+            pi_check = Some((change, c.gci, c.order));
+            let i_pi = oh.as_ref().and_then(iec_pinch);
+            let d = f_pi[k - 1];
+            cmp_t.row(vec![
+                format!("strained (h as written, N = {})", pi_ns[k - 1]),
+                "F_pi [N]".into(),
+                i_pi.map_or("-".into(), fmt),
+                fmt(d),
+                format!("{:.2e}", c.gci),
+                i_pi.map_or("-".into(), |i| format!("{:+.1} %", 100.0 * (d - i) / i)),
             ]);
         }
+    }
+    // F_pi is reported, not asserted: its window (to the end of the first contraction) contains the
+    // sub-conductors passing through each other, where the 1/d force has no physical meaning and the peak
+    // depends on where the grid puts the crossing (docs/short_circuit.md).
+    if let Some((change, g, p)) = pi_check {
+        rep.discussion.push_str(&format!(
+            "F_pi (case h as written) between the two finest grids: change {change:.2e}, order {p:.2}, GCI {g:.2e} \
+             (not asserted). "
+        ));
     }
     // Energy closure.
     let n_e = ns[0] * 4;
@@ -669,8 +712,8 @@ pub fn run(budget: Budget, dir: &Path) -> Result<StudyReport, String> {
         });
     }
     rep.figure(&panels, 3, (560, 420), "Short-circuit dynamic response: tension and convergence", dir, "shortcircuit")?;
-    rep.tables = vec![runs_t, conv_t, cmp_t, clash_t];
-    rep.discussion = "See docs/short_circuit.md, \"Verification of the dynamic response\".".into();
+    rep.tables = vec![runs_t, conv_t, cmp_t, pi_t, clash_t];
+    rep.discussion.push_str("See docs/short_circuit.md, \"Verification of the dynamic response\".");
     Ok(rep)
 }
 
