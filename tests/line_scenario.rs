@@ -290,7 +290,7 @@ fn the_line_cases_parse_validate_and_build() {
         let plan = line::parse(&text, &file).and_then(|s| line::plan(&s, &file)).unwrap_or_else(|e| panic!("{e}"));
         assert!(plan.line.conductors().len() >= 3, "{file}");
     }
-    assert_eq!(found, 3, "cases e, f and g");
+    assert_eq!(found, 6, "cases e, f, g and the short-circuit cases h, i, j");
 }
 
 /// The file's `[[events]]` act on every sub-conductor of a bundle, `events_on` selects only which take the
