@@ -11,6 +11,7 @@ pub mod section_energy;
 pub mod section_statics;
 pub mod section_transients;
 pub mod sensitivity;
+pub mod short_circuit;
 pub mod static_convergence;
 pub mod thermal;
 
@@ -86,6 +87,11 @@ pub const STUDIES: &[Study] = &[
         name: "sagtension",
         about: "sag-tension of Drake (two-material law) vs the CRC handbook's table; knee points",
         run: sagtension::run,
+    },
+    Study {
+        name: "shortcircuit",
+        about: "short-circuit response: grid/time convergence of F_t, F_f, b_h; IEC 60865-1 beside it; clashing",
+        run: short_circuit::run,
     },
 ];
 
