@@ -651,6 +651,21 @@ fn dropper_checks(
 }
 
 /// Join the conductors' plans into the line's model and solver.
+/// For a start on the line's equilibrium: the ice events at `t = 0` of a conductor's plan applied to its
+/// wire now (and taken out of its timeline), so that the equilibrium carries them; `Err` if one leaves a
+/// segment without mass.
+fn ice_at_start(own: &mut Plan, wire: &mut crate::wire::Wire) -> Result<(), ()> {
+    let (now, later): (Vec<_>, Vec<_>) =
+        std::mem::take(&mut own.events).into_iter().partition(|e| e.time_s == 0.0 && e.action.is_ice());
+    own.events = later;
+    for e in now {
+        if e.action.apply_ice(wire) == Some(false) {
+            return Err(());
+        }
+    }
+    Ok(())
+}
+
 fn assemble(s: &LineScenario, plans: Vec<Plan>, global_only: Vec<Option<Plan>>) -> Result<LinePlan, Vec<Problem>> {
     let spec = &s.line;
     let problem = |field: String, value: String, allowed: String| vec![Problem { field, value, allowed }];
@@ -690,18 +705,9 @@ fn assemble(s: &LineScenario, plans: Vec<Plan>, global_only: Vec<Option<Plan>>) 
             let mut own = plan.clone();
             let mut wire = plan.solver.wire().clone();
             if s.initial.shape == LineShapeSpec::Equilibrium {
-                let (now, later): (Vec<_>, Vec<_>) =
-                    std::mem::take(&mut own.events).into_iter().partition(|e| e.time_s == 0.0 && e.action.is_ice());
-                own.events = later;
-                for e in now {
-                    if e.action.apply_ice(&mut wire) == Some(false) {
-                        return Err(problem(
-                            f("events"),
-                            "ice at t = 0".into(),
-                            "leaves a segment without mass".into(),
-                        ));
-                    }
-                }
+                ice_at_start(&mut own, &mut wire).map_err(|()| {
+                    problem(f("events"), "ice at t = 0".into(), "leaves a segment without mass".into())
+                })?;
             }
             let slug = crate::run::line::slug(&c.name);
             if names_seen.contains(&slug) {
@@ -890,18 +896,9 @@ fn assemble(s: &LineScenario, plans: Vec<Plan>, global_only: Vec<Option<Plan>>) 
                 }
             }
             if s.initial.shape == LineShapeSpec::Equilibrium {
-                let (now, later): (Vec<_>, Vec<_>) =
-                    std::mem::take(&mut own.events).into_iter().partition(|e| e.time_s == 0.0 && e.action.is_ice());
-                own.events = later;
-                for e in now {
-                    if e.action.apply_ice(&mut wire) == Some(false) {
-                        return Err(problem(
-                            f("events"),
-                            "ice at t = 0".into(),
-                            "leaves a segment without mass".into(),
-                        ));
-                    }
-                }
+                ice_at_start(&mut own, &mut wire).map_err(|()| {
+                    problem(f("events"), "ice at t = 0".into(), "leaves a segment without mass".into())
+                })?;
             }
             line_plans.push(own);
             let name = member;

@@ -50,6 +50,15 @@ pub struct EmIntersection {
     pub distance_m: f64,
 }
 
+/// The meeting of two filaments (source and target: conductor and first node) at `t_s` [s].
+fn meeting(e: EmForceError, t_s: f64, source: (usize, usize), target: (usize, usize)) -> EmIntersection {
+    let distance_m = match e {
+        EmForceError::Intersecting { distance_m } => distance_m,
+        EmForceError::Degenerate => 0.0,
+    };
+    EmIntersection { time_s: t_s, source, target, distance_m }
+}
+
 #[derive(Clone, Copy, Debug)]
 struct Chord {
     /// index into the carriers
@@ -406,18 +415,7 @@ impl EmState {
                             }
                         }
                         Err(e) => {
-                            if self.intersection.is_none() {
-                                let distance_m = match e {
-                                    EmForceError::Intersecting { distance_m } => distance_m,
-                                    EmForceError::Degenerate => 0.0,
-                                };
-                                self.intersection = Some(EmIntersection {
-                                    time_s: t_s,
-                                    source: (ca.conductor, s),
-                                    target: (cb.conductor, j),
-                                    distance_m,
-                                });
-                            }
+                            self.intersection.get_or_insert(meeting(e, t_s, (ca.conductor, s), (cb.conductor, j)));
                         }
                     }
                 }
@@ -457,18 +455,8 @@ impl EmState {
                         }
                     }
                     Err(e) => {
-                        if self.intersection.is_none() {
-                            let distance_m = match e {
-                                EmForceError::Intersecting { distance_m } => distance_m,
-                                EmForceError::Degenerate => 0.0,
-                            };
-                            self.intersection = Some(EmIntersection {
-                                time_s: t_s,
-                                source: (self.conductor[a.carrier], a.n0),
-                                target: (self.conductor[b.carrier], b.n0),
-                                distance_m,
-                            });
-                        }
+                        let (source, target) = ((self.conductor[a.carrier], a.n0), (self.conductor[b.carrier], b.n0));
+                        self.intersection.get_or_insert(meeting(e, t_s, source, target));
                     }
                 }
             }
