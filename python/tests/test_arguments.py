@@ -190,7 +190,7 @@ def test_every_bad_file_as_a_dict(path: Path) -> None:
     if path.stem == "heat_conduction_above_budget":
         pytest.skip("valid, refused by the work budget of a run (test_errors)")
     with pytest.raises(ohl.ScenarioError) as file_error:
-        ohl.load(rel)
+        (ohl.load_line if "line" in d else ohl.load)(rel)
     e = dict_error(d, line="line" in d)
     assert e.file == "<dict>"
     assert not re.search(r"\bline \d", str(e)), str(e)

@@ -44,8 +44,10 @@ def test_every_bad_input_gives_the_command_lines_message(path: Path, ohl_cli: Pa
             ohl.run(ohl.load(rel))
         assert "heat node updates" in cli_error(ohl_cli, rel)
         return
+    # A line scenario ([line]: droppers, short circuits) is read by `ohl.load_line`, as `ohl run` reads it.
+    load = ohl.load_line if b"\n[line]" in b"\n" + path.read_bytes() else ohl.load
     with pytest.raises(ohl.ScenarioError) as e:
-        ohl.load(rel)
+        load(rel)
     if b"[rod]" in path.read_bytes():
         # A heat-conduction case of the paper: `ohl run` refuses it before parsing, pointing to `ohl paper`
         # (an application of the command line, not of the library); the package reports what the library
