@@ -184,6 +184,25 @@ fn parabola_sag(c: f64, s: f64) -> f64 {
     0.5 * (lo + hi)
 }
 
+/// The droppers of a line: the conductors hung from their first node by a [`LinkKind::Clamp`] link.
+pub fn droppers(links: &[Link]) -> Vec<usize> {
+    links
+        .iter()
+        .filter(|l| l.kind == LinkKind::Clamp)
+        .filter_map(|l| match l.b {
+            Endpoint::Node(n) if n.node == 0 => Some(n.conductor),
+            _ => None,
+        })
+        .collect()
+}
+
+/// Conductor groups (a phase, a bundle's sub-conductors, with the droppers hung from them) without their
+/// droppers: the conductors that share a phase's current and whose ends carry its tension.
+pub fn without_droppers(groups: &[Vec<usize>], links: &[Link]) -> Vec<Vec<usize>> {
+    let d = droppers(links);
+    groups.iter().map(|g| g.iter().copied().filter(|c| !d.contains(c)).collect()).collect()
+}
+
 /// Add a dropper to the model: `conductor`'s wire is the dropper without its joint segment (nodes `1..=N`
 /// of [`dropper_nodes`], segments `2..=N`, each of `l0`); its first node is made free and joined to `top`
 /// (the span conductor's node, or a support point) by a [`LinkKind::Clamp`] with the law of the wire's

@@ -397,18 +397,8 @@ pub fn run_line_observed<'o>(
         None => None,
     };
     // A phase's members for its tension and swing: its conductor or its bundle's sub-conductors, not its
-    // droppers (the conductors hung by a clamp link from their first node).
-    let droppers: Vec<usize> = line
-        .links()
-        .iter()
-        .filter(|l| l.kind == LinkKind::Clamp)
-        .filter_map(|l| match l.b {
-            crate::line::Endpoint::Node(n) if n.node == 0 => Some(n.conductor),
-            _ => None,
-        })
-        .collect();
-    let members: Vec<Vec<usize>> =
-        plan.groups.iter().map(|g| g.iter().copied().filter(|c| !droppers.contains(c)).collect()).collect();
+    // droppers.
+    let members = crate::line::dropper::without_droppers(&plan.groups, line.links());
     let mut short = match &plan.short_circuit {
         Some(sc) if line.electromagnetic().is_some() => Some(super::short_circuit::ShortCircuitTracker::new(
             &line,

@@ -694,8 +694,6 @@ fn assemble(s: &LineScenario, plans: Vec<Plan>, global_only: Vec<Option<Plan>>) 
     // The model's conductors of each of the file's conductors, and each one's clearance group.
     let mut members_of: Vec<Vec<usize>> = Vec::new();
     let mut group_of: Vec<usize> = Vec::new();
-    // The droppers' model indices (they carry their phase's whole current, not a share of a bundle's).
-    let mut droppers: Vec<usize> = Vec::new();
     for (k, (c, plan)) in spec.conductors.iter().zip(&plans).enumerate() {
         let f = |name: &str| format!("line.conductors[{k}].{name}");
         if let Some(d) = &c.dropper {
@@ -729,7 +727,6 @@ fn assemble(s: &LineScenario, plans: Vec<Plan>, global_only: Vec<Option<Plan>>) 
             members_of.push(vec![index]);
             // A dropper is part of its span conductor's phase: its clearance is the phase's.
             groups[group_of[j]].push(index);
-            droppers.push(index);
             group_of.push(group_of[j]);
             continue;
         }
@@ -1026,12 +1023,11 @@ fn assemble(s: &LineScenario, plans: Vec<Plan>, global_only: Vec<Option<Plan>>) 
         // The current divides among a bundle's sub-conductors; a dropper carries its phase's whole current
         // (it leads the current from the busbar to the apparatus; the busbar is taken to carry it along its
         // whole length, the conservative choice: docs/short_circuit.md).
-        let sharing: Vec<Vec<usize>> =
-            groups.iter().map(|g| g.iter().copied().filter(|c| !droppers.contains(c)).collect()).collect();
+        let sharing = crate::line::dropper::without_droppers(&groups, line.links());
         let mut em = sc
             .electromagnetic(&group_names, &sharing, &radius, &direction)
             .map_err(|(field, why)| problem(field, "(short circuit)".into(), why))?;
-        for &d in &droppers {
+        for d in crate::line::dropper::droppers(line.links()) {
             let g = groups.iter().position(|g| g.contains(&d)).expect("a dropper has a group");
             let member = sharing[g].first().copied();
             if let Some(c) = em.carriers.iter().find(|c| Some(c.conductor) == member).copied() {

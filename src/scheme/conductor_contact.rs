@@ -16,6 +16,7 @@
 //! folds back on itself it can miss a nearer segment (module doc of [`crate::line::contact`]).
 
 use super::explicit::Explicit;
+use crate::element::pair::closest_points;
 use crate::line::contact::ConductorContact;
 
 /// The first contact of a run.
@@ -129,18 +130,11 @@ impl ContactState {
                     }
                     let (p0, p1) = (wf.position(i), wf.position(i + 1));
                     let x = [0, 1, 2].map(|c| p0[c] + s * (p1[c] - p0[c]));
+                    // The nearest point of segment j to x: the pair element's closest points with x as a
+                    // segment of zero length.
                     let seg = |j: usize| -> (f64, f64) {
-                        let (q0, q1) = (wt.position(j), wt.position(j + 1));
-                        let d = [q1[0] - q0[0], q1[1] - q0[1], q1[2] - q0[2]];
-                        let r = [x[0] - q0[0], x[1] - q0[1], x[2] - q0[2]];
-                        let dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-                        let u = if dd > 0.0 {
-                            ((r[0] * d[0] + r[1] * d[1] + r[2] * d[2]) / dd).clamp(0.0, 1.0)
-                        } else {
-                            0.0
-                        };
-                        let g = [r[0] - u * d[0], r[1] - u * d[1], r[2] - u * d[2]];
-                        (g[0] * g[0] + g[1] * g[1] + g[2] * g[2], u)
+                        let (d2, _, u) = closest_points(x, x, wt.position(j), wt.position(j + 1));
+                        (d2, u)
                     };
                     // Walk to the nearest segment from the last level's.
                     let mut j = (*hint).min(st - 1);
