@@ -23,6 +23,8 @@
 //! - [`thermal`]: conductor temperature from current and weather (IEEE 738, CIGRE TB 601).
 //! - [`sagtension`]: sag-tension tables of a span or a ruling span (stringing, creep, heavy load, knee).
 //! - [`shortcircuit`]: short-circuit forces on flexible conductors (IEC 60865-1 simplified method).
+//! - [`verify`]: solution verification of a run's numbers (Celik's observed order, Richardson extrapolate
+//!   and GCI over refined runs).
 //!
 //! The library holds the model only: the command line `ohl`, the paper cases, the plots, the benchmark
 //! and the progress bar are the applications of the `ohl-app` crate (`app/`).
@@ -43,4 +45,5 @@ pub mod scheme;
 pub mod shortcircuit;
 pub mod statics;
 pub mod thermal;
+pub mod verify;
 pub mod wire;
