@@ -4,6 +4,8 @@
 //!   file format, running, extracting, references, tables and figures);
 //! - [`plot`]: PNG and SVG charts (plotters);
 //! - [`cases`]: the line-section cases of `cases/` (runs, load figures, peak-to-residual tables);
+//! - [`converge`]: `ohl run --converge`, a scenario on refined levels with Celik's order, Richardson
+//!   extrapolate and GCI of every summary value;
 //! - [`bench`]: the kernel benchmark (measurements, machine description, CSV tables, throughput plot);
 //! - [`progress`]: the terminal progress bar of `ohl run`, an observer of the library's run loop;
 //! - [`run_plot`]: the figures of a run's output folder (`ohl plot RUN_DIR`).
@@ -15,6 +17,7 @@
 
 pub mod bench;
 pub mod cases;
+pub mod converge;
 pub mod line_cases;
 pub mod paper;
 pub mod plot;

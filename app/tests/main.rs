@@ -5,6 +5,7 @@
 mod bad_input;
 mod cases;
 mod closed_pipe;
+mod converge;
 mod examples;
 mod killed_run;
 mod line_cases;

@@ -31,6 +31,7 @@ macro_rules! err {
 
 pub mod bench;
 pub mod cases;
+pub mod converge;
 pub mod load_case;
 pub mod paper;
 pub mod plot;

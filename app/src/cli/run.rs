@@ -45,6 +45,9 @@ pub struct RunArgs {
     /// support loads and span sags and write it to DIR/static.json
     #[arg(long)]
     static_after: bool,
+    /// the convergence study (`--converge` and its options)
+    #[command(flatten)]
+    converge: super::converge::ConvergeArgs,
 }
 
 /// Above this many node-steps a run announces itself on stderr when no progress bar is drawn.
@@ -52,10 +55,25 @@ const ANNOUNCE_NODE_STEPS: f64 = 1.0e9;
 
 /// Run the command; exit 0 on success, 1 if unstable or output failed, 2 on invalid input.
 pub fn main(args: RunArgs) -> ExitCode {
-    let RunArgs { scenario: path, out, quiet, dry_run, allow_large, static_after } = args;
+    let RunArgs { scenario: path, out, quiet, dry_run, allow_large, static_after, converge } = args;
     if let Some(message) = heat_case_refusal(&path) {
         err!("error: {}: {message}", path.display());
         return ExitCode::from(2);
+    }
+    if converge.converge {
+        let line = std::fs::read_to_string(&path).is_ok_and(|t| scenario::line::is_line(&t));
+        if line || static_after || allow_large {
+            let what = if line {
+                "a [line] scenario (a single conductor or a [section] only, yet)"
+            } else if static_after {
+                "--static-after"
+            } else {
+                "--allow-large (give --budget)"
+            };
+            err!("error: {}: --converge is not available with {what}", path.display());
+            return ExitCode::from(2);
+        }
+        return super::converge::main(&path, &out, quiet, dry_run, &converge);
     }
     if std::fs::read_to_string(&path).is_ok_and(|t| scenario::line::is_line(&t)) {
         if static_after {

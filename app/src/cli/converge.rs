@@ -1,0 +1,161 @@
+//! `ohl run SCENARIO --converge`: the scenario on refined levels with every design value's observed
+//! order, Richardson extrapolate and GCI ([`ohl_app::converge`]; docs/convergence.md). The finest level's
+//! files are written to `--out` as a plain run's, the others under `--out/levels/`, the table to stdout
+//! and `--out/convergence.json`.
+//!
+//! Exit codes: 0 the table was made (whatever the verdicts); 1 a level went unstable or a file could not
+//! be written; 2 the scenario or a level is invalid, the options are, or the finest level is above
+//! `--budget` (the message quotes the estimate).
+
+use std::path::Path;
+use std::process::ExitCode;
+
+use ohl_app::converge::{self, Options, Refine, report};
+
+/// The options of `--converge` (a part of `ohl run`'s arguments).
+#[derive(clap::Args, Clone, Debug)]
+pub struct ConvergeArgs {
+    /// run the scenario on refined levels and report every summary value's observed order, Richardson
+    /// extrapolate and GCI (Celik 2008; docs/convergence.md); writes DIR/convergence.json
+    #[arg(long)]
+    pub converge: bool,
+    /// with --converge: refine the grid (segments of every span times the ratio, the step following at
+    /// the Courant number) or the time step alone (the Courant number and the smoothing divided by it)
+    #[arg(long, value_enum, default_value = "grid", requires = "converge")]
+    pub refine: Refine,
+    /// with --converge: number of levels, at least 3 (the three finest give the estimate)
+    #[arg(long, default_value_t = 3, requires = "converge")]
+    pub levels: usize,
+    /// with --converge: refinement ratio between levels, a whole number of at least 2
+    #[arg(long, default_value_t = 2, requires = "converge")]
+    pub ratio: usize,
+    /// with --converge: the scenario as written is the finest level and the others are coarser (default:
+    /// it is the coarsest and the others finer)
+    #[arg(long, requires = "converge")]
+    pub coarsen: bool,
+    /// with --converge --refine grid: divide the velocity smoothing by the grid factor (b ds / ds0), so
+    /// that its numerical viscosity vanishes at second order instead of first
+    #[arg(long, requires = "converge")]
+    pub scaled_smoothing: bool,
+    /// with --converge: a quantity is "converged within rtol" when its fine-level GCI is at most this
+    /// fraction of its value [-]
+    #[arg(long, default_value_t = 0.01, requires = "converge")]
+    pub rtol: f64,
+    /// with --converge: refuse when the finest level needs more node-steps than this (default: the budget
+    /// of one run, 2e10, about 130 s)
+    #[arg(long, default_value_t = ohl::scenario::work::BUDGET_NODE_STEPS, requires = "converge")]
+    pub budget: f64,
+}
+
+/// Run the study of `path` into `out`.
+pub fn main(path: &Path, out: &Path, quiet: bool, dry_run: bool, a: &ConvergeArgs) -> ExitCode {
+    if !(a.rtol.is_finite() && a.rtol > 0.0) {
+        err!("error: --rtol {}: must be a positive number (a fraction: 0.01 is 1 %)", a.rtol);
+        return ExitCode::from(2);
+    }
+    if !(a.budget.is_finite() && a.budget > 0.0) {
+        err!("error: --budget {}: must be a positive number of node-steps", a.budget);
+        return ExitCode::from(2);
+    }
+    let o = Options {
+        refine: a.refine,
+        levels: a.levels,
+        ratio: a.ratio,
+        coarsen: a.coarsen,
+        scaled_smoothing: a.scaled_smoothing,
+        rtol: a.rtol,
+        budget_node_steps: a.budget,
+    };
+    let planned = match converge::plan(path, out, &o) {
+        Ok(p) => p,
+        Err(e) => {
+            err!("error: {e}");
+            return ExitCode::from(e.exit_code());
+        }
+    };
+    for w in &planned[0].plan.warnings {
+        err!("warning: {}: {w}", path.display());
+    }
+    let n = planned.len();
+    if dry_run {
+        out!("{}: --converge dry run, nothing run ({n} levels, {:?} refinement)", planned[0].plan.name, a.refine);
+        for p in &planned {
+            let e = &p.estimate;
+            out!(
+                "  level {:>6}: {} segments, dt = {:.4e} s, {:.3e} node-steps, about {:.1} s -> {}",
+                p.level.label(),
+                e.segments,
+                e.dt_s,
+                e.work_node_steps(),
+                e.wall_time_s(),
+                p.out_dir.display()
+            );
+        }
+        return ExitCode::SUCCESS;
+    }
+    let result = converge::run(path, planned, |k, p| {
+        err!(
+            "converge: level {} of {n} ({}): {} segments, dt = {:.4e} s, about {:.1} s",
+            k + 1,
+            p.level.label(),
+            p.estimate.segments,
+            p.estimate.dt_s,
+            p.estimate.wall_time_s()
+        );
+    });
+    let (runs, finest) = match result {
+        Ok(r) => r,
+        Err(e) => {
+            err!("error: {e}");
+            return ExitCode::from(e.exit_code());
+        }
+    };
+    let quantities = converge::analyse(&runs, a.rtol);
+    let study = report::Study {
+        scenario: path.display().to_string(),
+        name: finest.name.clone(),
+        options: &o,
+        safety_factor: ohl::verify::gci::SAFETY_FACTOR_THREE_GRIDS,
+        levels: &runs,
+        cost_relative_to_one_run: report::cost(&runs),
+        quantities: &quantities,
+    };
+    if let Err(e) = report::write_json(out, &study) {
+        err!("error: {}: {e}", out.join("convergence.json").display());
+        return ExitCode::from(1);
+    }
+    if !quiet {
+        let levels: Vec<String> =
+            runs.iter().map(|r| format!("{} ({} segments, dt {:.4e} s)", r.label, r.segments, r.dt_s)).collect();
+        out!(
+            "{}: --converge, {:?} refinement, levels {}; Celik's order, Richardson extrapolate and GCI (F_s = 1.25) from the three finest",
+            finest.name,
+            a.refine,
+            levels.join(", ")
+        );
+        for line in report::table(&study) {
+            out!("{line}");
+        }
+        let count = |v: &str| quantities.iter().filter(|q| q.verdict == v).count();
+        let hidden = quantities.iter().filter(|q| !report::printed(q)).count();
+        out!(
+            "  {} quantities: {} converged within rtol, {} not within rtol, {} oscillatory, {} divergent, {} indeterminate, {} constant, {} zero to rounding, {} unpaired ({hidden} constant, zero or per-phase ones in convergence.json only)",
+            quantities.len(),
+            count("converged within rtol"),
+            count("not within rtol"),
+            count("oscillatory"),
+            count("divergent"),
+            count("indeterminate"),
+            count("constant"),
+            count("zero to rounding"),
+            count("unpaired")
+        );
+        let wall: f64 = runs.iter().map(|r| r.wall_time_s).sum();
+        out!(
+            "  cost: {wall:.2} s for {n} levels, {:.2} times the scenario as written; the finest level's files in {}, convergence.json there",
+            study.cost_relative_to_one_run,
+            out.display()
+        );
+    }
+    ExitCode::SUCCESS
+}
