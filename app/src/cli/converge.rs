@@ -139,14 +139,16 @@ pub fn main(path: &Path, out: &Path, quiet: bool, dry_run: bool, a: &ConvergeArg
         let count = |v: &str| quantities.iter().filter(|q| q.verdict == v).count();
         let hidden = quantities.iter().filter(|q| !report::printed(q)).count();
         out!(
-            "  {} quantities: {} converged within rtol, {} not within rtol, {} oscillatory, {} divergent, {} indeterminate, {} constant, {} zero to rounding, {} unpaired ({hidden} constant, zero or per-phase ones in convergence.json only)",
+            "  {} quantities: {} converged within rtol, {} not within rtol, {} oscillatory, {} divergent, {} peaks moving between events, {} indeterminate, {} constant, {} constant to rounding, {} zero to rounding, {} unpaired ({hidden} constant, zero or per-phase ones in convergence.json only)",
             quantities.len(),
             count("converged within rtol"),
             count("not within rtol"),
             count("oscillatory"),
             count("divergent"),
+            count(converge::PEAK_MOVES),
             count("indeterminate"),
             count("constant"),
+            count("constant to rounding"),
             count("zero to rounding"),
             count("unpaired")
         );

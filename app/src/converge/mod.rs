@@ -266,7 +266,9 @@ pub const ROUNDING_ZERO: f64 = 1e-10;
 /// The verdict of an estimate against `rtol`: "converged within rtol" (converging, fine-level GCI at most
 /// `rtol`), "not within rtol" (converging, a wider band), or what the sequence does instead
 /// ("oscillatory", "divergent", "indeterminate", "constant"); a quantity that is zero to rounding on
-/// every level ([`ROUNDING_ZERO`]) is "zero to rounding" whatever its sequence does.
+/// every level ([`ROUNDING_ZERO`]) is "zero to rounding" whatever its sequence does, and a peak whose time
+/// does not converge is [`PEAK_MOVES`] ([`analyse`]); one whose values differ by at most [`ROUNDING_ZERO`]
+/// of their magnitude (an equilibrium to Newton's tolerance) is "constant to rounding".
 pub fn verdict(e: &Estimate, rtol: f64) -> &'static str {
     use gci::Behaviour::*;
     match e.behaviour {
@@ -315,6 +317,11 @@ pub fn analyse(runs: &[LevelRun], rtol: f64) -> Vec<Quantity> {
             let verdict = match &estimate {
                 None => "unpaired",
                 Some(_) if zero && values.iter().any(|v| v.is_some_and(|v| v != 0.0)) => "zero to rounding",
+                Some(e)
+                    if e.behaviour != gci::Behaviour::Constant && e.spread <= ROUNDING_ZERO * phi_scale(&values) =>
+                {
+                    "constant to rounding"
+                }
                 Some(e) => verdict(e, rtol),
             };
             Quantity { path: path.to_string(), values, estimate, verdict }
@@ -331,5 +338,45 @@ pub fn analyse(runs: &[LevelRun], rtol: f64) -> Vec<Quantity> {
             q.verdict = "zero to rounding";
         }
     }
+    // a peak whose time does not converge and spreads over more than rtol of itself is not the same event
+    // on every level (the largest of several pulses changes with the grid): its value is no design value
+    // with an error bar, whatever its own three numbers do. (The time of a smooth maximum converges
+    // slowly and noisily while its value converges fast: a spread within rtol is that, not a new pulse.)
+    let moving: Vec<String> = quantities
+        .iter()
+        .filter(|q| {
+            q.path.ends_with(".time_s")
+                && !matches!(
+                    q.verdict,
+                    "converged within rtol" | "not within rtol" | "constant" | "constant to rounding"
+                )
+                && moved(q, rtol)
+        })
+        .filter_map(|q| q.path.strip_suffix(".time_s").map(str::to_string))
+        .collect();
+    for q in &mut quantities {
+        let head = q.path.rsplit_once('.').map(|(h, _)| h);
+        let is_value = !q.path.ends_with(".time_s");
+        if is_value
+            && head.is_some_and(|h| moving.iter().any(|m| m == h))
+            && !matches!(q.verdict, "zero to rounding" | "constant" | "constant to rounding")
+        {
+            q.verdict = PEAK_MOVES;
+        }
+    }
     quantities
 }
+
+/// Whether a peak time `q` spreads over more than `rtol` of its finest value (or has no estimate).
+fn moved(q: &Quantity, rtol: f64) -> bool {
+    let fine = q.values.last().copied().flatten().unwrap_or(0.0);
+    q.estimate.as_ref().is_none_or(|e| e.spread > rtol * fine.abs())
+}
+
+/// The largest magnitude of a quantity's values.
+fn phi_scale(values: &[Option<f64>]) -> f64 {
+    values.iter().flatten().fold(0.0, |m: f64, v| m.max(v.abs()))
+}
+
+/// The verdict of a peak value whose time is oscillatory, divergent or indeterminate under refinement.
+pub const PEAK_MOVES: &str = "peak moves between events";

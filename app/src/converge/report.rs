@@ -4,7 +4,8 @@
 //! of a run peak (`phases[...]`, which `convergence.json` keeps): the quantity's path, its value on each
 //! level (coarse to fine), the observed order `p`, the Richardson extrapolate, the fine-level GCI in
 //! percent of the finest value, and the verdict. An oscillatory, divergent or indeterminate quantity has
-//! no extrapolate and no GCI (`-`): it is no number with an error bar.
+//! no extrapolate and no GCI (`-`): it is no number with an error bar; nor is a peak whose time does not
+//! converge (its extrapolate and GCI stay in `convergence.json`, its verdict says the peak moves).
 
 use std::io::Write as _;
 use std::path::Path;
@@ -64,7 +65,7 @@ fn num(x: Option<f64>) -> String {
 
 /// Whether a quantity goes into the printed table (module doc).
 pub fn printed(q: &Quantity) -> bool {
-    !q.path.starts_with("phases[") && q.verdict != "constant" && q.verdict != "zero to rounding"
+    !q.path.starts_with("phases[") && !matches!(q.verdict, "constant" | "constant to rounding" | "zero to rounding")
 }
 
 /// The table's lines.
@@ -85,7 +86,7 @@ pub fn table(study: &Study) -> Vec<String> {
     for q in study.quantities.iter().filter(|q| printed(q)) {
         let vals: Vec<String> = q.values.iter().map(|v| format!("{:>14}", num(*v))).collect();
         let e = q.estimate.as_ref();
-        let shows_band = e.is_some_and(|e| e.extrapolate.is_some());
+        let shows_band = e.is_some_and(|e| e.extrapolate.is_some()) && q.verdict != super::PEAK_MOVES;
         let p = e.and_then(|e| e.order).map_or("-".into(), |p| format!("{p:.3}"));
         let ext = if shows_band { num(e.and_then(|e| e.extrapolate)) } else { "-".into() };
         let g = e.and_then(|e| e.gci_fine).filter(|_| shows_band).map_or("-".into(), |g| format!("{:.3}", 100.0 * g));
