@@ -21,23 +21,19 @@ fn quantity<'a>(json: &'a serde_json::Value, path: &str) -> &'a serde_json::Valu
     json["quantities"].as_array().unwrap().iter().find(|q| q["path"] == path).unwrap_or_else(|| panic!("{path}"))
 }
 
-/// The catenary of paper case fig2b (160 m, 1 kg/m, EA = 792000.54 N) run to rest by dynamic relaxation
-/// (mass damping 2 /s: the slowest mode, about 1.2 rad/s, decays at zeta / 2 = 1 /s, so after 150 s the
-/// state is e^-150 from rest, far below the discretisation error) on N = 20, 40, 80. The lumped chain is a
-/// second-order discretisation with an even error expansion `a h^2 + b h^4` (static study: order 2.000),
-/// so the three-grid order is `2 + log2((1 + 20 beta) / (1 + 5 beta))`, `beta = b h_1^2 / a`: the
-/// tolerance 0.02 on `p` admits `|beta| <= 9e-4`, a fourth-order part below 0.1 % of the error on the
-/// finest grid. The exact elastic catenary (`ohl::exact`) must lie in the extrapolate's own GCI band.
-#[test]
-fn converge_on_the_settled_catenary_recovers_order_two_and_the_exact_sag() {
-    let dir = tmp("catenary");
-    let text = std::fs::read_to_string(repo().join("paper_cases/fig2b_catenary.toml")).unwrap();
+/// Run `--converge --rtol 1e-3` on paper case `case` run to rest: `segments = 20` (levels 20, 40, 80),
+/// mass damping 2 /s added and the end at 150 s (dynamic relaxation: the slowest mode, about 1.2 rad/s
+/// for both cases, decays at zeta / 2 = 1 /s, so the state is e^-150 from rest, far below the
+/// discretisation error). Returns the mid-span displacement component `component`'s entry.
+fn settled(case: &str, end: &str, component: usize) -> serde_json::Value {
+    let dir = tmp(case);
+    let text = std::fs::read_to_string(repo().join(format!("paper_cases/{case}.toml"))).unwrap();
     let text = text
         .replace("segments = 50", "segments = 20")
-        .replace("end_time_s = 260.8", "end_time_s = 150.0")
-        .replace("eta_n_s = 316.76", "eta_n_s = 316.76\nmass_damping_per_s = 2.0")
+        .replace(end, "end_time_s = 150.0")
+        .replace("[numerics]\n", "[numerics]\nmass_damping_per_s = 2.0\n")
         .replace("sample_interval_s = 0.02", "sample_interval_s = 1.0");
-    let file = dir.join("catenary.toml");
+    let file = dir.join("case.toml");
     std::fs::write(&file, text).unwrap();
     let out = dir.join("out");
     let o = Command::new(env!("CARGO_BIN_EXE_ohl"))
@@ -46,26 +42,48 @@ fn converge_on_the_settled_catenary_recovers_order_two_and_the_exact_sag() {
         .unwrap();
     let stdout = String::from_utf8_lossy(&o.stdout);
     assert!(o.status.success(), "{stdout}\n{}", String::from_utf8_lossy(&o.stderr));
-    let json: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(out.join("convergence.json")).unwrap()).unwrap();
-    let sag = quantity(&json, "final_midspan_displacement_m[2]");
-    let e = &sag["estimate"];
-    assert_eq!(e["behaviour"], "converging", "{sag}");
-    let p = e["order"].as_f64().unwrap();
-    assert!((p - 2.0).abs() <= 0.02, "observed order {p}");
-    let exact = ohl::exact::catenary::ElasticCatenary::level(160.0, 160.0, 9.81, 792000.54).unwrap();
-    let z = exact.midspan_displacement_m()[2];
-    let ext = e["extrapolate"].as_f64().unwrap();
-    let band = e["gci_fine_abs"].as_f64().unwrap();
-    assert!((ext - z).abs() <= band, "extrapolate {ext} exact {z} band {band}");
-    // and the fine value itself lies within its band of the exact value (what the GCI claims)
-    let fine = sag["values"][2].as_f64().unwrap();
-    assert!((fine - z).abs() <= band, "fine {fine} exact {z} band {band}");
-    assert_eq!(sag["verdict"], "converged within rtol");
-    assert!(stdout.contains("final_midspan_displacement_m[2]"), "{stdout}");
+    let path = format!("final_midspan_displacement_m[{component}]");
+    assert!(stdout.contains(&path), "{stdout}");
     // the finest level's files are the plain run's, in --out
     assert!(out.join("summary.json").is_file() && out.join("levels").is_dir());
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("convergence.json")).unwrap()).unwrap();
     let _ = std::fs::remove_dir_all(&dir);
+    quantity(&json, &path).clone()
+}
+
+/// The settled shape's observed order is the chain's 2 and the exact value lies in the GCI band of both
+/// the extrapolate and the fine value. The lumped chain is a second-order discretisation with an even
+/// error expansion `a h^2 + b h^4` (study `static`: order 2.000), so the three-grid order is
+/// `2 + log2((1 + 20 beta) / (1 + 5 beta))`, `beta = b h_1^2 / a`: the tolerance 0.02 on `p` admits
+/// `|beta| <= 9e-4`, a fourth-order part below 0.1 % of the error on the finest grid.
+fn check_settled(q: &serde_json::Value, exact: f64) {
+    let e = &q["estimate"];
+    assert_eq!(e["behaviour"], "converging", "{q}");
+    let p = e["order"].as_f64().unwrap();
+    assert!((p - 2.0).abs() <= 0.02, "observed order {p}");
+    let ext = e["extrapolate"].as_f64().unwrap();
+    let band = e["gci_fine_abs"].as_f64().unwrap();
+    assert!((ext - exact).abs() <= band, "extrapolate {ext} exact {exact} band {band}");
+    let fine = q["values"][2].as_f64().unwrap();
+    assert!((fine - exact).abs() <= band, "fine {fine} exact {exact} band {band}");
+    assert_eq!(q["verdict"], "converged within rtol");
+}
+
+/// Paper case fig2b (160 m, 1 kg/m, EA = 792000.54 N, own weight): the elastic catenary's sag.
+#[test]
+fn converge_on_the_settled_catenary_recovers_order_two_and_the_exact_sag() {
+    let q = settled("fig2b_catenary", "end_time_s = 260.8", 2);
+    let exact = ohl::exact::catenary::ElasticCatenary::level(160.0, 160.0, 9.81, 792000.54).unwrap();
+    check_settled(&q, exact.midspan_displacement_m()[2]);
+}
+
+/// Paper case fig2a (the same wire under the normal pressure 3.80485 N/m, no weight): the elastic arc.
+#[test]
+fn converge_on_the_settled_arc_recovers_order_two_and_the_exact_deflection() {
+    let q = settled("fig2a_wind_arc", "end_time_s = 197.6", 0);
+    let exact = ohl::exact::arc::ElasticArc::solve(160.0, 160.0, 3.80485, 792000.54).unwrap();
+    check_settled(&q, exact.max_deflection_m());
 }
 
 /// A study whose finest level is above --budget is refused before anything runs, exit 2, with the estimate.

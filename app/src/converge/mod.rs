@@ -192,6 +192,8 @@ pub struct LevelRun {
     pub wall_time_s: f64,
     /// its output directory
     pub out_dir: String,
+    /// the phases of its run (between events)
+    pub phases: usize,
     /// its scalars by path
     #[serde(skip)]
     pub scalars: Vec<(String, f64)>,
@@ -237,6 +239,7 @@ pub fn run(
             node_steps_estimate: p.estimate.work_node_steps(),
             wall_time_s: wall,
             out_dir: p.out_dir.display().to_string(),
+            phases: s.phases.len(),
             scalars: flatten::scalars(&value),
         });
         last = Some(outcome.summary);
@@ -279,15 +282,25 @@ pub fn verdict(e: &Estimate, rtol: f64) -> &'static str {
 }
 
 /// Pair the levels' scalars by path (in the finest level's order, then any path the finest lacks) and
-/// estimate each from the three finest levels.
+/// estimate each from the three finest levels. The per-phase peaks are left out when the levels do not
+/// have the same number of phases (an event per segment, as a progressive shedding front, has as many
+/// phases as segments): they are not the same phases.
 pub fn analyse(runs: &[LevelRun], rtol: f64) -> Vec<Quantity> {
+    use std::collections::HashMap;
+    // the phases are paired only where every level has as many (a progressive event has one per segment)
+    let same_phases = runs.windows(2).all(|w| w[0].phases == w[1].phases);
     let mut paths: Vec<&str> = Vec::new();
+    let mut by_level: Vec<HashMap<&str, f64>> = Vec::with_capacity(runs.len());
+    let mut seen = std::collections::HashSet::new();
     for r in runs.iter().rev() {
         for (p, _) in &r.scalars {
-            if !paths.contains(&p.as_str()) {
+            if (same_phases || !p.starts_with("phases[")) && seen.insert(p.as_str()) {
                 paths.push(p);
             }
         }
+    }
+    for r in runs {
+        by_level.push(r.scalars.iter().map(|(p, v)| (p.as_str(), *v)).collect());
     }
     let n = runs.len();
     // the unit of a path: its last key's suffix after the last `_` (`value_n` -> `n`), and its scale
@@ -304,8 +317,7 @@ pub fn analyse(runs: &[LevelRun], rtol: f64) -> Vec<Quantity> {
     let mut quantities: Vec<Quantity> = paths
         .into_iter()
         .map(|path| {
-            let values: Vec<Option<f64>> =
-                runs.iter().map(|r| r.scalars.iter().find(|(p, _)| p == path).map(|(_, v)| *v)).collect();
+            let values: Vec<Option<f64>> = by_level.iter().map(|m| m.get(path).copied()).collect();
             let h = [runs[n - 1].h_relative, runs[n - 2].h_relative, runs[n - 3].h_relative];
             let phi = (values[n - 1], values[n - 2], values[n - 3]);
             let estimate = match phi {
