@@ -54,6 +54,7 @@ __all__ = [
     "ampacity",
     "conductor",
     "conductors",
+    "converge",
     "deicing",
     "deicing_current",
     "equilibrium",
@@ -512,6 +513,44 @@ def shortcircuit(path: Union[str, "os.PathLike[str]"]) -> Dict[str, Any]:
     import json
 
     return json.loads(_ohl.shortcircuit_raw(path))
+
+
+def converge(
+    path: Union[str, "os.PathLike[str]"],
+    out: Union[str, "os.PathLike[str]"],
+    *,
+    refine: str = "grid",
+    levels: int = 3,
+    ratio: int = 2,
+    coarsen: bool = False,
+    scaled_smoothing: bool = False,
+    rtol: float = 0.01,
+    budget: float = 2e10,
+) -> Dict[str, Any]:
+    """Error bars on a scenario's own numbers: the study of ``ohl run PATH --out OUT --converge``
+    (docs/convergence.md). The scenario runs on ``levels`` levels refined by ``ratio`` (``refine="grid"``:
+    segments of every span, the step following at the Courant number; ``"step"``: the step alone), the
+    written scenario the coarsest (the finest with ``coarsen=True``); every scalar of its summary gets
+    Celik's observed order, the Richardson extrapolate and the GCI (F_s = 1.25) from the three finest
+    levels, and a verdict against ``rtol``. The finest level's files are written to ``out``, the others
+    under ``out/levels/``, and ``out/convergence.json``.
+
+    Returns the dict of ``convergence.json``: ``options``, ``levels`` (segments, step, steps, estimated
+    work, wall time, output directory per level, coarse to fine), ``cost_relative_to_one_run`` and
+    ``quantities``, one dict each: ``path`` (as in ``summary.json``), ``values`` (coarse to fine),
+    ``estimate`` (``behaviour``, ``order``, ``extrapolate``, ``gci_fine``, ``gci_fine_abs``, ... or None)
+    and ``verdict`` ("converged within rtol", "not within rtol", "oscillatory", "divergent", "peak moves
+    between events", "indeterminate", "constant", "constant to rounding", "zero to rounding", "unpaired").
+
+    Raises :class:`ScenarioError` for invalid input, :class:`WorkBudgetError` when the finest level is
+    above ``budget`` node-steps, ``ValueError`` for bad options or a level that is no valid scenario, and
+    ``RuntimeError`` when a level goes unstable.
+    """
+    import json
+
+    return json.loads(
+        _ohl.converge_raw(path, out, refine, levels, ratio, coarsen, scaled_smoothing, rtol, budget)
+    )
 
 
 def sagtension(

@@ -304,6 +304,18 @@ def line_equilibrium(
 # --- sag-tension -------------------------------------------------------------------------------------
 
 def shortcircuit(path: Union[str, os.PathLike[str]]) -> Dict[str, Any]: ...
+def converge(
+    path: Union[str, os.PathLike[str]],
+    out: Union[str, os.PathLike[str]],
+    *,
+    refine: str = ...,
+    levels: int = ...,
+    ratio: int = ...,
+    coarsen: bool = ...,
+    scaled_smoothing: bool = ...,
+    rtol: float = ...,
+    budget: float = ...,
+) -> Dict[str, Any]: ...
 def sagtension(case: Union[Mapping, str, os.PathLike[str]], *, name: str = "<dict>") -> Dict[str, Any]: ...
 
 # --- thermal -----------------------------------------------------------------------------------------

@@ -5,10 +5,12 @@
 //! `ohl::output::snapshots::node_rows`). Line scenarios (`[line]`, several conductors) are run by
 //! `ohl::run::line::run_line_observed` with the same observer on each conductor ([`line`]). The pure-Python
 //! half (`python/ohl/__init__.py`) holds the result classes and the exceptions; `docs/python.md` documents
-//! the API. Every argument is checked at the call ([`args`]; dicts: [`dict_input`]), as
+//! the API. `ohl.converge` runs the convergence study of the application crate
+//! (`ohl_app::converge`, as `ohl run --converge`). Every argument is checked at the call ([`args`]; dicts: [`dict_input`]), as
 //! `python/README.md` states the error contract.
 
 mod args;
+mod converge;
 mod convert;
 mod dict_input;
 mod errors;
@@ -39,6 +41,7 @@ fn _ohl(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(thermal::deicing_current, m)?)?;
     m.add_function(wrap_pyfunction!(sagtension::sagtension_raw, m)?)?;
     m.add_function(wrap_pyfunction!(shortcircuit::shortcircuit_raw, m)?)?;
+    m.add_function(wrap_pyfunction!(converge::converge_raw, m)?)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }
