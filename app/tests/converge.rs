@@ -173,3 +173,38 @@ fn converge_on_the_break_case_agrees_with_the_section_transients_study() {
     assert_eq!(q["verdict"], "peak moves between events", "{q}");
     assert!(quantity(&smoothed, "supports[1].peaks.components[1].time_s")["verdict"] != "converged within rtol");
 }
+
+/// Levels that cannot be made are refused before anything runs, exit 2, naming the field as written: a
+/// grid that does not divide for `--coarsen`, a coarsened Courant number above 1, a line scenario.
+#[test]
+fn converge_refuses_levels_that_are_no_scenario() {
+    let dir = tmp("refusals");
+    let out = dir.join("out");
+    let run = |args: &[&str]| {
+        let o = Command::new(env!("CARGO_BIN_EXE_ohl"))
+            .arg("run")
+            .args(args)
+            .arg("--out")
+            .arg(&out)
+            .arg("--converge")
+            .current_dir(repo())
+            .output()
+            .unwrap();
+        (o.status.code(), String::from_utf8_lossy(&o.stderr).to_string())
+    };
+    let (code, err) = run(&["paper_cases/fig2b_catenary.toml", "--coarsen"]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(err.contains("--coarsen: field `geometry.segments` = 50 is not divisible by 4"), "{err}");
+    let (code, err) = run(&["cases/b_ice_shedding.toml", "--coarsen", "--refine", "step"]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(err.contains("level x1/4 of the study (Courant number 1.6)"), "{err}");
+    assert!(err.contains("field `numerics.courant` = 1.6 is not allowed: must be in (0, 1]"), "{err}");
+    let (code, err) = run(&["cases/f_vertical_ice_shedding.toml"]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(err.contains("--converge is not available with a [line] scenario"), "{err}");
+    let (code, err) = run(&["paper_cases/fig2b_catenary.toml", "--levels", "2"]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(err.contains("at least 3 levels"), "{err}");
+    assert!(!out.exists(), "nothing may run");
+    let _ = std::fs::remove_dir_all(&dir);
+}
