@@ -54,7 +54,7 @@ pub fn write_json(dir: &Path, study: &Study) -> std::io::Result<()> {
 fn num(x: Option<f64>) -> String {
     match x {
         None => "-".into(),
-        Some(v) if v == 0.0 => "0".into(),
+        Some(0.0) => "0".into(),
         Some(v) if (1e-3..1e7).contains(&v.abs()) => {
             let digits = (6 - v.abs().log10().floor() as i32).clamp(0, 9) as usize;
             format!("{v:.digits$}")
