@@ -21,20 +21,23 @@ fn quantity<'a>(json: &'a serde_json::Value, path: &str) -> &'a serde_json::Valu
     json["quantities"].as_array().unwrap().iter().find(|q| q["path"] == path).unwrap_or_else(|| panic!("{path}"))
 }
 
+/// Paper case `case` run to rest (see [`settled`]).
+fn settled_text(case: &str, end: &str) -> String {
+    let text = std::fs::read_to_string(repo().join(format!("paper_cases/{case}.toml"))).unwrap();
+    text.replace("segments = 50", "segments = 20")
+        .replace(end, "end_time_s = 150.0")
+        .replace("[numerics]\n", "[numerics]\nmass_damping_per_s = 2.0\n")
+        .replace("sample_interval_s = 0.02", "sample_interval_s = 1.0")
+}
+
 /// Run `--converge --rtol 1e-3` on paper case `case` run to rest: `segments = 20` (levels 20, 40, 80),
 /// mass damping 2 /s added and the end at 150 s (dynamic relaxation: the slowest mode, about 1.2 rad/s
 /// for both cases, decays at zeta / 2 = 1 /s, so the state is e^-150 from rest, far below the
 /// discretisation error). Returns the mid-span displacement component `component`'s entry.
 fn settled(case: &str, end: &str, component: usize) -> serde_json::Value {
     let dir = tmp(case);
-    let text = std::fs::read_to_string(repo().join(format!("paper_cases/{case}.toml"))).unwrap();
-    let text = text
-        .replace("segments = 50", "segments = 20")
-        .replace(end, "end_time_s = 150.0")
-        .replace("[numerics]\n", "[numerics]\nmass_damping_per_s = 2.0\n")
-        .replace("sample_interval_s = 0.02", "sample_interval_s = 1.0");
     let file = dir.join("case.toml");
-    std::fs::write(&file, text).unwrap();
+    std::fs::write(&file, settled_text(case, end)).unwrap();
     let out = dir.join("out");
     let o = Command::new(env!("CARGO_BIN_EXE_ohl"))
         .args(["run", file.to_str().unwrap(), "--out", out.to_str().unwrap(), "--converge", "--rtol", "1e-3"])
@@ -206,5 +209,60 @@ fn converge_refuses_levels_that_are_no_scenario() {
     assert_eq!(code, Some(2), "{err}");
     assert!(err.contains("at least 3 levels"), "{err}");
     assert!(!out.exists(), "nothing may run");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// `ohl sweep --converge`: a case's row holds the finest level's results and the extrapolate, GCI and
+/// verdict of its design values, the same numbers (bit for bit: the same code, ryu's round trip) as
+/// `ohl run --converge` on the same scenario; `--keep-runs` writes the case's convergence.json.
+#[test]
+fn sweep_converge_rows_are_the_studies_of_their_cases() {
+    let dir = tmp("sweep");
+    let file = dir.join("catenary.toml");
+    std::fs::write(&file, settled_text("fig2b_catenary", "end_time_s = 260.8")).unwrap();
+    let ohl = |args: &[&str]| {
+        let o = Command::new(env!("CARGO_BIN_EXE_ohl")).args(args).output().unwrap();
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    };
+    let (sweep, run) = (dir.join("sweep"), dir.join("run"));
+    let f = file.to_str().unwrap();
+    ohl(&[
+        "sweep",
+        f,
+        "--vary",
+        "geometry.segments=20",
+        "--converge",
+        "--rtol",
+        "1e-3",
+        "--keep-runs",
+        "--quiet",
+        "--out",
+        sweep.to_str().unwrap(),
+    ]);
+    ohl(&["run", f, "--converge", "--rtol", "1e-3", "--quiet", "--out", run.to_str().unwrap()]);
+    let mut r = csv::Reader::from_path(sweep.join("sweep.csv")).unwrap();
+    let head: Vec<String> = r.headers().unwrap().iter().map(String::from).collect();
+    let row: Vec<String> = r.records().next().unwrap().unwrap().iter().map(String::from).collect();
+    let cell = |c: &str| row[head.iter().position(|h| h == c).unwrap_or_else(|| panic!("{c}"))].clone();
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(run.join("convergence.json")).unwrap()).unwrap();
+    let t = quantity(&json, "peak_max_tension_n");
+    assert_eq!(cell("status"), "completed");
+    assert_eq!(cell("segments"), "80", "the finest level's results");
+    assert_eq!(cell("peak_max_tension_n").parse::<f64>().unwrap(), t["values"][2].as_f64().unwrap());
+    assert_eq!(
+        cell("peak_max_tension_extrapolate_n").parse::<f64>().unwrap(),
+        t["estimate"]["extrapolate"].as_f64().unwrap()
+    );
+    assert_eq!(cell("peak_max_tension_gci").parse::<f64>().unwrap(), t["estimate"]["gci_fine"].as_f64().unwrap());
+    assert_eq!(cell("peak_max_tension_verdict"), t["verdict"].as_str().unwrap());
+    let sag = quantity(&json, "final_midspan_displacement_m[2]");
+    assert_eq!(cell("final_mid_dx3_m").parse::<f64>().unwrap(), sag["values"][2].as_f64().unwrap());
+    let within =
+        json["quantities"].as_array().unwrap().iter().filter(|q| q["verdict"] == "converged within rtol").count();
+    assert_eq!(cell("quantities_converged_within_rtol"), within.to_string());
+    let kept: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(sweep.join("cases/0/convergence.json")).unwrap()).unwrap();
+    assert_eq!(kept["quantities"], json["quantities"]);
     let _ = std::fs::remove_dir_all(&dir);
 }

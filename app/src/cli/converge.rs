@@ -47,24 +47,35 @@ pub struct ConvergeArgs {
     pub budget: f64,
 }
 
+impl ConvergeArgs {
+    /// The study's options, or why they are not valid.
+    pub fn options(&self) -> Result<Options, String> {
+        if !(self.rtol.is_finite() && self.rtol > 0.0) {
+            return Err(format!("--rtol {}: must be a positive number (a fraction: 0.01 is 1 %)", self.rtol));
+        }
+        if !(self.budget.is_finite() && self.budget > 0.0) {
+            return Err(format!("--budget {}: must be a positive number of node-steps", self.budget));
+        }
+        Ok(Options {
+            refine: self.refine,
+            levels: self.levels,
+            ratio: self.ratio,
+            coarsen: self.coarsen,
+            scaled_smoothing: self.scaled_smoothing,
+            rtol: self.rtol,
+            budget_node_steps: self.budget,
+        })
+    }
+}
+
 /// Run the study of `path` into `out`.
 pub fn main(path: &Path, out: &Path, quiet: bool, dry_run: bool, a: &ConvergeArgs) -> ExitCode {
-    if !(a.rtol.is_finite() && a.rtol > 0.0) {
-        err!("error: --rtol {}: must be a positive number (a fraction: 0.01 is 1 %)", a.rtol);
-        return ExitCode::from(2);
-    }
-    if !(a.budget.is_finite() && a.budget > 0.0) {
-        err!("error: --budget {}: must be a positive number of node-steps", a.budget);
-        return ExitCode::from(2);
-    }
-    let o = Options {
-        refine: a.refine,
-        levels: a.levels,
-        ratio: a.ratio,
-        coarsen: a.coarsen,
-        scaled_smoothing: a.scaled_smoothing,
-        rtol: a.rtol,
-        budget_node_steps: a.budget,
+    let o = match a.options() {
+        Ok(o) => o,
+        Err(e) => {
+            err!("error: {e}");
+            return ExitCode::from(2);
+        }
     };
     let planned = match converge::plan(path, out, &o) {
         Ok(p) => p,
@@ -88,7 +99,7 @@ pub fn main(path: &Path, out: &Path, quiet: bool, dry_run: bool, a: &ConvergeArg
                 e.dt_s,
                 e.work_node_steps(),
                 e.wall_time_s(),
-                p.out_dir.display()
+                p.out_dir.as_ref().map_or(String::new(), |d| d.display().to_string())
             );
         }
         return ExitCode::SUCCESS;

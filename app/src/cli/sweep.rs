@@ -69,6 +69,10 @@ struct RunArgs {
     /// print only errors
     #[arg(long)]
     quiet: bool,
+    /// run every case as a convergence study (`ohl run --converge`, docs/convergence.md): its row holds the
+    /// finest level's results and the extrapolate, GCI and verdict of its design values
+    #[command(flatten)]
+    converge: super::converge::ConvergeArgs,
 }
 
 #[derive(clap::Args)]
@@ -109,6 +113,19 @@ fn main_run(a: RunArgs) -> ExitCode {
         Ok(s) => s,
         Err(e) => return fail(&e, e.exit_code()),
     };
+    let mut sweep = sweep;
+    if a.converge.converge {
+        if matches!(sweep.kind, ohl_app::sweep::Kind::Line { .. }) {
+            return fail(format!("{}: --converge is not available for a [line] base yet", base.display()), 2);
+        }
+        if a.allow_large {
+            return fail("--converge with --allow-large: give --budget", 2);
+        }
+        match a.converge.options() {
+            Ok(o) => sweep.converge = Some(o),
+            Err(e) => return fail(e, 2),
+        }
+    }
     let threads = a.threads.map_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()), usize::from);
     let opts = Options { threads, shard, keep_runs: a.keep_runs, out: a.out };
     let cases = sweep.spec.cases;

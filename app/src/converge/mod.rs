@@ -16,7 +16,7 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use ohl::run::{RunError, RunOptions, run_observed};
-use ohl::scenario::{self, InputError, Plan, WorkEstimate};
+use ohl::scenario::{self, InputError, Plan, Scenario, WorkEstimate};
 use ohl::verify::gci::{self, Estimate};
 
 pub use levels::{Level, LevelError, Refine};
@@ -120,16 +120,21 @@ pub struct Planned {
     pub plan: Plan,
     /// its work
     pub estimate: WorkEstimate,
-    /// where its files go
-    pub out_dir: PathBuf,
+    /// where its files go (none: not written)
+    pub out_dir: Option<PathBuf>,
 }
 
 /// Read `path`, make the levels, plan them and check the budget. The finest level writes to `out`, the
 /// others to `out/levels/<k>_<label>`.
 pub fn plan(path: &Path, out: &Path, o: &Options) -> Result<Vec<Planned>, StudyError> {
-    let file = path.display().to_string();
     let sc = scenario::load(path)?;
-    let lv = levels::levels(&sc, &file, o.refine, o.levels, o.ratio, o.coarsen, o.scaled_smoothing)?;
+    plan_scenario(&sc, &path.display().to_string(), Some(out), o)
+}
+
+/// [`plan`] for a parsed scenario `sc` (named `file` in messages); with `out` none, nothing is written.
+pub fn plan_scenario(sc: &Scenario, file: &str, out: Option<&Path>, o: &Options) -> Result<Vec<Planned>, StudyError> {
+    let file = file.to_string();
+    let lv = levels::levels(sc, &file, o.refine, o.levels, o.ratio, o.coarsen, o.scaled_smoothing)?;
     let n = lv.len();
     let planned = lv
         .into_iter()
@@ -141,11 +146,13 @@ pub fn plan(path: &Path, out: &Path, o: &Options) -> Result<Vec<Planned>, StudyE
                 source: e,
             })?;
             let estimate = plan.work_estimate();
-            let out_dir = if k + 1 == n {
-                out.to_path_buf()
-            } else {
-                out.join("levels").join(format!("{k}_{}", level.label().replace('/', "_")))
-            };
+            let out_dir = out.map(|out| {
+                if k + 1 == n {
+                    out.to_path_buf()
+                } else {
+                    out.join("levels").join(format!("{k}_{}", level.label().replace('/', "_")))
+                }
+            });
             Ok(Planned { level, plan, estimate, out_dir })
         })
         .collect::<Result<Vec<_>, StudyError>>()?;
@@ -190,7 +197,7 @@ pub struct LevelRun {
     pub node_steps_estimate: f64,
     /// wall time of the level (build, run and files) [s]
     pub wall_time_s: f64,
-    /// its output directory
+    /// its output directory (or that none was written)
     pub out_dir: String,
     /// the phases of its run (between events)
     pub phases: usize,
@@ -211,14 +218,15 @@ pub fn run(
     for (k, p) in planned.into_iter().enumerate() {
         before(k, &p);
         let label = p.level.label();
-        let opts = RunOptions { out_dir: Some(p.out_dir.clone()), record: false };
+        let opts = RunOptions { out_dir: p.out_dir.clone(), record: false };
+        let dir = p.out_dir.as_ref().map_or("(no files written)".to_string(), |d| d.display().to_string());
         let start = Instant::now();
         let outcome = run_observed(p.plan, &opts, &mut []).map_err(|e| match e {
             RunError::Unstable { instability, .. } => StudyError::Unstable {
                 file: file.clone(),
                 label: label.clone(),
                 message: instability.to_string(),
-                dir: p.out_dir.display().to_string(),
+                dir: dir.clone(),
             },
             e => StudyError::Run { file: file.clone(), label: label.clone(), message: e.to_string() },
         })?;
@@ -238,7 +246,7 @@ pub fn run(
             steps: s.steps,
             node_steps_estimate: p.estimate.work_node_steps(),
             wall_time_s: wall,
-            out_dir: p.out_dir.display().to_string(),
+            out_dir: dir,
             phases: s.phases.len(),
             scalars: flatten::scalars(&value),
         });

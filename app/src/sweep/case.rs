@@ -67,6 +67,9 @@ fn run_into(sweep: &Sweep, id: usize, keep: Option<&Path>, row: &mut Row) {
     if let Kind::Line { conductors } = &sweep.kind {
         return run_line_into(sweep, &text, &file, conductors, dir.as_deref(), row);
     }
+    if let Some(o) = &sweep.converge {
+        return converge_into(&text, &file, o, dir.as_deref(), row);
+    }
     let plan = match scenario::parse(&text, &file).and_then(|sc| scenario::plan(&sc, &file)) {
         Ok(p) => p,
         Err(e) => {
@@ -99,6 +102,72 @@ fn run_into(sweep: &Sweep, id: usize, keep: Option<&Path>, row: &mut Row) {
     }
     row.results = Some(result_cells(&summary));
     row.loop_timing = Some((summary.wall_time_s, summary.node_steps_per_second));
+}
+
+/// [`run_into`] with `--converge`: the case's convergence study ([`crate::converge`]); its row holds the
+/// finest level's results and [`table::CONVERGE_COLUMNS`]; with `--keep-runs` the levels' files and
+/// `convergence.json` go to the case's folder. A study above the budget is `refused`, a level that is no
+/// valid scenario `invalid`, a level that went unstable `unstable` (no results).
+fn converge_into(text: &str, file: &str, o: &crate::converge::Options, dir: Option<&Path>, row: &mut Row) {
+    use crate::converge::{self, StudyError, report};
+    let sc = match scenario::parse(text, file) {
+        Ok(s) => s,
+        Err(e) => {
+            row.reason = input_reason(e);
+            return;
+        }
+    };
+    let planned = match converge::plan_scenario(&sc, file, dir, o) {
+        Ok(p) => p,
+        Err(StudyError::Input(e)) => {
+            row.reason = input_reason(e);
+            return;
+        }
+        Err(e @ StudyError::Budget { .. }) => {
+            (row.status, row.reason) = (Status::Refused, e.to_string());
+            return;
+        }
+        Err(e) => {
+            row.reason = e.to_string();
+            return;
+        }
+    };
+    row.warnings = planned[0].plan.warnings.iter().map(|w| w.to_string()).collect::<Vec<_>>().join("; ");
+    let (runs, finest) = match converge::run(Path::new(file), planned, |_, _| {}) {
+        Ok(r) => r,
+        Err(e @ StudyError::Unstable { .. }) => {
+            (row.status, row.reason) = (Status::Unstable, e.to_string());
+            return;
+        }
+        Err(e) => {
+            (row.status, row.reason) = (Status::Failed, e.to_string());
+            return;
+        }
+    };
+    let quantities = converge::analyse(&runs, o.rtol);
+    if let Some(d) = dir {
+        let study = report::Study {
+            scenario: file.to_string(),
+            name: finest.name.clone(),
+            options: o,
+            safety_factor: ohl::verify::gci::SAFETY_FACTOR_THREE_GRIDS,
+            levels: &runs,
+            cost_relative_to_one_run: report::cost(&runs),
+            quantities: &quantities,
+        };
+        if let Err(e) = report::write_json(d, &study) {
+            (row.status, row.reason) = (Status::Failed, format!("{}: {e}", d.join("convergence.json").display()));
+            return;
+        }
+    }
+    row.status = Status::of_summary(&finest.status);
+    if row.status == Status::NotSettled {
+        row.reason = "reached duration.until_settled.max_time_s before the wire settled".into();
+    }
+    let mut cells = result_cells(&finest);
+    cells.extend(super::table::converge_cells(&quantities, &finest));
+    row.results = Some(cells);
+    row.loop_timing = Some((finest.wall_time_s, finest.node_steps_per_second));
 }
 
 /// [`run_into`] for a line: parse, validate and plan it as `ohl run` does, check the line's work budget, run

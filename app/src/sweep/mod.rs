@@ -113,6 +113,9 @@ pub struct Sweep {
     pub kind: Kind,
     /// run cases above the work budget
     pub allow_large: bool,
+    /// `--converge`: run every case as a convergence study ([`crate::converge`]) and add the error bars
+    /// of its design values to its row ([`table::CONVERGE_COLUMNS`])
+    pub converge: Option<crate::converge::Options>,
 }
 
 impl Sweep {
@@ -132,8 +135,16 @@ impl Sweep {
         } else {
             Kind::Single
         };
-        let mut sweep =
-            Sweep { base_path: base_path.to_path_buf(), base_text, base, spec, places: Vec::new(), kind, allow_large };
+        let mut sweep = Sweep {
+            base_path: base_path.to_path_buf(),
+            base_text,
+            base,
+            spec,
+            places: Vec::new(),
+            kind,
+            allow_large,
+            converge: None,
+        };
         for axis in &sweep.spec.axes {
             for (j, field) in axis.fields.iter().enumerate() {
                 let first = axis.rows.iter().find_map(|r| r[j].as_deref());
@@ -189,6 +200,9 @@ impl Sweep {
     /// The result columns of this sweep's table ([`table::RESULT_COLUMNS`] or [`table::line_columns`]).
     pub fn result_columns(&self) -> Vec<String> {
         match &self.kind {
+            Kind::Single if self.converge.is_some() => {
+                table::RESULT_COLUMNS.iter().chain(table::CONVERGE_COLUMNS.iter()).map(|c| c.to_string()).collect()
+            }
             Kind::Single => table::RESULT_COLUMNS.map(String::from).to_vec(),
             Kind::Line { conductors } => table::line_columns(conductors),
         }

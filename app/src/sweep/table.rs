@@ -180,6 +180,58 @@ pub fn result_cells(s: &Summary) -> Vec<String> {
     cells
 }
 
+/// The columns `--converge` adds after [`RESULT_COLUMNS`] (`ohl sweep --converge`, docs/convergence.md):
+/// the Richardson extrapolate, the fine-level GCI (a fraction of the finest value) and the verdict of the
+/// largest tension and of the largest support force (the support of `peak_support_force_support`), then how
+/// many quantities of the summary are converged within rtol, converging but not within it, and without a
+/// converging limit (oscillatory, divergent, a peak moving between events, indeterminate). The other
+/// result columns are the finest level's.
+pub const CONVERGE_COLUMNS: [&str; 9] = [
+    "peak_max_tension_extrapolate_n",
+    "peak_max_tension_gci",
+    "peak_max_tension_verdict",
+    "peak_support_force_extrapolate_n",
+    "peak_support_force_gci",
+    "peak_support_force_verdict",
+    "quantities_converged_within_rtol",
+    "quantities_not_within_rtol",
+    "quantities_without_limit",
+];
+
+/// The values of [`CONVERGE_COLUMNS`] from a study's quantities and its finest level's summary.
+pub fn converge_cells(q: &[crate::converge::Quantity], finest: &Summary) -> Vec<String> {
+    let find = |path: &str| q.iter().find(|x| x.path == path);
+    let estimate = |path: &str| -> [String; 3] {
+        match find(path) {
+            None => Default::default(),
+            Some(x) => {
+                let e = x.estimate.as_ref();
+                let shown = e.is_some_and(|e| e.extrapolate.is_some()) && x.verdict != crate::converge::PEAK_MOVES;
+                let cell = |v: Option<f64>| v.filter(|_| shown).map(number).unwrap_or_default();
+                [cell(e.and_then(|e| e.extrapolate)), cell(e.and_then(|e| e.gci_fine)), x.verdict.to_string()]
+            }
+        }
+    };
+    // the support with the largest peak force on the finest level, as `peak_support_force_support`
+    let support = (finest.supports.iter().enumerate())
+        .fold(None, |best: Option<(usize, f64)>, (k, sp)| match best {
+            Some((_, v)) if sp.peaks.magnitude.value_n.partial_cmp(&v) != Some(std::cmp::Ordering::Greater) => best,
+            _ => Some((k, sp.peaks.magnitude.value_n)),
+        })
+        .map(|b| b.0);
+    let count = |f: &dyn Fn(&str) -> bool| q.iter().filter(|x| f(x.verdict)).count().to_string();
+    let mut cells: Vec<String> = estimate("peak_max_tension_n").into();
+    cells
+        .extend(support.map_or_else(Default::default, |k| estimate(&format!("supports[{k}].peaks.magnitude.value_n"))));
+    cells.push(count(&|v| v == "converged within rtol"));
+    cells.push(count(&|v| v == "not within rtol"));
+    cells.push(count(&|v| {
+        matches!(v, "oscillatory" | "divergent" | "indeterminate") || v == crate::converge::PEAK_MOVES
+    }));
+    debug_assert_eq!(cells.len(), CONVERGE_COLUMNS.len());
+    cells
+}
+
 /// A line's quantities per conductor, each column `NAME_QUANTITY` ([`line_columns`]).
 pub const LINE_CONDUCTOR_COLUMNS: [&str; 13] = [
     "peak_max_tension_n",
