@@ -178,7 +178,8 @@ fn converge_on_the_break_case_agrees_with_the_section_transients_study() {
 }
 
 /// Levels that cannot be made are refused before anything runs, exit 2, naming the field as written: a
-/// grid that does not divide for `--coarsen`, a coarsened Courant number above 1, a line scenario.
+/// grid that does not divide for `--coarsen` (of a single span and of a line), a coarsened Courant number
+/// above 1, two levels, `--static-after`.
 #[test]
 fn converge_refuses_levels_that_are_no_scenario() {
     let dir = tmp("refusals");
@@ -202,12 +203,18 @@ fn converge_refuses_levels_that_are_no_scenario() {
     assert_eq!(code, Some(2), "{err}");
     assert!(err.contains("level x1/4 of the study (Courant number 1.6)"), "{err}");
     assert!(err.contains("field `numerics.courant` = 1.6 is not allowed: must be in (0, 1]"), "{err}");
-    let (code, err) = run(&["cases/f_vertical_ice_shedding.toml"]);
+    let (code, err) = run(&["cases/f_vertical_ice_shedding.toml", "--coarsen", "--levels", "5"]);
     assert_eq!(code, Some(2), "{err}");
-    assert!(err.contains("--converge is not available with a [line] scenario"), "{err}");
+    assert!(
+        err.contains("--coarsen: field `line.conductors[0].section.segments_per_span` = 40 is not divisible by 16"),
+        "{err}"
+    );
     let (code, err) = run(&["paper_cases/fig2b_catenary.toml", "--levels", "2"]);
     assert_eq!(code, Some(2), "{err}");
     assert!(err.contains("at least 3 levels"), "{err}");
+    let (code, err) = run(&["paper_cases/fig2b_catenary.toml", "--static-after"]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(err.contains("--converge is not available with --static-after"), "{err}");
     assert!(!out.exists(), "nothing may run");
     let _ = std::fs::remove_dir_all(&dir);
 }
@@ -264,5 +271,53 @@ fn sweep_converge_rows_are_the_studies_of_their_cases() {
     let kept: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(sweep.join("cases/0/convergence.json")).unwrap()).unwrap();
     assert_eq!(kept["quantities"], json["quantities"]);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// The value at `path` (`a[1].b`, `c[0][2]`) of a JSON document.
+fn at<'a>(v: &'a serde_json::Value, path: &str) -> &'a serde_json::Value {
+    let mut v = v;
+    for part in path.split('.') {
+        let (key, rest) = part.split_once('[').map_or((part, ""), |(k, r)| (k, r));
+        v = &v[key];
+        for idx in rest.split('[').filter(|s| !s.is_empty()) {
+            v = &v[idx.trim_end_matches(']').parse::<usize>().unwrap()];
+        }
+    }
+    v
+}
+
+/// A line scenario (case e, three phases and an earth wire in wind, on 10, 20, 40 segments per span and
+/// 5 s): every quantity's finest value is the number at its path in the finest level's own summary.json
+/// (the pairing reads what the runs wrote), and the coarsest level's likewise in its folder; the line's
+/// clearances and tower loads are among them.
+#[test]
+fn converge_on_a_line_pairs_every_value_of_its_summaries() {
+    let dir = tmp("line");
+    let text = std::fs::read_to_string(repo().join("cases/e_three_phases_wind.toml")).unwrap();
+    let text = text
+        .replace("segments_per_span = 40", "segments_per_span = 10")
+        .replace("end_time_s = 40.0", "end_time_s = 5.0");
+    let text: String = text.lines().filter(|l| !l.starts_with("snapshot_times_s")).map(|l| format!("{l}\n")).collect();
+    let file = dir.join("e.toml");
+    std::fs::write(&file, text).unwrap();
+    let out = dir.join("out");
+    let o = Command::new(env!("CARGO_BIN_EXE_ohl"))
+        .args(["run", file.to_str().unwrap(), "--out", out.to_str().unwrap(), "--converge", "--quiet"])
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let read = |p: &Path| -> serde_json::Value { serde_json::from_str(&std::fs::read_to_string(p).unwrap()).unwrap() };
+    let json = read(&out.join("convergence.json"));
+    let finest = read(&out.join("summary.json"));
+    let coarsest = read(&Path::new(json["levels"][0]["out_dir"].as_str().unwrap()).join("summary.json"));
+    let qs = json["quantities"].as_array().unwrap();
+    assert!(qs.iter().any(|q| q["path"].as_str().unwrap().starts_with("clearances[")), "no clearance");
+    assert!(qs.iter().any(|q| q["path"].as_str().unwrap().starts_with("towers[")), "no tower");
+    for q in qs {
+        let path = q["path"].as_str().unwrap();
+        assert_eq!(q["values"][2].as_f64(), at(&finest, path).as_f64(), "{path}");
+        assert_eq!(q["values"][0].as_f64(), at(&coarsest, path).as_f64(), "{path}");
+    }
     let _ = std::fs::remove_dir_all(&dir);
 }

@@ -528,7 +528,7 @@ def converge(
     budget: float = 2e10,
 ) -> Dict[str, Any]:
     """Error bars on a scenario's own numbers: the study of ``ohl run PATH --out OUT --converge``
-    (docs/convergence.md). The scenario runs on ``levels`` levels refined by ``ratio`` (``refine="grid"``:
+    (docs/convergence.md), for a single conductor, a section or a line. The scenario runs on ``levels`` levels refined by ``ratio`` (``refine="grid"``:
     segments of every span, the step following at the Courant number; ``"step"``: the step alone), the
     written scenario the coarsest (the finest with ``coarsen=True``); every scalar of its summary gets
     Celik's observed order, the Richardson extrapolate and the GCI (F_s = 1.25) from the three finest

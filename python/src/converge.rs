@@ -44,12 +44,20 @@ pub fn converge_raw(
     }
     let o = Options { refine, levels, ratio, coarsen, scaled_smoothing, rtol, budget_node_steps: budget };
     let result = py.detach(|| -> Result<String, StudyError> {
-        let planned = converge::plan(&path, &out, &o)?;
-        let (runs, finest) = converge::run(&path, planned, |_, _| {})?;
+        let line = std::fs::read_to_string(&path).is_ok_and(|t| ohl::scenario::line::is_line(&t));
+        let (runs, name) = if line {
+            let planned = converge::line::plan_line(&path, Some(&out), &o)?;
+            let (runs, finest) = converge::line::run_line_levels(&path, planned, |_, _| {})?;
+            (runs, finest.name)
+        } else {
+            let planned = converge::plan(&path, &out, &o)?;
+            let (runs, finest) = converge::run(&path, planned, |_, _| {})?;
+            (runs, finest.name)
+        };
         let quantities = converge::analyse(&runs, rtol);
         let study = report::Study {
             scenario: path.display().to_string(),
-            name: finest.name.clone(),
+            name,
             options: &o,
             safety_factor: ohl::verify::gci::SAFETY_FACTOR_THREE_GRIDS,
             levels: &runs,

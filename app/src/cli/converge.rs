@@ -77,6 +77,9 @@ pub fn main(path: &Path, out: &Path, quiet: bool, dry_run: bool, a: &ConvergeArg
             return ExitCode::from(2);
         }
     };
+    if std::fs::read_to_string(path).is_ok_and(|t| ohl::scenario::line::is_line(&t)) {
+        return main_line(path, out, quiet, dry_run, &o);
+    }
     let planned = match converge::plan(path, out, &o) {
         Ok(p) => p,
         Err(e) => {
@@ -121,14 +124,80 @@ pub fn main(path: &Path, out: &Path, quiet: bool, dry_run: bool, a: &ConvergeArg
             return ExitCode::from(e.exit_code());
         }
     };
-    let quantities = converge::analyse(&runs, a.rtol);
+    report_study(path, out, quiet, &o, &runs, &finest.name, "segments")
+}
+
+/// [`main`] for a line scenario ([`converge::line`]).
+fn main_line(path: &Path, out: &Path, quiet: bool, dry_run: bool, o: &Options) -> ExitCode {
+    let planned = match converge::line::plan_line(path, Some(out), o) {
+        Ok(p) => p,
+        Err(e) => {
+            err!("error: {e}");
+            return ExitCode::from(e.exit_code());
+        }
+    };
+    for (p, name) in planned[0].plan.plans.iter().zip(planned[0].plan.line.names()) {
+        for w in &p.warnings {
+            err!("warning: {}: {name}: {w}", path.display());
+        }
+    }
+    let n = planned.len();
+    if dry_run {
+        out!("{}: --converge dry run, nothing run ({n} levels, {:?} refinement)", planned[0].plan.name, o.refine);
+        for p in &planned {
+            let e = &p.estimate;
+            out!(
+                "  level {:>6}: {} nodes, dt = {:.4e} s, {:.3e} node-steps, about {:.1} s -> {}",
+                p.label,
+                e.nodes,
+                e.dt_s,
+                e.node_steps,
+                e.wall_time_s(),
+                p.out_dir.as_ref().map_or(String::new(), |d| d.display().to_string())
+            );
+        }
+        return ExitCode::SUCCESS;
+    }
+    let result = converge::line::run_line_levels(path, planned, |k, p| {
+        err!(
+            "converge: level {} of {n} ({}): {} nodes, dt = {:.4e} s, about {:.1} s",
+            k + 1,
+            p.label,
+            p.estimate.nodes,
+            p.estimate.dt_s,
+            p.estimate.wall_time_s()
+        );
+    });
+    let (runs, finest) = match result {
+        Ok(r) => r,
+        Err(e) => {
+            err!("error: {e}");
+            return ExitCode::from(e.exit_code());
+        }
+    };
+    report_study(path, out, quiet, o, &runs, &finest.name, "nodes")
+}
+
+/// Analyse the levels' runs, write `convergence.json` and print the table (`unit`: what the levels'
+/// `segments` count).
+fn report_study(
+    path: &Path,
+    out: &Path,
+    quiet: bool,
+    o: &Options,
+    runs: &[converge::LevelRun],
+    name: &str,
+    unit: &str,
+) -> ExitCode {
+    let n = runs.len();
+    let quantities = converge::analyse(runs, o.rtol);
     let study = report::Study {
         scenario: path.display().to_string(),
-        name: finest.name.clone(),
-        options: &o,
+        name: name.to_string(),
+        options: o,
         safety_factor: ohl::verify::gci::SAFETY_FACTOR_THREE_GRIDS,
-        levels: &runs,
-        cost_relative_to_one_run: report::cost(&runs),
+        levels: runs,
+        cost_relative_to_one_run: report::cost(runs),
         quantities: &quantities,
     };
     if let Err(e) = report::write_json(out, &study) {
@@ -137,11 +206,10 @@ pub fn main(path: &Path, out: &Path, quiet: bool, dry_run: bool, a: &ConvergeArg
     }
     if !quiet {
         let levels: Vec<String> =
-            runs.iter().map(|r| format!("{} ({} segments, dt {:.4e} s)", r.label, r.segments, r.dt_s)).collect();
+            runs.iter().map(|r| format!("{} ({} {unit}, dt {:.4e} s)", r.label, r.segments, r.dt_s)).collect();
         out!(
-            "{}: --converge, {:?} refinement, levels {}; Celik's order, Richardson extrapolate and GCI (F_s = 1.25) from the three finest",
-            finest.name,
-            a.refine,
+            "{name}: --converge, {:?} refinement, levels {}; Celik's order, Richardson extrapolate and GCI (F_s = 1.25) from the three finest",
+            o.refine,
             levels.join(", ")
         );
         for line in report::table(&study) {

@@ -61,15 +61,8 @@ pub fn main(args: RunArgs) -> ExitCode {
         return ExitCode::from(2);
     }
     if converge.converge {
-        let line = std::fs::read_to_string(&path).is_ok_and(|t| scenario::line::is_line(&t));
-        if line || static_after || allow_large {
-            let what = if line {
-                "a [line] scenario (a single conductor or a [section] only, yet)"
-            } else if static_after {
-                "--static-after"
-            } else {
-                "--allow-large (give --budget)"
-            };
+        if static_after || allow_large {
+            let what = if static_after { "--static-after" } else { "--allow-large (give --budget)" };
             err!("error: {}: --converge is not available with {what}", path.display());
             return ExitCode::from(2);
         }

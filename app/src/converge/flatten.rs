@@ -33,6 +33,9 @@ const NOT_QUANTITIES: &[&str] = &[
     "events",
     "start_up",
     "instability",
+    "clearance_levels_measured",
+    "count",
+    "link",
 ];
 
 /// Every scalar quantity of `summary` (a serialised summary) with its path, in the summary's order.

@@ -43,8 +43,13 @@ pub struct Level {
 impl Level {
     /// `x2`, `x1/4`: the level's grid relative to the scenario as written.
     pub fn label(&self) -> String {
-        if self.factor >= 1.0 { format!("x{}", self.factor) } else { format!("x1/{}", 1.0 / self.factor) }
+        label(self.factor)
     }
+}
+
+/// `x2`, `x1/4`: a level's grid (or step) relative to the scenario as written, from its factor.
+pub fn label(factor: f64) -> String {
+    if factor >= 1.0 { format!("x{factor}") } else { format!("x1/{}", 1.0 / factor) }
 }
 
 /// A study that cannot be set up.

@@ -10,6 +10,7 @@
 
 pub mod flatten;
 pub mod levels;
+pub mod line;
 pub mod report;
 
 use std::path::{Path, PathBuf};
