@@ -105,7 +105,7 @@ pub fn levels(
     let top = ratio.checked_pow(levels as u32 - 1).ok_or(LevelError::Shape { levels, ratio })?;
     if coarsen && refine == Refine::Grid {
         for (field, n) in grid_fields(scenario) {
-            if n % top != 0 || n / top < 2 {
+            if !n.is_multiple_of(top) || n / top < 2 {
                 return Err(LevelError::Indivisible { file: file.into(), field, value: n, divisor: top });
             }
         }

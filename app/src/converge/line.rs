@@ -86,7 +86,7 @@ pub fn plan_line(path: &Path, out: Option<&Path>, o: &Options) -> Result<Vec<Pla
     if o.coarsen && o.refine == Refine::Grid {
         for (field, v) in grid_fields(&mut probe) {
             let n = v.as_integer().unwrap_or(0).max(0) as usize;
-            if n % top != 0 || n / top < 2 {
+            if !n.is_multiple_of(top) || n / top < 2 {
                 return Err(LevelError::Indivisible { file, field, value: n, divisor: top }.into());
             }
         }
