@@ -57,3 +57,19 @@ def test_converge_above_the_budget_raises_with_the_estimate(tmp_path: Path) -> N
         ohl.converge(REPO / "paper_cases" / "fig2b_catenary.toml", tmp_path / "out", rtol=0.0)
     with pytest.raises(ValueError, match="refine"):
         ohl.converge(REPO / "paper_cases" / "fig2b_catenary.toml", tmp_path / "out", refine="space")
+
+
+def test_converge_on_a_line_pairs_its_clearances(tmp_path: Path) -> None:
+    """Case e (three phases and an earth wire in wind) on 10, 20, 40 segments per span for 5 s: its
+    clearances are paired, and each quantity's finest value is the number of the finest run's summary."""
+    text = (REPO / "cases" / "e_three_phases_wind.toml").read_text()
+    text = text.replace("segments_per_span = 40", "segments_per_span = 10").replace("end_time_s = 40.0", "end_time_s = 5.0")
+    text = "\n".join(l for l in text.splitlines() if not l.startswith("snapshot_times_s")) + "\n"
+    f = tmp_path / "e.toml"
+    f.write_text(text)
+    study = ohl.converge(f, tmp_path / "out")
+    summary = read_json(tmp_path / "out" / "summary.json")
+    paths = [q["path"] for q in study["quantities"]]
+    assert any(p.startswith("clearances[") for p in paths)
+    least = {q["path"]: q for q in study["quantities"]}["clearances[0].least_m"]
+    assert least["values"][2] == summary["clearances"][0]["least_m"]
