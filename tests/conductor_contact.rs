@@ -58,7 +58,34 @@ fn line(a: Wire, b: Wire, dt: f64, damping_per_s: f64, contact: ConductorContact
 }
 
 fn contact(restitution: f64, stiffness_dt: f64) -> ConductorContact {
-    ConductorContact { pairs: vec![ContactPair { a: 0, b: 1, gap_m: 2.0 * RADIUS }], restitution, stiffness_dt }
+    ConductorContact {
+        pairs: vec![ContactPair { a: 0, b: 1, gap_m: 2.0 * RADIUS }],
+        restitution,
+        stiffness_dt,
+        stiffness_n_per_m2: None,
+    }
+}
+
+/// The penetration at rest of two conductors pressed together by `f'` [N/m] each, with `spec`, at the step
+/// `dt` [s] (the line may lower it); returns (penetration [m], the line's step [s]).
+fn rest_penetration(spec: ConductorContact, dt: f64, f: f64) -> (f64, f64) {
+    let mut l = line(free_wire(0.0), free_wire(2.0 * RADIUS), dt, 200.0, spec);
+    let nodal = |sign: f64| -> [Vec<f64>; 3] {
+        let ds = LEN / N as f64;
+        let per = (0..=N).map(|i| sign * f * if i == 0 || i == N { 0.5 * ds } else { ds }).collect();
+        [per, vec![0.0; N + 1], vec![0.0; N + 1]]
+    };
+    l.conductor_mut(0).set_nodal_force(Some(nodal(1.0)));
+    l.conductor_mut(1).set_nodal_force(Some(nodal(-1.0)));
+    let dt = l.params().dt_s;
+    // 40 damping times (1 / 200 s each) whatever the step.
+    for _ in 0..(2.0 / dt).ceil() as usize {
+        l.step(dt).unwrap();
+    }
+    l.evaluate_forces();
+    let (xa, _) = mean_x_v(&l, 0);
+    let (xb, _) = mean_x_v(&l, 1);
+    (2.0 * RADIUS - (xb - xa), dt)
 }
 
 /// Mean `x1` of a conductor's nodes [m] and its mean `v1` [m/s].
@@ -209,6 +236,50 @@ fn no_touch_no_change() {
     assert_eq!(run(true), run(false));
 }
 
+/// A contact of given stiffness `k'` is the same spring whatever the step: pressed by `f'`, the two rest at
+/// `f' / k'` at two steps a factor 2 apart (tolerance as `pressed_conductors_rest_at_the_penalty_penetration`:
+/// the residual motion after 40 damping times), where the step-scaled penalty's penetration falls as `dt^2`.
+#[test]
+fn given_stiffness_rests_at_its_penetration_at_every_step() {
+    let (f, k) = (300.0, 2.0e7);
+    let expected = f / k;
+    for dt in [1.0e-4, 0.5e-4] {
+        let spec = ConductorContact { stiffness_n_per_m2: Some(k), ..contact(0.5, 0.5) };
+        let (delta, step) = rest_penetration(spec, dt, f);
+        println!("dt = {dt:e} s (line step {step:e} s): penetration {delta:.9e} m, f'/k' = {expected:.9e} m");
+        assert_eq!(step, dt, "k' = {k:e} is stable at {dt:e} s: the step is kept");
+        assert!((delta - expected).abs() < 1e-9 * expected, "{delta} vs {expected}");
+    }
+}
+
+/// A contact stiffer than the step allows lowers the line's step to `stiffness_dt / w_c`, `w_c = sqrt(k' /
+/// mu)`, `mu = RHO / 2` (the reduced density of two equal conductors), and scales the smoothing by the same
+/// ratio (the same viscosity per second); the contact is then the given spring (rest penetration exact).
+#[test]
+fn stiff_contact_lowers_the_step() {
+    let k = 1.0e9;
+    let limit = 0.5 / (k / (0.5 * RHO)).sqrt();
+    let mut m = Model::new();
+    for (c, x) in [0.0, 1.0].into_iter().enumerate() {
+        m.add_conductor(LineConductor { name: format!("C{c}"), role: Role::Phase, wire: free_wire(x), loads: loads() });
+    }
+    let p = StepParams { dt_s: 1e-4, smoothing: 0.002, mass_damping_per_s: 0.0, max_speed_m_per_s: 1e3 };
+    let mut l = LineExplicit::new(&m, p).unwrap();
+    l.set_contact(Some(ConductorContact { stiffness_n_per_m2: Some(k), ..contact(0.5, 0.5) })).unwrap();
+    let got = *l.params();
+    println!("step {:.6e} s (limit {limit:.6e} s), smoothing {:.6e}", got.dt_s, got.smoothing);
+    assert_eq!(got.dt_s, limit);
+    assert!((got.smoothing - 0.002 * limit / 1e-4).abs() < 1e-15);
+    for c in l.conductors() {
+        assert_eq!(c.params().dt_s, limit);
+        assert_eq!(c.params().smoothing, got.smoothing);
+    }
+    let (delta, step) =
+        rest_penetration(ConductorContact { stiffness_n_per_m2: Some(k), ..contact(0.5, 0.5) }, 1e-4, 300.0);
+    assert_eq!(step, limit);
+    assert!((delta - 300.0 / k).abs() < 1e-9 * (300.0 / k), "{delta}");
+}
+
 #[test]
 fn refuses_bad_pairs() {
     let l = line(free_wire(0.0), free_wire(0.5), 1e-4, 0.0, ConductorContact::default());
@@ -218,5 +289,7 @@ fn refuses_bad_pairs() {
     let bad = ConductorContact { pairs: vec![ContactPair { a: 1, b: 1, gap_m: 0.03 }], ..ConductorContact::default() };
     assert!(matches!(l.set_contact(Some(bad)), Err(ContactError::Pair { .. })));
     let bad = ConductorContact { restitution: 0.0, ..ConductorContact::default() };
+    assert!(matches!(l.set_contact(Some(bad)), Err(ContactError::Value { .. })));
+    let bad = ConductorContact { stiffness_n_per_m2: Some(1e13), ..ConductorContact::default() };
     assert!(matches!(l.set_contact(Some(bad)), Err(ContactError::Value { .. })));
 }

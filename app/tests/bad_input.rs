@@ -259,6 +259,10 @@ const CASES: &[(&str, &[&str])] = &[
     ("short_circuit_phase_twice", &["field `short_circuit.phases[2]` = \"A\"", "already named"]),
     ("short_circuit_contact_restitution", &["field `short_circuit.contact_restitution` = 1.5", "must be in (0, 1]"]),
     (
+        "short_circuit_contact_stiffness",
+        &["field `short_circuit.contact_stiffness_n_per_m2` = 1e15", "must be in [1e4, 1e12] N/m^2"],
+    ),
+    (
         "short_circuit_current_out_of_range",
         &["field `short_circuit.initial_current_a` = 19000000", "must be in [100, 300000] A"],
     ),

@@ -21,11 +21,13 @@
 //! cross at small angles (6 degrees in case h) with the deepest point inside a segment, where a node test
 //! (the first version) let them pass.
 //!
-//! `k'` [N/m^2] and `c'` [N s/m^2] follow from the time step `dt` of the line and the pair's reduced linear
+//! `k'` [N/m^2] is given ([`ConductorContact::stiffness_n_per_m2`]: the same spring on every grid, and the
+//! line's step is lowered to `w_c dt = stiffness_dt` where it needs it, `w_c = sqrt(k' / mu)`), or by default
+//! follows from the time step `dt` of the line and the pair's reduced linear
 //! mass `mu = mu_A mu_B / (mu_A + mu_B)`: `k' = mu (w_c)^2` with `w_c dt = stiffness_dt` (default 0.5, the
-//! largest allowed), `c' = 2 zeta sqrt(k' mu)` with `zeta = -ln e / sqrt(pi^2 + ln^2 e)` the damping ratio
-//! of the restitution coefficient `e` of a linear spring-dashpot (default 0.5). The penalty stiffness
-//! grows as `dt^-2`, so the penetration under a given force falls as `dt^2`. Its frequency `w_c` adds
+//! largest allowed). `c' = 2 zeta sqrt(k' mu)` with `zeta = -ln e / sqrt(pi^2 + ln^2 e)` the damping ratio
+//! of the restitution coefficient `e` of a linear spring-dashpot (default 0.5). The default penalty
+//! stiffness grows as `dt^-2`, so the penetration under a given force falls as `dt^2`. Its frequency `w_c` adds
 //! `w_c^2 dt^2 / 4 = 0.0625` and its damping `zeta w_c dt = 0.11` to the leapfrog's stability sum `W dt^2 /
 //! 4 + D dt / 2 <= 1` ([`crate::scheme::line`]), which the line's step check does not include: a line at a
 //! Courant number up to about 0.8 has that to spare (the short-circuit cases run at 0.5). Why the stiffest:
@@ -62,13 +64,17 @@ pub struct ConductorContact {
     pub pairs: Vec<ContactPair>,
     /// coefficient of restitution `e` of a clash, in (0, 1] [-]; default 0.5 (an assumption, module doc)
     pub restitution: f64,
-    /// penalty frequency times the line's time step, `w_c dt`, in (0, 0.5] [-]; default 0.5 (module doc)
+    /// penalty frequency times the line's time step, `w_c dt`, in (0, 0.5] [-]; default 0.5 (module doc).
+    /// With a given [`stiffness_n_per_m2`](Self::stiffness_n_per_m2) the largest `w_c dt` the step may reach
     pub stiffness_dt: f64,
+    /// penalty stiffness `k'` per unit length of contact [N/m^2] (force per unit length per metre of
+    /// penetration), in [1e4, 1e12]; absent: scaled to the step, `k' = mu (stiffness_dt / dt)^2` (module doc)
+    pub stiffness_n_per_m2: Option<f64>,
 }
 
 impl Default for ConductorContact {
     fn default() -> Self {
-        ConductorContact { pairs: Vec::new(), restitution: 0.5, stiffness_dt: 0.5 }
+        ConductorContact { pairs: Vec::new(), restitution: 0.5, stiffness_dt: 0.5, stiffness_n_per_m2: None }
     }
 }
 
@@ -117,6 +123,11 @@ impl ConductorContact {
                 value: self.stiffness_dt,
                 allowed: "in (0, 0.5]",
             });
+        }
+        if let Some(k) = self.stiffness_n_per_m2
+            && !((1e4..=1e12).contains(&k))
+        {
+            return Err(ContactError::Value { what: "stiffness_n_per_m2".into(), value: k, allowed: "in [1e4, 1e12]" });
         }
         for (k, p) in self.pairs.iter().enumerate() {
             if p.a >= conductors || p.b >= conductors {

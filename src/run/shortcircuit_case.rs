@@ -73,11 +73,47 @@ fn largest(ends: &[EndForces; 2], f: impl Fn(&EndForces) -> Option<f64>) -> Opti
     ends.iter().filter_map(f).reduce(f64::max)
 }
 
+/// A note when the main conductor is a bundle whose segments are too long for the pinch's transition at a
+/// spacer ([`crate::shortcircuit::pinch_transition`], at the current's first peak `kappa sqrt(2) I''k / n` a
+/// sub-conductor and the static tension `F_st / n`): the dynamic `F_pi` is then low.
+fn pinch_resolution(input: &crate::shortcircuit::iec60865::Input, main: &str, plan: &LinePlan) -> Option<String> {
+    let b = input.bundle?;
+    let n = f64::from(input.subconductors);
+    let i = b.peak_factor * std::f64::consts::SQRT_2 * input.fault.current_a() / n;
+    let p = crate::shortcircuit::pinch_transition::pinch_transition(
+        b.subconductor_distance_m,
+        input.diameter_m,
+        i,
+        input.static_tension_n / n,
+    )?;
+    let g = plan.group_names.iter().position(|g| g == main)?;
+    let ds = plan.groups[g]
+        .iter()
+        .flat_map(|&c| plan.line.conductors()[c].wire().rest_length.iter().copied())
+        .fold(0.0, f64::max);
+    (ds > 0.5 * p.length_m).then(|| {
+        format!(
+            "F_pi: the pinch's transition at a spacer is about {:.3} m long (sub-conductors {} m apart, {:.1} kA \
+             each at the first peak, {:.0} N each; docs/short_circuit.md), and segments of {ds:.3} m do not \
+             resolve it (less than two segments in it): the dynamic F_pi is low, rising under refinement",
+            p.length_m,
+            b.subconductor_distance_m,
+            i / 1e3,
+            input.static_tension_n / n
+        )
+    })
+}
+
 /// Evaluate the method on the span of `s` and run `plan` (built from `s`), writing the run's files into
 /// `out_dir` if given.
 pub fn compare(s: &LineScenario, plan: LinePlan, out_dir: Option<&Path>) -> Result<Comparison, CompareError> {
     let sc = s.short_circuit.as_ref().ok_or(CompareError::NoShortCircuit)?;
-    let mapped = map(s, &plan).map_err(|e| e.to_string());
+    let mut mapped = map(s, &plan).map_err(|e| e.to_string());
+    if let Ok(m) = &mut mapped
+        && let Some(note) = pinch_resolution(&m.input, &m.main, &plan)
+    {
+        m.notes.push(note);
+    }
     let iec = mapped.as_ref().ok().map(|m| evaluate(&m.input).map_err(|e| e.to_string()));
     let main = match &mapped {
         Ok(m) => m.main.clone(),

@@ -1060,10 +1060,32 @@ fn assemble(s: &LineScenario, plans: Vec<Plan>, global_only: Vec<Option<Plan>>) 
                     }
                 }
             }
-            let contact =
-                ConductorContact { pairs, restitution: sc.contact_restitution, ..ConductorContact::default() };
+            let contact = ConductorContact {
+                pairs,
+                restitution: sc.contact_restitution,
+                stiffness_n_per_m2: sc.contact_stiffness_n_per_m2,
+                ..ConductorContact::default()
+            };
+            let before = line.params().dt_s;
             line.set_contact(Some(contact))
                 .map_err(|e| problem("short_circuit.contact".into(), "(pairs)".into(), e.to_string()))?;
+            let after = line.params().dt_s;
+            if after < before {
+                // A contact stiffer than the step allows: the line steps at the contact's limit.
+                for (p, c) in line_plans.iter_mut().zip(line.conductors()) {
+                    *p.solver.params_mut() = *c.params();
+                }
+                line_plans[0].warnings.push(super::Warning {
+                    field: "short_circuit.contact_stiffness_n_per_m2".into(),
+                    value: format!("{:e}", sc.contact_stiffness_n_per_m2.unwrap_or(f64::NAN)),
+                    reason: format!(
+                        "sets the time step: the contact is stable below {after:.4e} s (w_c dt <= 0.5, \
+                         docs/short_circuit.md), so the line steps at {after:.4e} s instead of {before:.4e} s, \
+                         {:.2} times as many steps (the smoothing is scaled to the same viscosity per second)",
+                        before / after
+                    ),
+                });
+            }
         }
     }
     Ok(LinePlan {

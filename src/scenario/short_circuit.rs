@@ -114,6 +114,12 @@ pub struct ShortCircuitSpec {
     /// assumption: no published value for stranded conductors, [`crate::line::contact`])
     #[serde(default = "default_restitution")]
     pub contact_restitution: f64,
+    /// stiffness of the contact per unit length `k'` [N/m^2] (the force per metre of contact per metre of
+    /// penetration), in [1e4, 1e12]; the line's step is lowered where the contact needs it (`w_c dt <=
+    /// 0.5`, `w_c = sqrt(k' / mu)`); absent: a penalty scaled to the step, `k' = mu (0.5 / dt)^2`, which
+    /// stiffens as the grid is refined ([`crate::line::contact`], docs/short_circuit.md, "Contact")
+    #[serde(default)]
+    pub contact_stiffness_n_per_m2: Option<f64>,
     /// IEC 60865-1 eq. (35): material constant `c_th` [m^4/(A^2 s)], in [1e-20, 1e-17]; default 0.27e-18
     /// (Al, Al alloy and Al/St with section ratio > 6, IEC 60865-1:2011, clause 6.2.4, as used for the
     /// TR 60865-2 examples: docs/short_circuit_iec60865.md)
@@ -229,6 +235,9 @@ impl ShortCircuitSpec {
             }
         }
         c.range(&f("contact_restitution"), self.contact_restitution, &Allowed::open_closed(0.0, 1.0, ""));
+        if let Some(k) = self.contact_stiffness_n_per_m2 {
+            c.range(&f("contact_stiffness_n_per_m2"), k, &Allowed::closed(1.0e4, 1.0e12, "N/m^2"));
+        }
         c.range(
             &f("thermal_constant_m4_per_a2s"),
             self.thermal_constant_m4_per_a2s,

@@ -56,6 +56,22 @@ fn linear_density(w: &crate::wire::Wire) -> f64 {
     m / l
 }
 
+/// The reduced linear density `mu_A mu_B / (mu_A + mu_B)` of conductors `a` and `b` [kg/m].
+fn reduced_density(conductors: &[Explicit], a: usize, b: usize) -> f64 {
+    let (ma, mb) = (linear_density(conductors[a].wire()), linear_density(conductors[b].wire()));
+    ma * mb / (ma + mb)
+}
+
+/// The largest step [s] at which a contact of given stiffness `k'` keeps `w_c dt <= stiffness_dt`, `w_c =
+/// sqrt(k' / mu)` over its pairs; `None` for a penalty scaled to the step, or without pairs.
+pub fn contact_step_limit_s(spec: &ConductorContact, conductors: &[Explicit]) -> Option<f64> {
+    let k = spec.stiffness_n_per_m2?;
+    spec.pairs
+        .iter()
+        .map(|p| spec.stiffness_dt / (k / reduced_density(conductors, p.a, p.b)).sqrt())
+        .min_by(f64::total_cmp)
+}
+
 impl ContactState {
     /// The state for `spec` on `conductors` with the line's nominal step `dt` [s]. The spec is checked by
     /// the caller ([`ConductorContact::check`]).
@@ -66,9 +82,8 @@ impl ContactState {
             .pairs
             .iter()
             .map(|p| {
-                let (ma, mb) = (linear_density(conductors[p.a].wire()), linear_density(conductors[p.b].wire()));
-                let mu = ma * mb / (ma + mb);
-                let k = mu * w_c * w_c;
+                let mu = reduced_density(conductors, p.a, p.b);
+                let k = spec.stiffness_n_per_m2.unwrap_or(mu * w_c * w_c);
                 (0.5 * k, 0.5 * 2.0 * zeta * (k * mu).sqrt())
             })
             .collect();

@@ -34,7 +34,7 @@
 //! [`crate::wire::insulator::clamp_stable_step_s`]; links and point masses can only lower it.
 //! [`LineExplicit::new`] refuses a step above it, naming the node.
 
-use super::conductor_contact::ContactState;
+use super::conductor_contact::{ContactState, contact_step_limit_s};
 use super::electromagnetic::{EmIntersection, EmState};
 use super::explicit::{Explicit, Instability, StepParams};
 use crate::line::contact::{ConductorContact, ContactError};
@@ -255,10 +255,35 @@ impl LineExplicit {
     pub fn set_contact(&mut self, contact: Option<ConductorContact>) -> Result<(), ContactError> {
         if let Some(c) = &contact {
             c.check(self.conductors.len())?;
+            if let Some(limit) = contact_step_limit_s(c, &self.conductors)
+                && limit < self.params.dt_s
+            {
+                self.set_time_step(limit);
+            }
         }
         self.contact = contact.map(|c| ContactState::new(c, &self.conductors, self.params.dt_s));
         self.fresh = false;
         Ok(())
+    }
+
+    /// Lower the nominal step of the line and of every conductor to `dt_s` [s] (a stiffer element than
+    /// the conductors' own, as a contact of given stiffness, asks for it), scaling the smoothing
+    /// coefficient, which acts per step, by the ratio of the steps so that it stays the same viscosity per
+    /// unit time. A smaller step only lowers the stability sum of [`LineExplicit::new`]'s check.
+    ///
+    /// # Panics
+    /// If `dt_s` is not in (0, the current step].
+    pub fn set_time_step(&mut self, dt_s: f64) {
+        assert!(dt_s > 0.0 && dt_s <= self.params.dt_s, "the step can only be lowered");
+        let ratio = dt_s / self.params.dt_s;
+        self.params.dt_s = dt_s;
+        self.params.smoothing *= ratio;
+        for c in &mut self.conductors {
+            let p = c.params_mut();
+            p.dt_s = dt_s;
+            p.smoothing *= ratio;
+        }
+        self.fresh = false;
     }
 
     /// The contact between conductors and its state (energy, nodes touching, the first contact), if set.

@@ -9,8 +9,12 @@
 //! during the short circuit (`F_t`), at the fall of the span after it (`F_f`), the horizontal displacement
 //! `b_h`, the minimum air clearance `a_min` and the bundle pinch force `F_pi` (effective-clash case).
 //! docs/short_circuit_iec60865.md lists the equations, their sources and the public worked examples.
+//!
+//! [`pinch_transition`]: the length of a pinched bundle's transition at a spacer, the grid scale the
+//! dynamic pinch tension needs.
 
 pub mod current;
 pub mod iec60865;
+pub mod pinch_transition;
 
 pub use current::{CurrentError, FaultCurrent, FaultCurrentSpec, FaultKind, Reclose};

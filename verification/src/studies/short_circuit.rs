@@ -572,9 +572,9 @@ pub fn run(budget: Budget, dir: &Path) -> Result<StudyReport, String> {
             ]);
         }
     }
-    // F_pi is reported, not asserted: its window (to the end of the first contraction) contains the
-    // sub-conductors passing through each other, where the 1/d force has no physical meaning and the peak
-    // depends on where the grid puts the crossing (docs/short_circuit.md).
+    // F_pi is reported, not asserted: it rises under refinement until the segments resolve the pinch's
+    // transition at a spacer (about 0.14 m in case h, `ohl::shortcircuit::pinch_transition`), N of several
+    // hundred on a uniform grid (docs/short_circuit.md, "The pinch needs a fine grid").
     if let Some((change, g, p)) = pi_check {
         rep.discussion.push_str(&format!(
             "F_pi (case h as written) between the two finest grids: change {change:.2e}, order {p:.2}, GCI {g:.2e} \
