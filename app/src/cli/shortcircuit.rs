@@ -42,6 +42,13 @@ pub fn main(args: ShortCircuitArgs) -> ExitCode {
         err!("error: {file}: {}", CompareError::NoShortCircuit);
         return ExitCode::from(2);
     }
+    // The scenario's warnings (a step set by a string or by the contact, doubtful values), as `ohl run`
+    // prints them.
+    for (p, name) in plan.plans.iter().zip(plan.line.names()) {
+        for w in &p.warnings {
+            err!("warning: {file}: {name}: {w}");
+        }
+    }
     let work = ohl::run::line::LineWorkEstimate::of(&plan);
     if let Err(refusal) = work.check() {
         err!("error: {file}: {refusal}");
