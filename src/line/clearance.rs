@@ -125,14 +125,22 @@ pub fn least_distance(a: &Wire, b: &Wire, scratch: &mut Scratch) -> Option<Close
     }
     // Slightly above the bound so that the pair that attains it is visited.
     let mut best = best2.sqrt() * (1.0 + 1e-12) + 1e-300;
+    // Where the two windows of `order` started for the last segment of `a`; `lo` without a NaN (else
+    // the windows are found by binary search, as `partition_point` did).
+    let (mut first_at, mut last_at) = (0, 0);
+    let sorted = !lo.iter().any(|v| v.is_nan());
     for i in 0..na {
         if a.intact[i] <= 0.0 {
             continue;
         }
         let (p, q) = (proj(a, i), proj(a, i + 1));
         let (alo, ahi) = (p.min(q), p.max(q));
-        let first = order.partition_point(|&j| lo[j] < alo - best - ext_b);
-        let last = order.partition_point(|&j| lo[j] <= ahi + best);
+        // The same indices as `order.partition_point`, found by walking from the previous segment's
+        // (`lo` is sorted along `order`, so each predicate holds on a prefix: its partition point is
+        // unique): a few steps where `a` runs along the chord, a binary search beyond.
+        let (below, above) = (alo - best - ext_b, ahi + best);
+        let first = walk_partition(order, |j| lo[j] < below, &mut first_at, sorted);
+        let last = walk_partition(order, |j| lo[j] <= above, &mut last_at, sorted);
         for &j in &order[first..last.max(first)] {
             if lo[j] > ahi + best || hi[j] < alo - best {
                 continue;
@@ -157,6 +165,42 @@ pub fn least_distance(a: &Wire, b: &Wire, scratch: &mut Scratch) -> Option<Close
     }
     *last = found.map(|c| (c.segment_a, c.segment_b));
     found
+}
+
+/// `order.partition_point(|&j| pred(j))` for a predicate that holds on a prefix of `order` (when
+/// `sorted`): by walking from the previous answer `at` when the answer is within a few places of it, by
+/// binary search otherwise (and always if not `sorted`); `at` becomes the answer.
+#[inline]
+fn walk_partition(order: &[usize], pred: impl Fn(usize) -> bool, at: &mut usize, sorted: bool) -> usize {
+    const STEPS: usize = 8;
+    let n = order.len();
+    let mut k = (*at).min(n);
+    if sorted {
+        if k < n && pred(order[k]) {
+            // forwards: the answer is after k
+            let stop = (k + STEPS).min(n);
+            k += 1;
+            while k < stop && pred(order[k]) {
+                k += 1;
+            }
+            if k < n && k == stop && pred(order[k]) {
+                k = order.partition_point(|&j| pred(j));
+            }
+        } else {
+            // backwards: the answer is k or before
+            let stop = k.saturating_sub(STEPS);
+            while k > stop && !pred(order[k - 1]) {
+                k -= 1;
+            }
+            if k > 0 && k == stop && !pred(order[k - 1]) {
+                k = order.partition_point(|&j| pred(j));
+            }
+        }
+    } else {
+        k = order.partition_point(|&j| pred(j));
+    }
+    *at = k;
+    k
 }
 
 /// The least distance of a pair of conductor groups over a run: its value, when and where.
@@ -350,6 +394,33 @@ mod tests {
         b.break_segment(c.segment_b);
         let c2 = least_distance(&a, &b, &mut scratch).unwrap();
         assert!(c2.distance_m >= c.distance_m);
+    }
+
+    /// The walk finds `partition_point`'s index from any previous answer, over sorted keys with ties and
+    /// for thresholds below, inside and above them (and by binary search where the keys hold a NaN).
+    #[test]
+    fn walk_partition_is_partition_point() {
+        let lo = [-3.0, -1.0, -1.0, 0.0, 0.5, 2.0, 2.0, 2.0, 7.0, 9.0, 9.5, 10.0, 11.0, 30.0, 31.0, 40.0, 41.0];
+        // `order` lists the keys sorted; the keys themselves are stored out of order
+        let perm: Vec<usize> = (0..lo.len()).map(|i| (i * 7) % lo.len()).collect();
+        let mut keys = vec![0.0; lo.len()];
+        for (k, &p) in perm.iter().enumerate() {
+            keys[p] = lo[k];
+        }
+        let order = perm;
+        for x in [-10.0, -3.0, -1.0, 0.25, 2.0, 8.0, 10.0, 10.5, 35.0, 41.0, 100.0] {
+            for at in 0..=lo.len() + 2 {
+                let want = order.partition_point(|&j| keys[j] < x);
+                let mut a = at;
+                assert_eq!(walk_partition(&order, |j| keys[j] < x, &mut a, true), want, "{x} from {at}");
+                assert_eq!(a, want);
+                let want = order.partition_point(|&j| keys[j] <= x);
+                let mut a = at;
+                assert_eq!(walk_partition(&order, |j| keys[j] <= x, &mut a, false), want);
+                let mut a = at;
+                assert_eq!(walk_partition(&order, |j| keys[j] <= x, &mut a, true), want, "{x} from {at}");
+            }
+        }
     }
 
     /// The bounded tracker finds the same least distance, time and place as measuring every level, over
