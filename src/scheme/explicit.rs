@@ -145,6 +145,40 @@ pub struct Diagnostics {
     pub max_tension_segment: usize,
 }
 
+/// `max_j (f1_j^2 + f2_j^2 + f3_j^2)` (0 for empty slices of equal length), bitwise the fold of `f64::max`
+/// in order: [`Explicit::max_tension_in`], observed every level (per span of a section), so a tight loop
+/// of independent maxima in lanes the compiler keeps in vector registers. A maximum is exact and the
+/// squares are +0 or more, so the order does not change it; `if s > m` passes over a NaN as `f64::max`
+/// does (the lanes start at 0 and never hold one) with one vector instruction.
+#[inline(always)]
+fn largest_square_sum(f1: &[f64], f2: &[f64], f3: &[f64]) -> f64 {
+    const LANES: usize = 8;
+    let mut lanes = [0.0_f64; LANES];
+    let whole = f1.len() / LANES * LANES;
+    for c in (0..whole).step_by(LANES) {
+        let (g1, g2, g3) = (&f1[c..c + LANES], &f2[c..c + LANES], &f3[c..c + LANES]);
+        for k in 0..LANES {
+            let s = g1[k] * g1[k] + g2[k] * g2[k] + g3[k] * g3[k];
+            lanes[k] = if s > lanes[k] { s } else { lanes[k] };
+        }
+    }
+    let mut m2 = 0.0_f64;
+    for j in whole..f1.len() {
+        m2 = m2.max(f1[j] * f1[j] + f2[j] * f2[j] + f3[j] * f3[j]);
+    }
+    lanes.into_iter().fold(m2, f64::max)
+}
+
+/// [`largest_square_sum`] compiled for AVX2 (the same IEEE operations: bitwise the same number).
+///
+/// # Safety
+/// Only where the processor has AVX2.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+unsafe fn largest_square_sum_avx2(f1: &[f64], f2: &[f64], f3: &[f64]) -> f64 {
+    largest_square_sum(f1, f2, f3)
+}
+
 /// One definition, two compiled copies: `fn NAME[generics][generic args](args) -> R = BODY;` defines the
 /// method `NAME` that calls the `#[inline(always)]` method `BODY` through a copy compiled for AVX2 where the
 /// processor has it (chosen at construction, [`Explicit::new`]) and through a copy for the baseline
@@ -457,25 +491,12 @@ impl Explicit {
         let [f1, f2, f3] = &self.fs;
         let (a, b) = (segments.start + 1, segments.end + 1);
         let (f1, f2, f3) = (&f1[a..b], &f2[a..b], &f3[a..b]);
-        // Observed every level (per span of a section), so a tight loop: independent maxima in lanes the
-        // compiler keeps in a vector register. A maximum is exact and the squares are +0 or more, so the
-        // result is bitwise that of `f64::max` folded in order; `if s > m` passes over a NaN as
-        // `f64::max` does (the lanes start at 0 and never hold one) with one vector instruction.
-        const LANES: usize = 8;
-        let mut lanes = [0.0_f64; LANES];
-        let whole = f1.len() / LANES * LANES;
-        for c in (0..whole).step_by(LANES) {
-            let (g1, g2, g3) = (&f1[c..c + LANES], &f2[c..c + LANES], &f3[c..c + LANES]);
-            for k in 0..LANES {
-                let s = g1[k] * g1[k] + g2[k] * g2[k] + g3[k] * g3[k];
-                lanes[k] = if s > lanes[k] { s } else { lanes[k] };
-            }
+        #[cfg(target_arch = "x86_64")]
+        if self.avx2 {
+            // SAFETY: `avx2` is set only where the processor reports AVX2 (`avx2_available`).
+            return unsafe { largest_square_sum_avx2(f1, f2, f3) }.sqrt();
         }
-        let mut m2 = 0.0_f64;
-        for j in whole..f1.len() {
-            m2 = m2.max(f1[j] * f1[j] + f2[j] * f2[j] + f3[j] * f3[j]);
-        }
-        lanes.into_iter().fold(m2, f64::max).sqrt()
+        largest_square_sum(f1, f2, f3).sqrt()
     }
 
     /// The force the wire applies to each support [N], `(node, [f1, f2, f3])`, at the current level, for
