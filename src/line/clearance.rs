@@ -10,7 +10,10 @@
 //! direction of `a`'s chord, and a segment of `a` is compared only with the segments of `b` whose
 //! projection lies within the best distance found so far (a distance can only be smaller than `best` if
 //! its projection on any unit vector is). Starting from the distance of a few corresponding nodes, the
-//! window holds a few segments for conductors along the same span: `O(N log N)` per pair and level.
+//! window holds a few segments for conductors along the same span: `O(N log N)` per pair and level. The
+//! window's ends are found by walking from the previous segment's, and within it a pair whose bounding
+//! boxes are farther apart than the best distance so far is passed over uncomputed (it could not be
+//! taken): for parallel conductors about one segment pair of `b` per segment of `a` is computed.
 
 use crate::element::pair::closest_points;
 use crate::wire::Wire;
