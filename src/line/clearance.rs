@@ -132,6 +132,9 @@ pub fn least_distance(a: &Wire, b: &Wire, scratch: &mut Scratch) -> Option<Close
     // the windows are found by binary search, as `partition_point` did).
     let (mut first_at, mut last_at) = (0, 0);
     let sorted = !lo.iter().any(|v| v.is_nan());
+    // The box bound's margin ([`box_gap2`]), from the largest coordinate magnitude of both conductors.
+    let largest = |w: &Wire| w.x.iter().flatten().fold(0.0_f64, |m, &v| if v.abs() > m { v.abs() } else { m });
+    let slack = 1.0e-9 * (1.0 + largest(a).max(largest(b)));
     for i in 0..na {
         if a.intact[i] <= 0.0 {
             continue;
@@ -152,7 +155,7 @@ pub fn least_distance(a: &Wire, b: &Wire, scratch: &mut Scratch) -> Option<Close
             let (q0, q1) = (b.position(j), b.position(j + 1));
             // A pair whose computed distance cannot be below the best so far would not be taken: passed
             // over without computing it.
-            if found.is_some() && box_gap2(p0, p1, q0, q1) > best2 {
+            if found.is_some() && box_gap2(p0, p1, q0, q1, slack) > best2 {
                 continue;
             }
             let (d2, s, u) = closest_points(p0, p1, q0, q1);
@@ -177,20 +180,22 @@ pub fn least_distance(a: &Wire, b: &Wire, scratch: &mut Scratch) -> Option<Close
 }
 
 /// A lower bound of the squared distance [`closest_points`] computes for the segments `p0 p1` and
-/// `q0 q1` [m^2]: the squared gap between their bounding boxes, each axis's gap shortened by
-/// `1e-9 (1 + M)` m (`M` the largest coordinate magnitude on that axis) and the sum by a factor
-/// `1 - 1e-9`. The points `closest_points` compares, `p0 + s (p1 - p0)` with `s` in `[0, 1]`, are
-/// computed within a few units in the last place of `M` (`2.2e-16 M` each) of their segment's box, and
-/// their squared distance within a few rounding errors of its value, both far inside those margins; a
-/// NaN coordinate gives the bound 0 (the pair is computed).
+/// `q0 q1` [m^2]: the squared gap between their bounding boxes, each axis's gap shortened by `slack`
+/// [m] and the sum by a factor `1 - 1e-9`, with `slack = 1e-9 (1 + M)` for `M` at least every coordinate
+/// magnitude ([`least_distance`]: the largest of both conductors). The points `closest_points` compares,
+/// `p0 + s (p1 - p0)` with `s` in `[0, 1]`, are computed within a few units in the last place of `M`
+/// (`2.2e-16 M` each) of their segment's box, and their squared distance within a few rounding errors
+/// of its value, both far inside those margins. Plain comparisons (one instruction each): with a NaN
+/// coordinate the bound is some number, and the pair's computed distance is NaN, which is never taken
+/// once a pair has been ([`least_distance`] only passes over pairs then).
 #[inline]
-fn box_gap2(p0: [f64; 3], p1: [f64; 3], q0: [f64; 3], q1: [f64; 3]) -> f64 {
+fn box_gap2(p0: [f64; 3], p1: [f64; 3], q0: [f64; 3], q1: [f64; 3], slack: f64) -> f64 {
     let mut g2 = 0.0;
     for k in 0..3 {
-        let (plo, phi) = (p0[k].min(p1[k]), p0[k].max(p1[k]));
-        let (qlo, qhi) = (q0[k].min(q1[k]), q0[k].max(q1[k]));
-        let size = plo.abs().max(phi.abs()).max(qlo.abs()).max(qhi.abs());
-        let gap = (qlo - phi).max(plo - qhi) - 1.0e-9 * (1.0 + size);
+        let (plo, phi) = if p0[k] < p1[k] { (p0[k], p1[k]) } else { (p1[k], p0[k]) };
+        let (qlo, qhi) = if q0[k] < q1[k] { (q0[k], q1[k]) } else { (q1[k], q0[k]) };
+        let (after, before) = (qlo - phi, plo - qhi);
+        let gap = if after > before { after } else { before } - slack;
         if gap > 0.0 {
             g2 += gap * gap;
         }
@@ -447,10 +452,11 @@ mod tests {
             let (p0, p1, q0) = (pt(), pt(), pt());
             let q1 = if n % 5 == 0 { [0, 1, 2].map(|k| q0[k] + p1[k] - p0[k]) } else { pt() };
             let (d2, _, _) = closest_points(p0, p1, q0, q1);
-            assert!(box_gap2(p0, p1, q0, q1) <= d2, "{p0:?} {p1:?} {q0:?} {q1:?}");
+            let size = [p0, p1, q0, q1].iter().flatten().fold(0.0_f64, |m, v| m.max(v.abs()));
+            assert!(box_gap2(p0, p1, q0, q1, 1e-9 * (1.0 + size)) <= d2, "{p0:?} {p1:?} {q0:?} {q1:?}");
         }
         let (p0, p1, q0, q1) = ([0.0, 0.0, 10.0], [0.0, 10.0, 10.0], [0.0, 13.0, 10.0], [0.0, 23.0, 10.0]);
-        assert!((box_gap2(p0, p1, q0, q1) - 9.0).abs() < 1e-6);
+        assert!((box_gap2(p0, p1, q0, q1, 1e-9 * 24.0) - 9.0).abs() < 1e-6);
         assert_eq!(closest_points(p0, p1, q0, q1).0, 9.0);
     }
 
