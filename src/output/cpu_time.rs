@@ -12,7 +12,7 @@ pub fn thread_cpu_time_s() -> Option<f64> {
         let mut t = libc::timespec { tv_sec: 0, tv_nsec: 0 };
         // SAFETY: `t` is a valid, writable timespec; the call writes only into it.
         let rc = unsafe { libc::clock_gettime(libc::CLOCK_THREAD_CPUTIME_ID, &mut t) };
-        (rc == 0).then(|| t.tv_sec as f64 + 1e-9 * t.tv_nsec as f64)
+        (rc == 0).then_some(t.tv_sec as f64 + 1e-9 * t.tv_nsec as f64)
     }
     #[cfg(not(unix))]
     {

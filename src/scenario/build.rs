@@ -171,7 +171,7 @@ fn certain_side(
     for _ in 0..8 {
         let step = (arc(u) - target) / slope(u);
         u = (u - step).clamp(0.0, 1.0);
-        if !(step.abs() > 1e-15) {
+        if step.abs() <= 1e-15 || step.is_nan() {
             break;
         }
     }

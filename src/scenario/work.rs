@@ -130,9 +130,6 @@ pub struct WorkEstimate {
     pub heat_event: Option<usize>,
     /// whether the scenario is a section of several spans (else one span) [-]
     pub sections: bool,
-    /// throughput the time estimate assumes: [`RUN_THROUGHPUT_SPAN`] or [`RUN_THROUGHPUT_SECTION`]
-    /// [node-steps/s]
-    pub throughput_node_steps_per_s: f64,
 }
 
 impl WorkEstimate {
@@ -169,11 +166,6 @@ impl WorkEstimate {
             output_bytes: nan_is_inf(output_bytes),
             heat_event,
             sections: !plan.spans.is_empty(),
-            throughput_node_steps_per_s: if plan.spans.is_empty() {
-                RUN_THROUGHPUT_SPAN
-            } else {
-                RUN_THROUGHPUT_SECTION
-            },
         }
     }
 
@@ -182,9 +174,15 @@ impl WorkEstimate {
         self.node_steps + self.heat_node_updates
     }
 
+    /// The throughput the time estimate assumes: [`RUN_THROUGHPUT_SECTION`] for a section,
+    /// [`RUN_THROUGHPUT_SPAN`] for one span [node-steps/s].
+    pub fn throughput_node_steps_per_s(&self) -> f64 {
+        if self.sections { RUN_THROUGHPUT_SECTION } else { RUN_THROUGHPUT_SPAN }
+    }
+
     /// Estimated time on one core at [`WorkEstimate::throughput_node_steps_per_s`] [s].
     pub fn wall_time_s(&self) -> f64 {
-        self.work_node_steps() / self.throughput_node_steps_per_s
+        self.work_node_steps() / self.throughput_node_steps_per_s()
     }
 
     /// Whether the run's clock advances by a step at its horizon (`T + dt > T`); if not, the run could
@@ -231,7 +229,7 @@ impl fmt::Display for WorkEstimate {
             f,
             "), about {:.3e} s at {:.1e} node-steps/s; output {:.3e} bytes",
             self.wall_time_s(),
-            self.throughput_node_steps_per_s,
+            self.throughput_node_steps_per_s(),
             self.output_bytes
         )
     }

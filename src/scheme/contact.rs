@@ -151,6 +151,7 @@ fn lanes_min(z: &[f64], f: impl Fn(f64) -> f64) -> (f64, bool) {
 /// the negation of the contact test `x3 < h`) is not in contact and is passed over; the others go
 /// through the contact law one by one, in node order, as before. Nodes do not interact here, so the
 /// result is bitwise that of the loop over every node.
+#[allow(clippy::neg_cmp_op_on_partial_ord, reason = "`!(z >= ceiling)` is meant to hold for a NaN too")]
 pub fn apply(g: &Ground, x: &mut [Vec<f64>; 3], v: &mut [Vec<f64>; 3], exposed: &mut [f64]) {
     let n = exposed.len();
     let ceiling = g.ceiling_m();

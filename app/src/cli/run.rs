@@ -312,7 +312,7 @@ fn print_estimate(name: &str, e: &WorkEstimate) {
     out!(
         "  wall time: about {:.3e} s at {:.1e} node-steps/s (one core, {})",
         e.wall_time_s(),
-        e.throughput_node_steps_per_s,
+        e.throughput_node_steps_per_s(),
         if e.sections { "whole runs of a section" } else { "whole runs of one span" }
     );
 }
