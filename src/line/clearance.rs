@@ -64,6 +64,8 @@ pub struct Scratch {
     lo: Vec<f64>,
     hi: Vec<f64>,
     last: Option<(usize, usize)>,
+    /// bounding box of each segment of `b` ([`segment_box`])
+    boxes: Vec<[f64; 6]>,
 }
 
 /// The least distance between the intact segments of conductors `a` and `b`; `None` if either has none.
@@ -75,9 +77,11 @@ pub fn least_distance(a: &Wire, b: &Wire, scratch: &mut Scratch) -> Option<Close
     let hn = (h[0] * h[0] + h[1] * h[1]).sqrt();
     let e = if hn > 0.0 { [h[0] / hn, h[1] / hn] } else { [0.0, 1.0] };
     let proj = |w: &Wire, i: usize| e[0] * w.x[0][i] + e[1] * w.x[1][i];
-    let Scratch { order, lo, hi, last } = scratch;
+    let Scratch { order, lo, hi, last, boxes } = scratch;
     lo.clear();
     hi.clear();
+    boxes.clear();
+    boxes.extend((0..nb).map(|j| segment_box(b.position(j), b.position(j + 1))));
     let mut ext_b = 0.0_f64;
     for j in 0..nb {
         let (p, q) = (proj(b, j), proj(b, j + 1));
@@ -148,16 +152,17 @@ pub fn least_distance(a: &Wire, b: &Wire, scratch: &mut Scratch) -> Option<Close
         let first = walk_partition(order, |j| lo[j] < below, &mut first_at, sorted);
         let last = walk_partition(order, |j| lo[j] <= above, &mut last_at, sorted);
         let (p0, p1) = (a.position(i), a.position(i + 1));
+        let p_box = segment_box(p0, p1);
         for &j in &order[first..last.max(first)] {
             if lo[j] > ahi + best || hi[j] < alo - best {
                 continue;
             }
-            let (q0, q1) = (b.position(j), b.position(j + 1));
             // A pair whose computed distance cannot be below the best so far would not be taken: passed
             // over without computing it.
-            if found.is_some() && box_gap2(p0, p1, q0, q1, slack) > best2 {
+            if found.is_some() && box_gap2(&p_box, &boxes[j], slack) > best2 {
                 continue;
             }
+            let (q0, q1) = (b.position(j), b.position(j + 1));
             let (d2, s, u) = closest_points(p0, p1, q0, q1);
             if found.is_none() || d2 < best2 {
                 best2 = d2;
@@ -180,20 +185,19 @@ pub fn least_distance(a: &Wire, b: &Wire, scratch: &mut Scratch) -> Option<Close
 }
 
 /// A lower bound of the squared distance [`closest_points`] computes for the segments `p0 p1` and
-/// `q0 q1` [m^2]: the squared gap between their bounding boxes, each axis's gap shortened by `slack`
-/// [m] and the sum by a factor `1 - 1e-9`, with `slack = 1e-9 (1 + M)` for `M` at least every coordinate
-/// magnitude ([`least_distance`]: the largest of both conductors). The points `closest_points` compares,
-/// `p0 + s (p1 - p0)` with `s` in `[0, 1]`, are computed within a few units in the last place of `M`
-/// (`2.2e-16 M` each) of their segment's box, and their squared distance within a few rounding errors
-/// of its value, both far inside those margins. Plain comparisons (one instruction each): with a NaN
+/// `q0 q1` [m^2] from their bounding boxes `p`, `q` ([`segment_box`]): the squared gap between them,
+/// each axis's gap shortened by `slack` [m] and the sum by a factor `1 - 1e-9`, with
+/// `slack = 1e-9 (1 + M)` for `M` at least every coordinate magnitude ([`least_distance`]: the largest
+/// of both conductors). The points `closest_points` compares, `p0 + s (p1 - p0)` with `s` in `[0, 1]`,
+/// are computed within a few units in the last place of `M` (`2.2e-16 M` each) of their segment's box,
+/// and their squared distance within a few rounding errors of its value, both far inside those margins. Plain comparisons (one instruction each): with a NaN
 /// coordinate the bound is some number, and the pair's computed distance is NaN, which is never taken
 /// once a pair has been ([`least_distance`] only passes over pairs then).
 #[inline]
-fn box_gap2(p0: [f64; 3], p1: [f64; 3], q0: [f64; 3], q1: [f64; 3], slack: f64) -> f64 {
+fn box_gap2(p: &[f64; 6], q: &[f64; 6], slack: f64) -> f64 {
     let mut g2 = 0.0;
     for k in 0..3 {
-        let (plo, phi) = if p0[k] < p1[k] { (p0[k], p1[k]) } else { (p1[k], p0[k]) };
-        let (qlo, qhi) = if q0[k] < q1[k] { (q0[k], q1[k]) } else { (q1[k], q0[k]) };
+        let (plo, phi, qlo, qhi) = (p[2 * k], p[2 * k + 1], q[2 * k], q[2 * k + 1]);
         let (after, before) = (qlo - phi, plo - qhi);
         let gap = if after > before { after } else { before } - slack;
         if gap > 0.0 {
@@ -201,6 +205,16 @@ fn box_gap2(p0: [f64; 3], p1: [f64; 3], q0: [f64; 3], q1: [f64; 3], slack: f64) 
         }
     }
     g2 * (1.0 - 1.0e-9)
+}
+
+/// The bounding box of the segment `p0 p1`: `[lo1, hi1, lo2, hi2, lo3, hi3]` [m] ([`box_gap2`]).
+#[inline]
+fn segment_box(p0: [f64; 3], p1: [f64; 3]) -> [f64; 6] {
+    let mut b = [0.0; 6];
+    for k in 0..3 {
+        (b[2 * k], b[2 * k + 1]) = if p0[k] < p1[k] { (p0[k], p1[k]) } else { (p1[k], p0[k]) };
+    }
+    b
 }
 
 /// `order.partition_point(|&j| pred(j))` for a predicate that holds on a prefix of `order` (when
@@ -453,10 +467,11 @@ mod tests {
             let q1 = if n % 5 == 0 { [0, 1, 2].map(|k| q0[k] + p1[k] - p0[k]) } else { pt() };
             let (d2, _, _) = closest_points(p0, p1, q0, q1);
             let size = [p0, p1, q0, q1].iter().flatten().fold(0.0_f64, |m, v| m.max(v.abs()));
-            assert!(box_gap2(p0, p1, q0, q1, 1e-9 * (1.0 + size)) <= d2, "{p0:?} {p1:?} {q0:?} {q1:?}");
+            let bound = box_gap2(&segment_box(p0, p1), &segment_box(q0, q1), 1e-9 * (1.0 + size));
+            assert!(bound <= d2, "{p0:?} {p1:?} {q0:?} {q1:?}");
         }
         let (p0, p1, q0, q1) = ([0.0, 0.0, 10.0], [0.0, 10.0, 10.0], [0.0, 13.0, 10.0], [0.0, 23.0, 10.0]);
-        assert!((box_gap2(p0, p1, q0, q1, 1e-9 * 24.0) - 9.0).abs() < 1e-6);
+        assert!((box_gap2(&segment_box(p0, p1), &segment_box(q0, q1), 1e-9 * 24.0) - 9.0).abs() < 1e-6);
         assert_eq!(closest_points(p0, p1, q0, q1).0, 9.0);
     }
 
