@@ -237,7 +237,9 @@ fn a_row_is_bitwise_the_single_run_of_its_scenario() {
     assert_eq!(row["settled_since_s"], "");
     // The case's own summary.json (--keep-runs) is the single run's, number for number (but the timings).
     let kept = json_numbers(&std::fs::read_to_string(out.join("cases/5/summary.json")).unwrap());
-    let timing = |k: &String| k == "wall_time_s" || k == "node_steps_per_second";
+    let timing = |k: &String| {
+        ["wall_time_s", "node_steps_per_second", "cpu_time_s", "cpu_node_steps_per_second"].contains(&k.as_str())
+    };
     assert_eq!(kept.keys().collect::<Vec<_>>(), run.keys().collect::<Vec<_>>());
     for (key, v) in kept.iter().filter(|(k, _)| !timing(k)) {
         assert_eq!(bits(v), bits(&run[key]), "{key}");
@@ -649,7 +651,9 @@ fn a_line_row_is_bitwise_the_run_summary_of_its_scenario() {
     );
     // The case's own summary.json (--keep-runs) is the run's, number for number (but the timings).
     let kept = json_numbers(&std::fs::read_to_string(out.join("cases/3/summary.json")).unwrap());
-    let timing = |k: &String| k == "wall_time_s" || k == "node_steps_per_second";
+    let timing = |k: &String| {
+        ["wall_time_s", "node_steps_per_second", "cpu_time_s", "cpu_node_steps_per_second"].contains(&k.as_str())
+    };
     assert_eq!(kept.keys().collect::<Vec<_>>(), run.keys().collect::<Vec<_>>());
     for (key, v) in kept.iter().filter(|(k, _)| !timing(k)) {
         assert_eq!(bits(v), bits(&run[key]), "{key}");

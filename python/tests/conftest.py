@@ -84,7 +84,7 @@ def assert_bitwise(a: np.ndarray, b: np.ndarray, what: str = "") -> None:
 
 
 # Keys of summary.json that measure the machine, not the run.
-TIMING_KEYS = ("wall_time_s", "node_steps_per_second")
+TIMING_KEYS = ("wall_time_s", "node_steps_per_second", "cpu_time_s", "cpu_node_steps_per_second")
 
 
 def without_timing(summary: Dict) -> Dict:

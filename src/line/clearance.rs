@@ -10,7 +10,10 @@
 //! direction of `a`'s chord, and a segment of `a` is compared only with the segments of `b` whose
 //! projection lies within the best distance found so far (a distance can only be smaller than `best` if
 //! its projection on any unit vector is). Starting from the distance of a few corresponding nodes, the
-//! window holds a few segments for conductors along the same span: `O(N log N)` per pair and level.
+//! window holds a few segments for conductors along the same span: `O(N log N)` per pair and level. The
+//! window's ends are found by walking from the previous segment's, and within it a pair whose bounding
+//! boxes are farther apart than the best distance so far is passed over uncomputed (it could not be
+//! taken): for parallel conductors about one segment pair of `b` per segment of `a` is computed.
 
 use crate::element::pair::closest_points;
 use crate::wire::Wire;
@@ -61,6 +64,8 @@ pub struct Scratch {
     lo: Vec<f64>,
     hi: Vec<f64>,
     last: Option<(usize, usize)>,
+    /// bounding box of each segment of `b` ([`segment_box`])
+    boxes: Vec<[f64; 6]>,
 }
 
 /// The least distance between the intact segments of conductors `a` and `b`; `None` if either has none.
@@ -72,9 +77,11 @@ pub fn least_distance(a: &Wire, b: &Wire, scratch: &mut Scratch) -> Option<Close
     let hn = (h[0] * h[0] + h[1] * h[1]).sqrt();
     let e = if hn > 0.0 { [h[0] / hn, h[1] / hn] } else { [0.0, 1.0] };
     let proj = |w: &Wire, i: usize| e[0] * w.x[0][i] + e[1] * w.x[1][i];
-    let Scratch { order, lo, hi, last } = scratch;
+    let Scratch { order, lo, hi, last, boxes } = scratch;
     lo.clear();
     hi.clear();
+    boxes.clear();
+    boxes.extend((0..nb).map(|j| segment_box(b.position(j), b.position(j + 1))));
     let mut ext_b = 0.0_f64;
     for j in 0..nb {
         let (p, q) = (proj(b, j), proj(b, j + 1));
@@ -125,19 +132,37 @@ pub fn least_distance(a: &Wire, b: &Wire, scratch: &mut Scratch) -> Option<Close
     }
     // Slightly above the bound so that the pair that attains it is visited.
     let mut best = best2.sqrt() * (1.0 + 1e-12) + 1e-300;
+    // Where the two windows of `order` started for the last segment of `a`; `lo` without a NaN (else
+    // the windows are found by binary search, as `partition_point` did).
+    let (mut first_at, mut last_at) = (0, 0);
+    let sorted = !lo.iter().any(|v| v.is_nan());
+    // The box bound's margin ([`box_gap2`]), from the largest coordinate magnitude of both conductors.
+    let largest = |w: &Wire| w.x.iter().flatten().fold(0.0_f64, |m, &v| if v.abs() > m { v.abs() } else { m });
+    let slack = 1.0e-9 * (1.0 + largest(a).max(largest(b)));
     for i in 0..na {
         if a.intact[i] <= 0.0 {
             continue;
         }
         let (p, q) = (proj(a, i), proj(a, i + 1));
         let (alo, ahi) = (p.min(q), p.max(q));
-        let first = order.partition_point(|&j| lo[j] < alo - best - ext_b);
-        let last = order.partition_point(|&j| lo[j] <= ahi + best);
+        // The same indices as `order.partition_point`, found by walking from the previous segment's
+        // (`lo` is sorted along `order`, so each predicate holds on a prefix: its partition point is
+        // unique): a few steps where `a` runs along the chord, a binary search beyond.
+        let (below, above) = (alo - best - ext_b, ahi + best);
+        let first = walk_partition(order, |j| lo[j] < below, &mut first_at, sorted);
+        let last = walk_partition(order, |j| lo[j] <= above, &mut last_at, sorted);
+        let (p0, p1) = (a.position(i), a.position(i + 1));
+        let p_box = segment_box(p0, p1);
         for &j in &order[first..last.max(first)] {
             if lo[j] > ahi + best || hi[j] < alo - best {
                 continue;
             }
-            let (p0, p1, q0, q1) = (a.position(i), a.position(i + 1), b.position(j), b.position(j + 1));
+            // A pair whose computed distance cannot be below the best so far would not be taken: passed
+            // over without computing it.
+            if found.is_some() && box_gap2(&p_box, &boxes[j], slack) > best2 {
+                continue;
+            }
+            let (q0, q1) = (b.position(j), b.position(j + 1));
             let (d2, s, u) = closest_points(p0, p1, q0, q1);
             if found.is_none() || d2 < best2 {
                 best2 = d2;
@@ -157,6 +182,75 @@ pub fn least_distance(a: &Wire, b: &Wire, scratch: &mut Scratch) -> Option<Close
     }
     *last = found.map(|c| (c.segment_a, c.segment_b));
     found
+}
+
+/// A lower bound of the squared distance [`closest_points`] computes for the segments `p0 p1` and
+/// `q0 q1` [m^2] from their bounding boxes `p`, `q` ([`segment_box`]): the squared gap between them,
+/// each axis's gap shortened by `slack` [m] and the sum by a factor `1 - 1e-9`, with
+/// `slack = 1e-9 (1 + M)` for `M` at least every coordinate magnitude ([`least_distance`]: the largest
+/// of both conductors). The points `closest_points` compares, `p0 + s (p1 - p0)` with `s` in `[0, 1]`,
+/// are computed within a few units in the last place of `M` (`2.2e-16 M` each) of their segment's box,
+/// and their squared distance within a few rounding errors of its value, both far inside those margins. Plain comparisons (one instruction each): with a NaN
+/// coordinate the bound is some number, and the pair's computed distance is NaN, which is never taken
+/// once a pair has been ([`least_distance`] only passes over pairs then).
+#[inline]
+fn box_gap2(p: &[f64; 6], q: &[f64; 6], slack: f64) -> f64 {
+    let mut g2 = 0.0;
+    for k in 0..3 {
+        let (plo, phi, qlo, qhi) = (p[2 * k], p[2 * k + 1], q[2 * k], q[2 * k + 1]);
+        let (after, before) = (qlo - phi, plo - qhi);
+        let gap = if after > before { after } else { before } - slack;
+        if gap > 0.0 {
+            g2 += gap * gap;
+        }
+    }
+    g2 * (1.0 - 1.0e-9)
+}
+
+/// The bounding box of the segment `p0 p1`: `[lo1, hi1, lo2, hi2, lo3, hi3]` [m] ([`box_gap2`]).
+#[inline]
+fn segment_box(p0: [f64; 3], p1: [f64; 3]) -> [f64; 6] {
+    let mut b = [0.0; 6];
+    for k in 0..3 {
+        (b[2 * k], b[2 * k + 1]) = if p0[k] < p1[k] { (p0[k], p1[k]) } else { (p1[k], p0[k]) };
+    }
+    b
+}
+
+/// `order.partition_point(|&j| pred(j))` for a predicate that holds on a prefix of `order` (when
+/// `sorted`): by walking from the previous answer `at` when the answer is within a few places of it, by
+/// binary search otherwise (and always if not `sorted`); `at` becomes the answer.
+#[inline]
+fn walk_partition(order: &[usize], pred: impl Fn(usize) -> bool, at: &mut usize, sorted: bool) -> usize {
+    const STEPS: usize = 8;
+    let n = order.len();
+    let mut k = (*at).min(n);
+    if sorted {
+        if k < n && pred(order[k]) {
+            // forwards: the answer is after k
+            let stop = (k + STEPS).min(n);
+            k += 1;
+            while k < stop && pred(order[k]) {
+                k += 1;
+            }
+            if k < n && k == stop && pred(order[k]) {
+                k = order.partition_point(|&j| pred(j));
+            }
+        } else {
+            // backwards: the answer is k or before
+            let stop = k.saturating_sub(STEPS);
+            while k > stop && !pred(order[k - 1]) {
+                k -= 1;
+            }
+            if k > 0 && k == stop && !pred(order[k - 1]) {
+                k = order.partition_point(|&j| pred(j));
+            }
+        }
+    } else {
+        k = order.partition_point(|&j| pred(j));
+    }
+    *at = k;
+    k
 }
 
 /// The least distance of a pair of conductor groups over a run: its value, when and where.
@@ -350,6 +444,62 @@ mod tests {
         b.break_segment(c.segment_b);
         let c2 = least_distance(&a, &b, &mut scratch).unwrap();
         assert!(c2.distance_m >= c.distance_m);
+    }
+
+    /// The box bound never exceeds the squared distance `closest_points` computes, over pseudo-random
+    /// segment pairs near and far, at coordinates up to 1e5 m, parallel and crossing, and it is close to
+    /// it for segments apart along one axis.
+    #[test]
+    fn box_gap_is_below_the_computed_distance() {
+        let mut state = 0x9e37_79b9_7f4a_7c15_u64;
+        let mut rnd = move || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state >> 11) as f64 / (1u64 << 53) as f64
+        };
+        for n in 0..20000 {
+            let scale = [1.0, 1e3, 1e5][n % 3];
+            let spread = [1e-6, 1.0, 30.0][(n / 3) % 3];
+            let base = [rnd() * scale, rnd() * scale, rnd() * scale];
+            let mut pt = || [0, 1, 2].map(|k| base[k] + spread * (rnd() - 0.5));
+            let (p0, p1, q0) = (pt(), pt(), pt());
+            let q1 = if n % 5 == 0 { [0, 1, 2].map(|k| q0[k] + p1[k] - p0[k]) } else { pt() };
+            let (d2, _, _) = closest_points(p0, p1, q0, q1);
+            let size = [p0, p1, q0, q1].iter().flatten().fold(0.0_f64, |m, v| m.max(v.abs()));
+            let bound = box_gap2(&segment_box(p0, p1), &segment_box(q0, q1), 1e-9 * (1.0 + size));
+            assert!(bound <= d2, "{p0:?} {p1:?} {q0:?} {q1:?}");
+        }
+        let (p0, p1, q0, q1) = ([0.0, 0.0, 10.0], [0.0, 10.0, 10.0], [0.0, 13.0, 10.0], [0.0, 23.0, 10.0]);
+        assert!((box_gap2(&segment_box(p0, p1), &segment_box(q0, q1), 1e-9 * 24.0) - 9.0).abs() < 1e-6);
+        assert_eq!(closest_points(p0, p1, q0, q1).0, 9.0);
+    }
+
+    /// The walk finds `partition_point`'s index from any previous answer, over sorted keys with ties and
+    /// for thresholds below, inside and above them (and by binary search where the keys hold a NaN).
+    #[test]
+    fn walk_partition_is_partition_point() {
+        let lo = [-3.0, -1.0, -1.0, 0.0, 0.5, 2.0, 2.0, 2.0, 7.0, 9.0, 9.5, 10.0, 11.0, 30.0, 31.0, 40.0, 41.0];
+        // `order` lists the keys sorted; the keys themselves are stored out of order
+        let perm: Vec<usize> = (0..lo.len()).map(|i| (i * 7) % lo.len()).collect();
+        let mut keys = vec![0.0; lo.len()];
+        for (k, &p) in perm.iter().enumerate() {
+            keys[p] = lo[k];
+        }
+        let order = perm;
+        for x in [-10.0, -3.0, -1.0, 0.25, 2.0, 8.0, 10.0, 10.5, 35.0, 41.0, 100.0] {
+            for at in 0..=lo.len() + 2 {
+                let want = order.partition_point(|&j| keys[j] < x);
+                let mut a = at;
+                assert_eq!(walk_partition(&order, |j| keys[j] < x, &mut a, true), want, "{x} from {at}");
+                assert_eq!(a, want);
+                let want = order.partition_point(|&j| keys[j] <= x);
+                let mut a = at;
+                assert_eq!(walk_partition(&order, |j| keys[j] <= x, &mut a, false), want);
+                let mut a = at;
+                assert_eq!(walk_partition(&order, |j| keys[j] <= x, &mut a, true), want, "{x} from {at}");
+            }
+        }
     }
 
     /// The bounded tracker finds the same least distance, time and place as measuring every level, over

@@ -10,9 +10,11 @@
 //! - [`start_up`]: which peaks come from the start (a wind's onset) rather than from the design load;
 //!
 //! with their building blocks: [`clock`] (when an output acts, without moving the clock), [`probe`]
-//! (Lagrangian points) and [`rows`] (CSV files that only ever hold whole rows).
+//! (Lagrangian points), [`rows`] (CSV files that only ever hold whole rows) and [`cpu_time`] (the
+//! thread's CPU time, for the throughput).
 
 pub mod clock;
+pub mod cpu_time;
 pub mod peaks;
 pub mod probe;
 pub mod recorder;

@@ -128,8 +128,17 @@ pub struct Summary {
     pub wave_speed_m_per_s: f64,
     /// wall-clock time of the time loop [s]
     pub wall_time_s: f64,
-    /// throughput of the time loop, nodes x steps / wall time [1/s]
+    /// throughput of the time loop, nodes x steps / wall time [1/s] (falls when other processes share
+    /// the processor)
     pub node_steps_per_second: f64,
+    /// CPU time of the time loop, the thread's ([`crate::output::cpu_time`]) [s]; absent where the system
+    /// has no thread clock
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub cpu_time_s: Option<f64>,
+    /// throughput of the time loop per CPU second, nodes x steps / `cpu_time_s` [1/s]: the machine's
+    /// speed with this run, nearly independent of its load
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub cpu_node_steps_per_second: Option<f64>,
     /// the static solve of the initial state, when the run started from equilibrium
     #[serde(skip_serializing_if = "Option::is_none")]
     pub initial_equilibrium: Option<EquilibriumReport>,

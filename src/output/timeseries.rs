@@ -86,7 +86,7 @@ impl Sample {
     /// The fixed columns at a level; `mid` is the mid-span probe.
     pub fn of(level: &Level, mid: &ProbePoint) -> Sample {
         let s = level.solver;
-        let d = s.level_diagnostics();
+        let d = s.level_energies();
         let m = mid.displacement(s.wire());
         Sample {
             t_s: level.t_s,

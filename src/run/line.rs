@@ -26,12 +26,15 @@ use crate::events::EventState;
 use crate::line::clearance::{ClearanceTracker, LeastClearance};
 use crate::line::{LinkKind, Role};
 use crate::output::clock::{LANDING, SampleClock};
+use crate::output::cpu_time::{CpuStopwatch, per_second};
 use crate::output::peaks::Peak;
 use crate::output::rows::{RowFile, write_atomically};
 use crate::output::{Peaks, ProbePoint, Snapshots, Timeseries};
 use crate::scenario::build::Stop;
 use crate::scenario::line::LinePlan;
-use crate::scenario::work::{BUDGET_NODE_STEPS, BUDGET_OUTPUT_BYTES, BYTES_PER_NUMBER, THROUGHPUT_NODE_STEPS_PER_S};
+use crate::scenario::work::{
+    BUDGET_NODE_STEPS, BUDGET_OUTPUT_BYTES, BYTES_PER_NUMBER, RUN_THROUGHPUT_LINE, RUN_THROUGHPUT_SHORT_CIRCUIT,
+};
 use crate::scheme::{LineExplicit, LineInstability};
 
 use super::{Control, Ending, Level, Observer, OutputError, Settle, timeseries_columns};
@@ -141,8 +144,15 @@ pub struct LineSummary {
     pub dt_s: f64,
     /// wall time of the loop [s]
     pub wall_time_s: f64,
-    /// node-steps (all conductors) per wall second
+    /// node-steps (all conductors) per wall second (falls when other processes share the processor)
     pub node_steps_per_second: f64,
+    /// CPU time of the loop, the thread's ([`crate::output::cpu_time`]) [s]; absent where the system has
+    /// no thread clock
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub cpu_time_s: Option<f64>,
+    /// node-steps (all conductors) per CPU second: nearly independent of the machine's load
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub cpu_node_steps_per_second: Option<f64>,
     /// per conductor
     pub conductors: Vec<ConductorSummary>,
     /// per pair of conductor groups
@@ -237,6 +247,9 @@ pub struct LineWorkEstimate {
     pub node_steps: f64,
     /// bytes of all the output files (upper bound) [bytes]
     pub output_bytes: f64,
+    /// throughput the time estimate assumes: [`RUN_THROUGHPUT_LINE`], or [`RUN_THROUGHPUT_SHORT_CIRCUIT`]
+    /// with a short circuit ([`crate::scenario::work`]) [node-steps/s]
+    pub throughput_node_steps_per_s: f64,
 }
 
 /// Why a line run is refused before it starts.
@@ -278,12 +291,17 @@ impl LineWorkEstimate {
             steps,
             node_steps: nodes as f64 * steps,
             output_bytes: BYTES_PER_NUMBER * numbers,
+            throughput_node_steps_per_s: if plan.short_circuit.is_some() {
+                RUN_THROUGHPUT_SHORT_CIRCUIT
+            } else {
+                RUN_THROUGHPUT_LINE
+            },
         }
     }
 
-    /// Estimated wall time at [`THROUGHPUT_NODE_STEPS_PER_S`] [s].
+    /// Estimated time on one core at [`LineWorkEstimate::throughput_node_steps_per_s`] [s].
     pub fn wall_time_s(&self) -> f64 {
-        self.node_steps / THROUGHPUT_NODE_STEPS_PER_S
+        self.node_steps / self.throughput_node_steps_per_s
     }
 
     /// `Err` if the run cannot end: its step does not advance the clock at the horizon.
@@ -430,6 +448,7 @@ pub fn run_line_observed<'o>(
     let (dt, horizon) = (line.params().dt_s, plan.stop.horizon_s());
     let tol = LANDING * dt;
     let started = Instant::now();
+    let cpu = CpuStopwatch::start();
     let mut failure: Option<LineInstability> = None;
     let ending = loop {
         let t = line.time_s();
@@ -568,6 +587,7 @@ pub fn run_line_observed<'o>(
         None => None,
     };
     let wall = started.elapsed().as_secs_f64();
+    let cpu_s = cpu.elapsed_s();
     let nodes: usize = line.conductors().iter().map(|c| c.wire().nodes()).sum();
     let summary = LineSummary {
         name: plan.name.clone(),
@@ -576,7 +596,9 @@ pub fn run_line_observed<'o>(
         steps: line.steps(),
         dt_s: dt,
         wall_time_s: wall,
-        node_steps_per_second: if wall > 0.0 { nodes as f64 * line.steps() as f64 / wall } else { 0.0 },
+        node_steps_per_second: per_second(nodes as f64 * line.steps() as f64, wall),
+        cpu_time_s: cpu_s,
+        cpu_node_steps_per_second: cpu_s.map(|c| per_second(nodes as f64 * line.steps() as f64, c)),
         conductors: (0..n)
             .map(|c| {
                 let s = &line.conductors()[c];

@@ -21,6 +21,7 @@ use std::time::Instant;
 
 use crate::events::EventState;
 use crate::output::clock::LANDING;
+use crate::output::cpu_time::{CpuStopwatch, per_second};
 use crate::output::rows::write_atomically;
 use crate::output::spans::SpanState;
 use crate::output::summary::{
@@ -167,6 +168,7 @@ pub fn run_observed<'o>(
     };
     let mut timeline = plan.timeline();
     let started = Instant::now();
+    let cpu = CpuStopwatch::start();
     let ending = {
         let mut observers: Vec<&mut (dyn Observer + 'o)> = vec![&mut peaks];
         observers.extend(settle.as_mut().map(|o| o as &mut dyn Observer));
@@ -179,6 +181,7 @@ pub fn run_observed<'o>(
         run_loop(&mut solver, &mut timeline, plan.stop, plan.tau(1.0), &mut observers)?
     };
     let wall = started.elapsed().as_secs_f64();
+    let cpu_s = cpu.elapsed_s();
 
     let t = solver.time_s();
     let last = Sample::of(&Level { solver: &solver, t_s: t, tau_per_s: plan.tau(1.0) }, &all_probes[0]);
@@ -218,7 +221,9 @@ pub fn run_observed<'o>(
         courant: plan.courant,
         wave_speed_m_per_s: plan.wave_speed_m_per_s,
         wall_time_s: wall,
-        node_steps_per_second: if wall > 0.0 { (n + 1) as f64 * solver.steps() as f64 / wall } else { 0.0 },
+        node_steps_per_second: per_second((n + 1) as f64 * solver.steps() as f64, wall),
+        cpu_time_s: cpu_s,
+        cpu_node_steps_per_second: cpu_s.map(|c| per_second((n + 1) as f64 * solver.steps() as f64, c)),
         initial_equilibrium: plan.initial_equilibrium.as_ref().map(|r| EquilibriumReport {
             iterations: r.iterations,
             residual_n: r.residual_n,

@@ -29,10 +29,24 @@
 //! - `output_bytes = 25 (numbers in all rows)` [bytes]: a number is written in its shortest
 //!   round-trip form (`ryu`), at most 24 characters (`-1.2345678901234567e-300`), plus its separator.
 //!
-//! The wall time is `work_node_steps / THROUGHPUT_NODE_STEPS_PER_S` [s] with
-//! [`THROUGHPUT_NODE_STEPS_PER_S`] = 1.5e8 node-steps/s, the kernel's throughput on one core for the 3D
-//! configurations with wind or internal friction at N >= 200 (`figures/bench/README.md`: 1.3e8 to
-//! 1.6e8; the plane case without wind reaches 3.6e8, small N 1.0e8).
+//! The time is `work_node_steps / throughput` [s] with the throughput of whole runs of the kind of
+//! scenario on one core (kernel, observers and outputs together, per CPU second: `cpu_node_steps_per_second`
+//! of `summary.json`, measured on the scenarios of the repository, issue 27):
+//!
+//! - one span, [`RUN_THROUGHPUT_SPAN`] = 6e7 node-steps/s: the paper cases (N = 50, where each step's
+//!   fixed costs weigh most) ran at 6.4e7 to 1.05e8;
+//! - a section (`[section]`), [`RUN_THROUGHPUT_SECTION`] = 8e7 node-steps/s: the mechanical examples
+//!   and cases a-d (strings, spans, a ground) ran at 8.3e7 to 1.5e8;
+//! - a line (`[line]`, [`crate::run::line::LineWorkEstimate`]), [`RUN_THROUGHPUT_LINE`] = 1e7
+//!   node-steps/s: cases e-g and k (links, towers, clearances every level) ran at 1.1e7 to 3.9e7;
+//!   with a short circuit (`[short_circuit]`: the pair forces of every two conductors, and contact),
+//!   [`RUN_THROUGHPUT_SHORT_CIRCUIT`] = 1e6 node-steps/s: cases h-l ran at 2.6e5 to 4e6 (the pair
+//!   forces grow as N^2, not N: a fine grid runs slower than this).
+//!
+//! The explicit kernel alone runs faster: [`THROUGHPUT_NODE_STEPS_PER_S`] = 1.5e8 node-steps/s on one
+//! core for the 3D configurations with wind or internal friction at N >= 200 (`figures/bench/README.md`:
+//! 1.3e8 to 1.6e8; the plane case without wind reaches 3.6e8, small N 1.0e8); the budget's time
+//! ([`BUDGET_WALL_S`]) is stated at that rate.
 //!
 //! # The budget
 //!
@@ -59,6 +73,20 @@ pub const BUDGET_OUTPUT_BYTES: f64 = 2.0e9;
 
 /// Throughput assumed for the wall-time estimate [node-steps/s] (one core; module documentation).
 pub const THROUGHPUT_NODE_STEPS_PER_S: f64 = 1.5e8;
+
+/// Throughput of whole runs of one span for the time estimate [node-steps/s] (CPU, one core; module
+/// documentation).
+pub const RUN_THROUGHPUT_SPAN: f64 = 6.0e7;
+
+/// Throughput of whole runs of a section for the time estimate [node-steps/s] (module documentation).
+pub const RUN_THROUGHPUT_SECTION: f64 = 8.0e7;
+
+/// Throughput of whole runs of a line for the time estimate [node-steps/s] (module documentation).
+pub const RUN_THROUGHPUT_LINE: f64 = 1.0e7;
+
+/// Throughput of whole runs of a line with a short circuit for the time estimate [node-steps/s]
+/// (module documentation).
+pub const RUN_THROUGHPUT_SHORT_CIRCUIT: f64 = 1.0e6;
 
 /// [`BUDGET_NODE_STEPS`] at [`THROUGHPUT_NODE_STEPS_PER_S`] [s].
 pub const BUDGET_WALL_S: f64 = BUDGET_NODE_STEPS / THROUGHPUT_NODE_STEPS_PER_S;
@@ -100,6 +128,8 @@ pub struct WorkEstimate {
     /// the `[[events]]` index of the `heat_conduction` event whose stretch takes the most heat sub-steps
     /// (`None` without heat conduction) [-]
     pub heat_event: Option<usize>,
+    /// whether the scenario is a section of several spans (else one span) [-]
+    pub sections: bool,
 }
 
 impl WorkEstimate {
@@ -135,6 +165,7 @@ impl WorkEstimate {
             snapshot_rows: nan_is_inf(snapshot_rows),
             output_bytes: nan_is_inf(output_bytes),
             heat_event,
+            sections: !plan.spans.is_empty(),
         }
     }
 
@@ -143,9 +174,15 @@ impl WorkEstimate {
         self.node_steps + self.heat_node_updates
     }
 
-    /// Estimated wall time at [`THROUGHPUT_NODE_STEPS_PER_S`] [s].
+    /// The throughput the time estimate assumes: [`RUN_THROUGHPUT_SECTION`] for a section,
+    /// [`RUN_THROUGHPUT_SPAN`] for one span [node-steps/s].
+    pub fn throughput_node_steps_per_s(&self) -> f64 {
+        if self.sections { RUN_THROUGHPUT_SECTION } else { RUN_THROUGHPUT_SPAN }
+    }
+
+    /// Estimated time on one core at [`WorkEstimate::throughput_node_steps_per_s`] [s].
     pub fn wall_time_s(&self) -> f64 {
-        self.work_node_steps() / THROUGHPUT_NODE_STEPS_PER_S
+        self.work_node_steps() / self.throughput_node_steps_per_s()
     }
 
     /// Whether the run's clock advances by a step at its horizon (`T + dt > T`); if not, the run could
@@ -192,7 +229,7 @@ impl fmt::Display for WorkEstimate {
             f,
             "), about {:.3e} s at {:.1e} node-steps/s; output {:.3e} bytes",
             self.wall_time_s(),
-            THROUGHPUT_NODE_STEPS_PER_S,
+            self.throughput_node_steps_per_s(),
             self.output_bytes
         )
     }

@@ -71,61 +71,161 @@ impl Ground {
         x[2] - self.height_at(x[1])
     }
 
-    /// The lowest vertical clearance of nodes `range` of `x` (positions `[x1, x2, x3]` [m]) [m].
+    /// The lowest vertical clearance of nodes `range` of `x` (positions `[x1, x2, x3]` [m]) [m]:
+    /// `min_i (x3_i - h(x2_i))` over the range (`+inf` for an empty range or nodes all at NaN).
+    ///
+    /// Observed at every time level of a section run (per span, for its least clearance), so over the
+    /// level plane it is a tight loop over `x3` in [`LANES`] independent minima, vectorised by the
+    /// compiler. A minimum of floating-point numbers is exact, so any order gives the same number except
+    /// for the sign of a zero (`min(0, -0)`): if the minimum is zero and some clearance is `-0` it is
+    /// taken again in node order, so the result is bitwise that of the node-by-node fold
+    /// ([`Ground::least_clearance_in_order_m`]; a conductor lying on the ground has clearances `+0`).
     pub fn least_clearance_m(&self, x: &[Vec<f64>; 3], range: std::ops::RangeInclusive<usize>) -> f64 {
+        if !self.profile_m.is_empty() || range.is_empty() {
+            return self.least_clearance_in_order_m(x, range);
+        }
+        let h = self.height_m;
+        let (least, negative_zero) = lanes_min(&x[2][range.clone()], |z| z - h);
+        if least == 0.0 && negative_zero { self.least_clearance_in_order_m(x, range) } else { least }
+    }
+
+    /// [`Ground::least_clearance_m`] node by node, in node order: the definition.
+    pub fn least_clearance_in_order_m(&self, x: &[Vec<f64>; 3], range: std::ops::RangeInclusive<usize>) -> f64 {
         range.map(|i| x[2][i] - self.height_at(x[1][i])).fold(f64::INFINITY, f64::min)
     }
+
+    /// A height at or above the ground everywhere: the level plane's height, or the profile's highest
+    /// point plus a margin of `1e-6 (1 + max |h|)` m, far above the rounding of the interpolation
+    /// `a + s (x2 - a2)` in [`Ground::surface`] (a few units in the last place of `max |h|`), so that a
+    /// node at or above it is above the surface wherever it is ([`apply`] skips it).
+    fn ceiling_m(&self) -> f64 {
+        if self.profile_m.is_empty() {
+            return self.height_m;
+        }
+        let top = self.profile_m.iter().map(|p| p[1]).fold(f64::NEG_INFINITY, f64::max);
+        let size = self.profile_m.iter().map(|p| p[1].abs()).fold(0.0, f64::max);
+        top + 1.0e-6 * (1.0 + size)
+    }
+}
+
+/// Independent accumulators of the tight loops over nodes ([`lanes_min`], [`apply`]'s scan): enough for
+/// the compiler to keep a vector register of them.
+const LANES: usize = 8;
+
+/// `min_i f(z_i)` (`+inf` for an empty slice; a NaN is passed over as [`f64::min`] does), in [`LANES`]
+/// independent minima, and whether some `f(z_i)` is `-0`: without one, equal to the fold of
+/// [`f64::min`] in order bitwise (a minimum is exact; only the sign of a zero can depend on the order).
+/// `if y < m` passes over a NaN as [`f64::min`] does (the lanes start at `+inf` and never hold one).
+fn lanes_min(z: &[f64], f: impl Fn(f64) -> f64) -> (f64, bool) {
+    // `-0` is the zero whose sign carries to 1 (a bitwise operation, vectorised like the comparisons).
+    let negative_zero_at = |y: f64| y == 0.0 && 1.0_f64.copysign(y) < 0.0;
+    let mut m = [f64::INFINITY; LANES];
+    let mut negative_zero = [false; LANES];
+    let chunks = z.chunks_exact(LANES);
+    let rest = chunks.remainder();
+    for c in chunks {
+        for k in 0..LANES {
+            let y = f(c[k]);
+            m[k] = if y < m[k] { y } else { m[k] };
+            negative_zero[k] |= negative_zero_at(y);
+        }
+    }
+    let mut least = f64::INFINITY;
+    let mut any = negative_zero.contains(&true);
+    for &v in rest {
+        let y = f(v);
+        least = least.min(y);
+        any |= negative_zero_at(y);
+    }
+    for v in m {
+        least = least.min(v);
+    }
+    (least, any)
 }
 
 /// Apply the contact law to every node of `x`, `v` (positions [m], velocities [m/s]); a node in contact
 /// gets `exposed = 0`.
+///
+/// Called after every drift, so the nodes are first scanned in blocks of [`LANES`] with one branch-free
+/// test each: a node at or above [`Ground::ceiling_m`] (`x3 >= ceiling`; over the level plane exactly
+/// the negation of the contact test `x3 < h`) is not in contact and is passed over; the others go
+/// through the contact law one by one, in node order, as before. Nodes do not interact here, so the
+/// result is bitwise that of the loop over every node.
+#[allow(clippy::neg_cmp_op_on_partial_ord, reason = "`!(z >= ceiling)` is meant to hold for a NaN too")]
 pub fn apply(g: &Ground, x: &mut [Vec<f64>; 3], v: &mut [Vec<f64>; 3], exposed: &mut [f64]) {
+    let n = exposed.len();
+    let ceiling = g.ceiling_m();
+    let mut start = 0;
+    while start < n {
+        // One bit per node of the block below the ceiling; `!(z >= ceiling)` also flags a NaN, which the
+        // node-by-node law handles as it always did.
+        let mut below = 0_u32;
+        if start + LANES <= n {
+            let block: &[f64; LANES] = x[2][start..start + LANES].try_into().expect("a block of LANES nodes");
+            for (k, &z) in block.iter().enumerate() {
+                below |= u32::from(!(z >= ceiling)) << k;
+            }
+        } else {
+            for (k, &z) in x[2][start..n].iter().enumerate() {
+                below |= u32::from(!(z >= ceiling)) << k;
+            }
+        }
+        let end = (start + LANES).min(n);
+        while below != 0 {
+            contact_node(g, x, v, exposed, start + below.trailing_zeros() as usize);
+            below &= below - 1;
+        }
+        start = end;
+    }
+}
+
+/// The contact law at node `i` ([`apply`]).
+#[inline]
+fn contact_node(g: &Ground, x: &mut [Vec<f64>; 3], v: &mut [Vec<f64>; 3], exposed: &mut [f64], i: usize) {
     let e = g.restitution;
-    for i in 0..exposed.len() {
-        if g.profile_m.is_empty() {
-            // The level plane: the normal is x3.
-            if x[2][i] < g.height_m {
-                x[2][i] = g.height_m;
-                if v[2][i] < 0.0 {
-                    let normal = (1.0 + e) * -v[2][i];
-                    v[2][i] *= -e;
-                    if g.friction > 0.0 {
-                        let vt = v[0][i].hypot(v[1][i]);
-                        if vt > 0.0 {
-                            let keep = (1.0 - g.friction * normal / vt).max(0.0);
-                            v[0][i] *= keep;
-                            v[1][i] *= keep;
-                        }
+    if g.profile_m.is_empty() {
+        // The level plane: the normal is x3.
+        if x[2][i] < g.height_m {
+            x[2][i] = g.height_m;
+            if v[2][i] < 0.0 {
+                let normal = (1.0 + e) * -v[2][i];
+                v[2][i] *= -e;
+                if g.friction > 0.0 {
+                    let vt = v[0][i].hypot(v[1][i]);
+                    if vt > 0.0 {
+                        let keep = (1.0 - g.friction * normal / vt).max(0.0);
+                        v[0][i] *= keep;
+                        v[1][i] *= keep;
                     }
                 }
-                exposed[i] = 0.0;
             }
-            continue;
+            exposed[i] = 0.0;
         }
-        let (h, slope) = g.surface(x[1][i]);
-        if x[2][i] >= h {
-            continue;
-        }
-        // Unit normal (0, n2, n3) of the piece; the depth below it along the normal.
-        let inv = 1.0 / (1.0 + slope * slope).sqrt();
-        let (n2, n3) = (-slope * inv, inv);
-        let depth = (h - x[2][i]) * inv;
-        x[1][i] += depth * n2;
-        x[2][i] += depth * n3;
-        let vn = v[1][i] * n2 + v[2][i] * n3;
-        if vn < 0.0 {
-            let normal = (1.0 + e) * -vn;
-            // tangential part before the reflection
-            let t = [v[0][i], v[1][i] - vn * n2, v[2][i] - vn * n3];
-            let vt = (t[0] * t[0] + t[1] * t[1] + t[2] * t[2]).sqrt();
-            let keep = if g.friction > 0.0 && vt > 0.0 { (1.0 - g.friction * normal / vt).max(0.0) } else { 1.0 };
-            let vn_after = -e * vn;
-            v[0][i] = keep * t[0];
-            v[1][i] = keep * t[1] + vn_after * n2;
-            v[2][i] = keep * t[2] + vn_after * n3;
-        }
-        exposed[i] = 0.0;
+        return;
     }
+    let (h, slope) = g.surface(x[1][i]);
+    if x[2][i] >= h {
+        return;
+    }
+    // Unit normal (0, n2, n3) of the piece; the depth below it along the normal.
+    let inv = 1.0 / (1.0 + slope * slope).sqrt();
+    let (n2, n3) = (-slope * inv, inv);
+    let depth = (h - x[2][i]) * inv;
+    x[1][i] += depth * n2;
+    x[2][i] += depth * n3;
+    let vn = v[1][i] * n2 + v[2][i] * n3;
+    if vn < 0.0 {
+        let normal = (1.0 + e) * -vn;
+        // tangential part before the reflection
+        let t = [v[0][i], v[1][i] - vn * n2, v[2][i] - vn * n3];
+        let vt = (t[0] * t[0] + t[1] * t[1] + t[2] * t[2]).sqrt();
+        let keep = if g.friction > 0.0 && vt > 0.0 { (1.0 - g.friction * normal / vt).max(0.0) } else { 1.0 };
+        let vn_after = -e * vn;
+        v[0][i] = keep * t[0];
+        v[1][i] = keep * t[1] + vn_after * n2;
+        v[2][i] = keep * t[2] + vn_after * n3;
+    }
+    exposed[i] = 0.0;
 }
 
 #[cfg(test)]
@@ -171,6 +271,93 @@ mod tests {
         };
         assert!((tang(v1) - (tang(v0) - 0.3 * 1.5 * -vn0)).abs() < 1e-12);
         assert_eq!(exposed[0], 0.0);
+    }
+
+    /// The contact law before its scan: every node in turn.
+    fn apply_node_by_node(g: &Ground, x: &mut [Vec<f64>; 3], v: &mut [Vec<f64>; 3], exposed: &mut [f64]) {
+        for i in 0..exposed.len() {
+            contact_node(g, x, v, exposed, i);
+        }
+    }
+
+    /// A state of `n` nodes around the ground (some below it, some exactly on it, one NaN far from it)
+    /// from a small deterministic generator.
+    fn scattered(n: usize, seed: u64) -> ([Vec<f64>; 3], [Vec<f64>; 3]) {
+        let mut r = seed;
+        let mut next = move || {
+            r = r.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            (r >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let mut x = [vec![0.0; n], vec![0.0; n], vec![0.0; n]];
+        let mut v = [vec![0.0; n], vec![0.0; n], vec![0.0; n]];
+        for i in 0..n {
+            x[0][i] = next() - 0.5;
+            x[1][i] = 250.0 * next() - 25.0;
+            x[2][i] = match i % 7 {
+                0 => 0.0,
+                1 => 10.0,
+                _ => 14.0 * next() - 2.0,
+            };
+            for k in 0..3 {
+                v[k][i] = 4.0 * next() - 2.0;
+            }
+        }
+        (x, v)
+    }
+
+    /// The scanned contact pass changes exactly what the node-by-node law changes, bit for bit, over the
+    /// level plane and a terrain profile, for node counts around the block length.
+    #[test]
+    fn scanned_contact_equals_the_node_by_node_law() {
+        for g in [Ground::level(1.0, 0.3, 0.5), Ground::level(0.0, 0.0, 0.0), terrain()] {
+            for n in [0, 1, 7, 8, 9, 16, 61] {
+                let (x0, v0) = scattered(n, n as u64 + 3);
+                let (mut xa, mut va, mut ea) = (x0.clone(), v0.clone(), vec![1.0; n]);
+                let (mut xb, mut vb, mut eb) = (x0, v0, vec![1.0; n]);
+                apply(&g, &mut xa, &mut va, &mut ea);
+                apply_node_by_node(&g, &mut xb, &mut vb, &mut eb);
+                let bits = |a: &[Vec<f64>; 3]| a.iter().flatten().map(|x| x.to_bits()).collect::<Vec<_>>();
+                assert_eq!(bits(&xa), bits(&xb), "{g:?} {n}");
+                assert_eq!(bits(&va), bits(&vb), "{g:?} {n}");
+                assert_eq!(ea, eb);
+                assert!(n < 9 || ea.contains(&0.0), "some node was in contact");
+            }
+        }
+    }
+
+    /// The least clearance in lanes is the node-order fold bit for bit, including its zero's sign
+    /// (a node on the ground, one at `-0` over ground at `+0`) and a NaN position (passed over).
+    #[test]
+    fn least_clearance_equals_the_fold_in_node_order() {
+        for g in [Ground::level(1.0, 0.3, 0.5), Ground::level(0.0, 0.2, 0.0), terrain()] {
+            for n in [1, 7, 8, 9, 33, 61] {
+                let (mut x, _) = scattered(n, 11 * n as u64);
+                for variant in 0..4 {
+                    match variant {
+                        1 => x[2][n / 2] = g.height_at(x[1][n / 2]),
+                        2 => x[2][n - 1] = -0.0,
+                        3 => x[2][0] = f64::NAN,
+                        _ => {}
+                    }
+                    for range in [0..=n - 1, n / 3..=n - 1, 0..=n / 2] {
+                        let (a, b) = (g.least_clearance_m(&x, range.clone()), g.least_clearance_in_order_m(&x, range));
+                        assert_eq!(a.to_bits(), b.to_bits(), "{g:?} {n} {variant}: {a} vs {b}");
+                    }
+                }
+            }
+        }
+        // zeros of both signs as the least clearance, in the lanes and in the remainder
+        let g = Ground::level(0.0, 0.2, 0.0);
+        for (plus, minus) in [(3, 12), (12, 3), (3, 18), (18, 3), (17, 19)] {
+            let mut z = vec![1.0; 20];
+            (z[plus], z[minus]) = (0.0, -0.0);
+            let x = [vec![0.0; 20], vec![0.0; 20], z];
+            let (a, b) = (g.least_clearance_m(&x, 0..=19), g.least_clearance_in_order_m(&x, 0..=19));
+            assert_eq!((a.to_bits(), a), (b.to_bits(), 0.0));
+        }
+        // the lowest node by hand
+        let x = [vec![0.0; 3], vec![0.0; 3], vec![5.0, 2.5, 3.0]];
+        assert_eq!(Ground::level(1.0, 0.0, 0.0).least_clearance_m(&x, 0..=2), 1.5);
     }
 
     /// A one-point profile and a flat profile behave as the level plane at that height.

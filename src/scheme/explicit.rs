@@ -145,6 +145,40 @@ pub struct Diagnostics {
     pub max_tension_segment: usize,
 }
 
+/// `max_j (f1_j^2 + f2_j^2 + f3_j^2)` (0 for empty slices of equal length), bitwise the fold of `f64::max`
+/// in order: [`Explicit::max_tension_in`], observed every level (per span of a section), so a tight loop
+/// of independent maxima in lanes the compiler keeps in vector registers. A maximum is exact and the
+/// squares are +0 or more, so the order does not change it; `if s > m` passes over a NaN as `f64::max`
+/// does (the lanes start at 0 and never hold one) with one vector instruction.
+#[inline(always)]
+fn largest_square_sum(f1: &[f64], f2: &[f64], f3: &[f64]) -> f64 {
+    const LANES: usize = 8;
+    let mut lanes = [0.0_f64; LANES];
+    let whole = f1.len() / LANES * LANES;
+    for c in (0..whole).step_by(LANES) {
+        let (g1, g2, g3) = (&f1[c..c + LANES], &f2[c..c + LANES], &f3[c..c + LANES]);
+        for k in 0..LANES {
+            let s = g1[k] * g1[k] + g2[k] * g2[k] + g3[k] * g3[k];
+            lanes[k] = if s > lanes[k] { s } else { lanes[k] };
+        }
+    }
+    let mut m2 = 0.0_f64;
+    for j in whole..f1.len() {
+        m2 = m2.max(f1[j] * f1[j] + f2[j] * f2[j] + f3[j] * f3[j]);
+    }
+    lanes.into_iter().fold(m2, f64::max)
+}
+
+/// [`largest_square_sum`] compiled for AVX2 (the same IEEE operations: bitwise the same number).
+///
+/// # Safety
+/// Only where the processor has AVX2.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+unsafe fn largest_square_sum_avx2(f1: &[f64], f2: &[f64], f3: &[f64]) -> f64 {
+    largest_square_sum(f1, f2, f3)
+}
+
 /// One definition, two compiled copies: `fn NAME[generics][generic args](args) -> R = BODY;` defines the
 /// method `NAME` that calls the `#[inline(always)]` method `BODY` through a copy compiled for AVX2 where the
 /// processor has it (chosen at construction, [`Explicit::new`]) and through a copy for the baseline
@@ -457,11 +491,12 @@ impl Explicit {
         let [f1, f2, f3] = &self.fs;
         let (a, b) = (segments.start + 1, segments.end + 1);
         let (f1, f2, f3) = (&f1[a..b], &f2[a..b], &f3[a..b]);
-        let mut m2 = 0.0_f64;
-        for j in 0..f1.len() {
-            m2 = m2.max(f1[j] * f1[j] + f2[j] * f2[j] + f3[j] * f3[j]);
+        #[cfg(target_arch = "x86_64")]
+        if self.avx2 {
+            // SAFETY: `avx2` is set only where the processor reports AVX2 (`avx2_available`).
+            return unsafe { largest_square_sum_avx2(f1, f2, f3) }.sqrt();
         }
-        m2.sqrt()
+        largest_square_sum(f1, f2, f3).sqrt()
     }
 
     /// The force the wire applies to each support [N], `(node, [f1, f2, f3])`, at the current level, for
@@ -859,20 +894,48 @@ impl Explicit {
         self.diagnostics_of_forces()
     }
 
+    /// The energies of [`Explicit::level_diagnostics`] (bitwise the same numbers) without its largest
+    /// tension, which costs a tension per segment: `max_tension_n` and `max_tension_segment` are 0. For
+    /// the time series' rows, whose largest tension is the kernel's ([`Explicit::max_tension_n`]).
+    pub fn level_energies(&self) -> Diagnostics {
+        assert!(self.fresh, "level_energies needs evaluate_forces at this time level");
+        self.energies_of_forces::<false>()
+    }
+
     /// Kinetic energy of the half-step velocities `sum m_i |v_i^{n-1/2}|^2 / 2` [J]: one pass over the
     /// nodes, no forces needed (the settle detector's measure).
     pub fn kinetic_energy_half_step(&self) -> f64 {
         let w = &self.wire;
         let n1 = w.nodes();
         let (m, v1, v2, v3) = (&w.mass[..n1], &w.v[0][..n1], &w.v[1][..n1], &w.v[2][..n1]);
+        // The settle detector asks for it every level: the terms of a block of nodes are formed together
+        // (the compiler vectorises them), then added one by one in node order, so the sum is bitwise
+        // that of the loop adding each node's term in turn.
+        const BLOCK: usize = 8;
+        let whole = n1 / BLOCK * BLOCK;
         let mut e = 0.0;
-        for i in 0..n1 {
+        for c in (0..whole).step_by(BLOCK) {
+            let (m, v1, v2, v3) = (&m[c..c + BLOCK], &v1[c..c + BLOCK], &v2[c..c + BLOCK], &v3[c..c + BLOCK]);
+            let mut terms = [0.0; BLOCK];
+            for k in 0..BLOCK {
+                terms[k] = m[k] * (v1[k] * v1[k] + v2[k] * v2[k] + v3[k] * v3[k]);
+            }
+            for t in terms {
+                e += t;
+            }
+        }
+        for i in whole..n1 {
             e += m[i] * (v1[i] * v1[i] + v2[i] * v2[i] + v3[i] * v3[i]);
         }
         0.5 * e
     }
 
     fn diagnostics_of_forces(&self) -> Diagnostics {
+        self.energies_of_forces::<true>()
+    }
+
+    /// The diagnostics of the forces last computed, with the largest tension if `MAX_TENSION`.
+    fn energies_of_forces<const MAX_TENSION: bool>(&self) -> Diagnostics {
         let w = &self.wire;
         let n = w.segments();
         let half = 0.5 * self.dt_prev;
@@ -880,10 +943,25 @@ impl Explicit {
         let g = self.loads.gravity_m_per_s2;
         let q = self.loads.uniform_load_n_per_m;
         let mut d = Diagnostics::default();
+        // The point forces (strings, external forces) by node, each node's in the order `node_force`
+        // adds them: each node's net force is `node_force`'s sum, without a scan of every point force at
+        // every node.
+        let mut points: Vec<(usize, [f64; 3])> = self.point_force.iter().chain(&self.external_force).copied().collect();
+        points.sort_by_key(|&(node, _)| node);
+        let mut next = 0;
         for i in 0..=n {
+            let first = next;
+            while next < points.len() && points[next].0 == i {
+                next += 1;
+            }
+            let at_i = &points[first..next];
             let mut v2 = 0.0;
             for k in 0..3 {
-                let a = self.node_force(k, i) * w.inv_mass[i] - zeta * w.v[k][i];
+                let mut f = self.node_force_own(k, i);
+                for (_, p) in at_i {
+                    f += p[k];
+                }
+                let a = f * w.inv_mass[i] - zeta * w.v[k][i];
                 let vn = w.v[k][i] + half * w.free[i] * a;
                 v2 += vn * vn;
             }
@@ -898,10 +976,12 @@ impl Explicit {
                 _ => TensionOnly::energy_density(ea, e),
             };
             d.elastic_j += energy * w.rest_length[j] * w.intact[j];
-            let tension = self.segment_tension(j);
-            if tension > d.max_tension_n {
-                d.max_tension_n = tension;
-                d.max_tension_segment = j;
+            if MAX_TENSION {
+                let tension = self.segment_tension(j);
+                if tension > d.max_tension_n {
+                    d.max_tension_n = tension;
+                    d.max_tension_segment = j;
+                }
             }
             // Potential of the uniform load: each segment's share q L sits half on each end node.
             let (a, b) = (w.position(j), w.position(j + 1));
@@ -927,6 +1007,19 @@ impl Explicit {
     /// Net force on node `i` along `x_k` [N] from the segment forces last computed: tension, distributed
     /// loads, gravity and the prescribed nodal force (no mass damping).
     fn node_force(&self, k: usize, i: usize) -> f64 {
+        let mut f = self.node_force_own(k, i);
+        for &(node, p) in self.point_force.iter().chain(&self.external_force) {
+            if node == i {
+                f += p[k];
+            }
+        }
+        f
+    }
+
+    /// [`Explicit::node_force`] without the point forces (strings, external forces): the segments'
+    /// tension and loads, gravity and the prescribed nodal force, summed in that order.
+    #[inline(always)]
+    fn node_force_own(&self, k: usize, i: usize) -> f64 {
         let w = &self.wire;
         let mut f = self.fs[k][i + 1] - self.fs[k][i] + (self.es[k][i + 1] + self.es[k][i]) * w.exposed[i];
         if k == 2 {
@@ -934,11 +1027,6 @@ impl Explicit {
         }
         if let Some(x) = &self.nodal_force {
             f += x[k][i];
-        }
-        for &(node, p) in self.point_force.iter().chain(&self.external_force) {
-            if node == i {
-                f += p[k];
-            }
         }
         f
     }
@@ -1089,6 +1177,60 @@ mod tests {
             let direct = (0..s.wire.segments()).map(|j| s.segment_tension(j)).fold(0.0_f64, f64::max);
             // Both are the segment element's tension (`element::segment`): the same number, exactly.
             assert_eq!(s.max_tension_n(), direct, "{name}");
+        }
+    }
+
+    /// The observers' tight loops give the numbers of the plain loops they replace, bit for bit: the
+    /// largest tension of any range of segments (lanes of maxima) against the fold of the segment pass's
+    /// `|T t|` in order, the kinetic energy (terms by blocks, added in node order) against the sum node by
+    /// node, and the energies (point forces by node) against the same sums with each node's point forces
+    /// found by scanning all of them.
+    #[test]
+    fn observer_loops_equal_the_plain_loops_bitwise() {
+        for (name, mut s) in option_cases() {
+            // strings' forces at arbitrary nodes (two at one node, out of node order) as external forces
+            s.set_point_forces(&[(7, [1.0, -2.0, 3.0]), (3, [0.5, 0.25, -4.0]), (7, [-0.125, 8.0, 1e-3])]);
+            for _ in 0..50 {
+                s.step(s.params.dt_s).expect("stable");
+            }
+            s.evaluate_forces();
+            let n = s.wire.segments();
+            for (a, b) in [(0, n), (0, 0), (3, 4), (1, 17), (5, n), (0, 9), (2, n - 1)] {
+                let (f1, f2, f3) = (&s.fs[0], &s.fs[1], &s.fs[2]);
+                let plain = (a + 1..b + 1)
+                    .map(|j| f1[j] * f1[j] + f2[j] * f2[j] + f3[j] * f3[j])
+                    .fold(0.0_f64, f64::max)
+                    .sqrt();
+                if s.wire.law != LawKind::Linear {
+                    assert_eq!(s.max_tension_in(a..b).to_bits(), plain.to_bits(), "{name} {a}..{b}");
+                }
+            }
+            let w = &s.wire;
+            let mut e = 0.0;
+            for i in 0..w.nodes() {
+                e += w.mass[i] * (w.v[0][i] * w.v[0][i] + w.v[1][i] * w.v[1][i] + w.v[2][i] * w.v[2][i]);
+            }
+            assert_eq!(s.kinetic_energy_half_step().to_bits(), (0.5 * e).to_bits(), "{name}");
+            let (half, zeta) = (0.5 * s.dt_prev, s.params.mass_damping_per_s);
+            let mut kinetic = 0.0;
+            for i in 0..w.nodes() {
+                let mut v2 = 0.0;
+                for k in 0..3 {
+                    let a = s.node_force(k, i) * w.inv_mass[i] - zeta * w.v[k][i];
+                    let vn = w.v[k][i] + half * w.free[i] * a;
+                    v2 += vn * vn;
+                }
+                kinetic += 0.5 * w.mass[i] * v2;
+            }
+            let (d, energies) = (s.level_diagnostics(), s.level_energies());
+            if w.insulators.iter().all(|i| i.crossarm.is_none()) {
+                assert_eq!(d.kinetic_j.to_bits(), kinetic.to_bits(), "{name}");
+            }
+            assert_eq!(
+                [energies.kinetic_j, energies.elastic_j, energies.potential_j].map(f64::to_bits),
+                [d.kinetic_j, d.elastic_j, d.potential_j].map(f64::to_bits),
+                "{name}"
+            );
         }
     }
 

@@ -501,13 +501,13 @@ impl LineExplicit {
         f
     }
 
-    /// Energies of the line at the evaluated level: the conductors' ([`Explicit::level_diagnostics`]),
+    /// Energies of the line at the evaluated level: the conductors' ([`Explicit::level_energies`]),
     /// the links' elastic energy, the supports' springs and motion (velocity synchronised like the nodes').
     pub fn energies(&self) -> LineEnergies {
         assert!(self.fresh, "energies needs evaluate_forces at this time level");
         let mut e = LineEnergies::default();
         for c in &self.conductors {
-            let d = c.level_diagnostics();
+            let d = c.level_energies();
             e.kinetic_j += d.kinetic_j;
             e.elastic_j += d.elastic_j;
             e.potential_j += d.potential_j;

@@ -5,9 +5,9 @@
 #   bash verification/scripts/bitwise_outputs.sh OLD_OHL NEW_OHL [WORK_DIR]
 #
 # Runs both binaries on the same inputs (the current checkout's files), then compares every CSV and JSON
-# file byte for byte, except the fields that measure the machine (`wall_time_s`, `node_steps_per_second`
-# in summary.json, the stamp line of paper_table.md), which are removed before comparing. Figures are
-# compared too. Prints one line per differing file and a count; exits 1 if any differs.
+# file byte for byte, except the fields that measure the machine (`wall_time_s`, `node_steps_per_second`,
+# `cpu_time_s`, `cpu_node_steps_per_second` in summary.json, the stamp line of paper_table.md), which are
+# removed before comparing. Figures are compared too. Prints one line per differing file and a count; exits 1 if any differs.
 set -euo pipefail
 old="$(realpath "$1")"; new="$(realpath "$2")"
 work="${3:-$(mktemp -d "${TMPDIR:-/tmp}/ohl-bitwise.XXXXXX")}"
@@ -34,7 +34,7 @@ done
 strip() {
   local side="$2"
   case "$1" in
-    *.json) grep -v -E '"(wall_time_s|node_steps_per_second)"' "$1" ;;
+    *.json) grep -v -E '"(wall_time_s|node_steps_per_second|cpu_time_s|cpu_node_steps_per_second)"' "$1" ;;
     *.md | *.txt) grep -v -E 'completed in|equalised in|time loop|throughput|node-steps/s|wall time|^Written by' "$1" | sed "s|$work/$side|OUT|g" ;;
     *) cat "$1" ;;
   esac

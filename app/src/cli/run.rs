@@ -308,7 +308,7 @@ fn print_residual(r: &ohl::statics::residual::Residual, s: &ohl::output::Summary
 
 /// The estimate of `--dry-run`, one quantity a line.
 fn print_estimate(name: &str, e: &WorkEstimate) {
-    use ohl::scenario::work::{BUDGET_NODE_STEPS, BUDGET_OUTPUT_BYTES, THROUGHPUT_NODE_STEPS_PER_S};
+    use ohl::scenario::work::{BUDGET_NODE_STEPS, BUDGET_OUTPUT_BYTES};
     let within = if e.check().is_ok() { "within the budget" } else { "ABOVE the budget: needs --allow-large" };
     out!("{name}: dry run, nothing run ({within})");
     out!("  segments: {}, time step: {:.6e} s, end (or time cap): {} s", e.segments, e.dt_s, e.horizon_s);
@@ -320,7 +320,12 @@ fn print_estimate(name: &str, e: &WorkEstimate) {
     out!("  timeseries.csv: {:.6e} rows of {} numbers", e.timeseries_rows, e.timeseries_columns);
     out!("  snapshots.csv: {:.6e} rows", e.snapshot_rows);
     out!("  output: at most {:.3e} bytes (budget {BUDGET_OUTPUT_BYTES:.1e})", e.output_bytes);
-    out!("  wall time: about {:.3e} s at {THROUGHPUT_NODE_STEPS_PER_S:.1e} node-steps/s (one core)", e.wall_time_s());
+    out!(
+        "  wall time: about {:.3e} s at {:.1e} node-steps/s (one core, {})",
+        e.wall_time_s(),
+        e.throughput_node_steps_per_s(),
+        if e.sections { "whole runs of a section" } else { "whole runs of one span" }
+    );
 }
 
 /// A heat-conduction case (a file with a `[rod]` section) is not a wire scenario: the message points to
@@ -336,7 +341,7 @@ fn heat_case_refusal(path: &std::path::Path) -> Option<String> {
 /// `ohl run` on a line scenario (a file with `[line]`: several conductors, [`ohl::scenario::line`]).
 fn run_line(path: &std::path::Path, out: &std::path::Path, quiet: bool, dry_run: bool, allow_large: bool) -> ExitCode {
     use ohl::run::line::{LineRunError, LineWorkEstimate, run_line};
-    use ohl::scenario::work::{BUDGET_NODE_STEPS, BUDGET_OUTPUT_BYTES, THROUGHPUT_NODE_STEPS_PER_S};
+    use ohl::scenario::work::{BUDGET_NODE_STEPS, BUDGET_OUTPUT_BYTES};
     let file = path.display().to_string();
     let plan = match scenario::read_text(path)
         .and_then(|t| scenario::line::parse(&t, &file))
@@ -363,7 +368,16 @@ fn run_line(path: &std::path::Path, out: &std::path::Path, quiet: bool, dry_run:
         out!("  conductors: {}, nodes: {}, time step: {:.6e} s", work.conductors, work.nodes, work.dt_s);
         out!("  steps: {:.6e}, node-steps: {:.6e} (budget {BUDGET_NODE_STEPS:.1e})", work.steps, work.node_steps);
         out!("  output: at most {:.3e} bytes (budget {BUDGET_OUTPUT_BYTES:.1e})", work.output_bytes);
-        out!("  wall time: about {:.3e} s at {THROUGHPUT_NODE_STEPS_PER_S:.1e} node-steps/s", work.wall_time_s());
+        out!(
+            "  wall time: about {:.3e} s at {:.1e} node-steps/s (one core, {})",
+            work.wall_time_s(),
+            work.throughput_node_steps_per_s,
+            if plan.short_circuit.is_some() {
+                "whole runs of a line with a short circuit"
+            } else {
+                "whole runs of a line"
+            }
+        );
         return ExitCode::SUCCESS;
     }
     if !allow_large && let Err(refusal) = work.check() {
