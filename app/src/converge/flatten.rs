@@ -3,7 +3,7 @@
 //! quantities a convergence study pairs across its levels. Times of peaks are quantities too.
 //!
 //! Left out are the numbers that describe the discretisation or the machine rather than the solution (the
-//! segments, step, steps, Courant number, wave speed, wall time, throughput, node indices), the inputs
+//! segments, step, steps, Courant number, wave speed, wall and CPU time, throughput, node indices), the inputs
 //! the run repeats (positions of supports and probes, the start of the peaks, the events' times, the
 //! static solve's tolerance and iterations), the dimensionless times `tau` (the times in seconds are
 //! kept) and the warnings; a null (an absent value: a broken span's sag, a clearance without ground) is
@@ -20,6 +20,8 @@ const NOT_QUANTITIES: &[&str] = &[
     "wave_speed_m_per_s",
     "wall_time_s",
     "node_steps_per_second",
+    "cpu_time_s",
+    "cpu_node_steps_per_second",
     "node",
     "nodes",
     "span",
