@@ -79,11 +79,12 @@ pub const GAUSS_POINTS: usize = 8;
 /// lose accuracy gradually; they are a near-crossing, not a mesh configuration).
 pub const MAX_PIECES: usize = 64;
 
-/// Nodes on `[-1, 1]` of the 8-point Gauss-Legendre rule (Abramowitz and Stegun, table 25.4).
-const GL_X: [f64; 4] =
+/// Nodes on `[-1, 1]` of the 8-point Gauss-Legendre rule (Abramowitz and Stegun, table 25.4): the positive
+/// half, the rule is symmetric.
+pub(crate) const GL_X: [f64; 4] =
     [0.183_434_642_495_649_8, 0.525_532_409_916_329, 0.796_666_477_413_626_7, 0.960_289_856_497_536_3];
-/// Weights of the 8-point Gauss-Legendre rule (Abramowitz and Stegun, table 25.4).
-const GL_W: [f64; 4] =
+/// Weights of the 8-point Gauss-Legendre rule (Abramowitz and Stegun, table 25.4), of the nodes `GL_X`.
+pub(crate) const GL_W: [f64; 4] =
     [0.362_683_783_378_362, 0.313_706_645_877_887_3, 0.222_381_034_453_374_5, 0.101_228_536_290_376_3];
 
 /// Why the force of a pair cannot be formed.

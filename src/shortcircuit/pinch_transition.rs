@@ -35,7 +35,7 @@
 //! Its integrals are evaluated by composite Gauss-Legendre (the integrands are smooth in `s`); the tests
 //! check them against the series of `erfi` and the small-slope limit.
 
-use crate::element::em_force::MU0_H_PER_M;
+use crate::element::em_force::{GL_W, GL_X, MU0_H_PER_M};
 
 /// The transition of a pinched bundle at a spacer ([module doc](self)).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -48,26 +48,16 @@ pub struct PinchTransition {
     pub extra_length_m: f64,
 }
 
-/// Gauss-Legendre nodes and weights on [-1, 1], 8 points.
-const GL8: [(f64, f64); 8] = [
-    (-0.960_289_856_497_536_3, 0.101_228_536_290_376_26),
-    (-0.796_666_477_413_626_7, 0.222_381_034_453_374_47),
-    (-0.525_532_409_916_329_0, 0.313_706_645_877_887_3),
-    (-0.183_434_642_495_649_8, 0.362_683_783_378_362_0),
-    (0.183_434_642_495_649_8, 0.362_683_783_378_362_0),
-    (0.525_532_409_916_329_0, 0.313_706_645_877_887_3),
-    (0.796_666_477_413_626_7, 0.222_381_034_453_374_47),
-    (0.960_289_856_497_536_3, 0.101_228_536_290_376_26),
-];
-
-/// `int_0^b g(s) ds` by 8-point Gauss-Legendre on 64 equal pieces.
+/// `int_0^b g(s) ds` by 8-point Gauss-Legendre (the pair element's rule) on 64 equal pieces.
 fn integrate(b: f64, g: impl Fn(f64) -> f64) -> f64 {
     const PIECES: usize = 64;
     let h = b / PIECES as f64;
     (0..PIECES)
         .map(|p| {
             let mid = (p as f64 + 0.5) * h;
-            GL8.iter().map(|&(x, w)| w * g(mid + 0.5 * h * x)).sum::<f64>() * 0.5 * h
+            GL_X.iter().zip(&GL_W).map(|(&x, &w)| w * (g(mid - 0.5 * h * x) + g(mid + 0.5 * h * x))).sum::<f64>()
+                * 0.5
+                * h
         })
         .sum()
 }
