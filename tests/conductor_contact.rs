@@ -67,8 +67,8 @@ fn contact(restitution: f64, stiffness_dt: f64) -> ConductorContact {
 }
 
 /// The penetration at rest of two conductors pressed together by `f'` [N/m] each, with `spec`, at the step
-/// `dt` [s] (the line may lower it); returns (penetration [m], the line's step [s]).
-fn rest_penetration(spec: ConductorContact, dt: f64, f: f64) -> (f64, f64) {
+/// `dt` [s] (the line may lower it); returns (penetration [m], the line's step [s], contact points touching).
+fn rest_penetration(spec: ConductorContact, dt: f64, f: f64) -> (f64, f64, usize) {
     let mut l = line(free_wire(0.0), free_wire(2.0 * RADIUS), dt, 200.0, spec);
     let nodal = |sign: f64| -> [Vec<f64>; 3] {
         let ds = LEN / N as f64;
@@ -85,7 +85,7 @@ fn rest_penetration(spec: ConductorContact, dt: f64, f: f64) -> (f64, f64) {
     l.evaluate_forces();
     let (xa, _) = mean_x_v(&l, 0);
     let (xb, _) = mean_x_v(&l, 1);
-    (2.0 * RADIUS - (xb - xa), dt)
+    (2.0 * RADIUS - (xb - xa), dt, l.contact().unwrap().touching())
 }
 
 /// Mean `x1` of a conductor's nodes [m] and its mean `v1` [m/s].
@@ -116,30 +116,15 @@ fn clamped_restitution(zeta: f64) -> f64 {
 /// a uniform penetration's force.)
 #[test]
 fn pressed_conductors_rest_at_the_penalty_penetration() {
-    let dt = 1.0e-4;
-    let f = 300.0; // N/m
+    let (dt, f) = (1.0e-4, 300.0); // s, N/m
     let spec = contact(0.5, 0.25);
-    let mut l = line(free_wire(0.0), free_wire(2.0 * RADIUS), dt, 200.0, spec.clone());
-    let nodal = |sign: f64| -> [Vec<f64>; 3] {
-        let ds = LEN / N as f64;
-        let per = (0..=N).map(|i| sign * f * if i == 0 || i == N { 0.5 * ds } else { ds }).collect();
-        [per, vec![0.0; N + 1], vec![0.0; N + 1]]
-    };
-    l.conductor_mut(0).set_nodal_force(Some(nodal(1.0)));
-    l.conductor_mut(1).set_nodal_force(Some(nodal(-1.0)));
-    for _ in 0..20_000 {
-        l.step(dt).unwrap();
-    }
-    l.evaluate_forces();
     let k = 0.5 * RHO * (spec.stiffness_dt / dt).powi(2);
     let expected = f / k;
-    let (xa, _) = mean_x_v(&l, 0);
-    let (xb, _) = mean_x_v(&l, 1);
-    let delta = 2.0 * RADIUS - (xb - xa);
+    let (delta, _, touching) = rest_penetration(spec, dt, f);
     println!("penetration {delta:.9e} m, f'/k' = {expected:.9e} m (k' = {k:.4e} N/m^2)");
     assert!((delta - expected).abs() < 1e-9 * expected.max(1e-3), "{delta} vs {expected}");
     // Every contact point touches, in both directions.
-    assert_eq!(l.contact().unwrap().touching(), 2 * 3 * N);
+    assert_eq!(touching, 2 * 3 * N);
 }
 
 /// The clash of two free conductors approaching at 2 m/s: the rebound ratio against the closed form
@@ -245,7 +230,7 @@ fn given_stiffness_rests_at_its_penetration_at_every_step() {
     let expected = f / k;
     for dt in [1.0e-4, 0.5e-4] {
         let spec = ConductorContact { stiffness_n_per_m2: Some(k), ..contact(0.5, 0.5) };
-        let (delta, step) = rest_penetration(spec, dt, f);
+        let (delta, step, _) = rest_penetration(spec, dt, f);
         println!("dt = {dt:e} s (line step {step:e} s): penetration {delta:.9e} m, f'/k' = {expected:.9e} m");
         assert_eq!(step, dt, "k' = {k:e} is stable at {dt:e} s: the step is kept");
         assert!((delta - expected).abs() < 1e-9 * expected, "{delta} vs {expected}");
@@ -274,7 +259,7 @@ fn stiff_contact_lowers_the_step() {
         assert_eq!(c.params().dt_s, limit);
         assert_eq!(c.params().smoothing, got.smoothing);
     }
-    let (delta, step) =
+    let (delta, step, _) =
         rest_penetration(ConductorContact { stiffness_n_per_m2: Some(k), ..contact(0.5, 0.5) }, 1e-4, 300.0);
     assert_eq!(step, limit);
     assert!((delta - 300.0 / k).abs() < 1e-9 * (300.0 / k), "{delta}");
