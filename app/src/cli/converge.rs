@@ -94,28 +94,12 @@ pub fn main(path: &Path, out: &Path, quiet: bool, dry_run: bool, a: &ConvergeArg
     if dry_run {
         out!("{}: --converge dry run, nothing run ({n} levels, {:?} refinement)", planned[0].plan.name, a.refine);
         for p in &planned {
-            let e = &p.estimate;
-            out!(
-                "  level {:>6}: {} segments, dt = {:.4e} s, {:.3e} node-steps, about {:.1} s -> {}",
-                p.level.label(),
-                e.segments,
-                e.dt_s,
-                e.work_node_steps(),
-                e.wall_time_s(),
-                p.out_dir.as_ref().map_or(String::new(), |d| d.display().to_string())
-            );
+            out!("  {} -> {}", level_line(&p.work(), "segments"), shown(&p.out_dir));
         }
         return ExitCode::SUCCESS;
     }
     let result = converge::run(path, planned, |k, p| {
-        err!(
-            "converge: level {} of {n} ({}): {} segments, dt = {:.4e} s, about {:.1} s",
-            k + 1,
-            p.level.label(),
-            p.estimate.segments,
-            p.estimate.dt_s,
-            p.estimate.wall_time_s()
-        );
+        progress(k, n, &p.work(), "segments");
     });
     let (runs, finest) = match result {
         Ok(r) => r,
@@ -145,28 +129,12 @@ fn main_line(path: &Path, out: &Path, quiet: bool, dry_run: bool, o: &Options) -
     if dry_run {
         out!("{}: --converge dry run, nothing run ({n} levels, {:?} refinement)", planned[0].plan.name, o.refine);
         for p in &planned {
-            let e = &p.estimate;
-            out!(
-                "  level {:>6}: {} nodes, dt = {:.4e} s, {:.3e} node-steps, about {:.1} s -> {}",
-                p.label,
-                e.nodes,
-                e.dt_s,
-                e.node_steps,
-                e.wall_time_s(),
-                p.out_dir.as_ref().map_or(String::new(), |d| d.display().to_string())
-            );
+            out!("  {} -> {}", level_line(&p.work(), "nodes"), shown(&p.out_dir));
         }
         return ExitCode::SUCCESS;
     }
     let result = converge::line::run_line_levels(path, planned, |k, p| {
-        err!(
-            "converge: level {} of {n} ({}): {} nodes, dt = {:.4e} s, about {:.1} s",
-            k + 1,
-            p.label,
-            p.estimate.nodes,
-            p.estimate.dt_s,
-            p.estimate.wall_time_s()
-        );
+        progress(k, n, &p.work(), "nodes");
     });
     let (runs, finest) = match result {
         Ok(r) => r,
@@ -176,6 +144,31 @@ fn main_line(path: &Path, out: &Path, quiet: bool, dry_run: bool, o: &Options) -
         }
     };
     report_study(path, out, quiet, o, &runs, &finest.name, "nodes")
+}
+
+/// One level as the dry run and the progress lines print it (`unit`: what its count counts).
+fn level_line(w: &converge::LevelWork, unit: &str) -> String {
+    format!(
+        "level {:>6}: {} {unit}, dt = {:.4e} s, {:.3e} node-steps, about {:.1} s",
+        w.label, w.count, w.dt_s, w.node_steps, w.wall_s
+    )
+}
+
+/// The line printed before level `k` of `n` runs.
+fn progress(k: usize, n: usize, w: &converge::LevelWork, unit: &str) {
+    err!(
+        "converge: level {} of {n} ({}): {} {unit}, dt = {:.4e} s, about {:.1} s",
+        k + 1,
+        w.label,
+        w.count,
+        w.dt_s,
+        w.wall_s
+    );
+}
+
+/// A level's output directory as printed (empty: none).
+fn shown(dir: &Option<std::path::PathBuf>) -> String {
+    dir.as_ref().map_or(String::new(), |d| d.display().to_string())
 }
 
 /// Analyse the levels' runs, write `convergence.json` and print the table (`unit`: what the levels'

@@ -32,6 +32,21 @@ pub struct PlannedLine {
     pub out_dir: Option<PathBuf>,
 }
 
+impl PlannedLine {
+    /// Its work, as the budget check and the command's messages read it (`count`: the line's nodes).
+    pub fn work(&self) -> super::LevelWork {
+        super::LevelWork {
+            label: self.label.clone(),
+            factor: self.factor,
+            count: self.estimate.nodes as f64,
+            dt_s: self.estimate.dt_s,
+            node_steps: self.estimate.node_steps,
+            wall_s: self.estimate.wall_time_s(),
+            resolvable: self.estimate.check_resolvable().is_ok(),
+        }
+    }
+}
+
 /// The segment fields of a line document, as written (`line.conductors[0].section.segments_per_span`).
 fn grid_fields(doc: &mut Table) -> Vec<(String, &mut Value)> {
     let mut f = Vec::new();
@@ -139,34 +154,10 @@ pub fn plan_line(path: &Path, out: Option<&Path>, o: &Options) -> Result<Vec<Pla
         let plan =
             scenario::line::parse(&level_text, &file).and_then(|s| scenario::line::plan(&s, &file)).map_err(invalid)?;
         let estimate = LineWorkEstimate::of(&plan);
-        let out_dir = out.map(|out| {
-            if k + 1 == n {
-                out.to_path_buf()
-            } else {
-                out.join("levels").join(format!("{k}_{}", lbl.replace('/', "_")))
-            }
-        });
+        let out_dir = super::level_dir(out, k, n, &lbl);
         planned.push(PlannedLine { label: lbl, factor, plan, estimate, out_dir });
     }
-    let total: f64 = planned.iter().map(|p| p.estimate.node_steps).sum();
-    let written = planned.iter().find(|p| p.factor == 1.0).map_or(f64::NAN, |p| p.estimate.node_steps);
-    let finest = &planned[n - 1];
-    let work = finest.estimate.node_steps;
-    let within = work.partial_cmp(&o.budget_node_steps).is_some_and(|c| c.is_le());
-    if !within || finest.estimate.check_resolvable().is_err() {
-        return Err(StudyError::Budget {
-            file,
-            label: finest.label.clone(),
-            segments: finest.estimate.nodes as f64,
-            dt_s: finest.estimate.dt_s,
-            node_steps: work,
-            wall_s: finest.estimate.wall_time_s(),
-            budget: o.budget_node_steps,
-            levels: n,
-            total,
-            ratio: total / written,
-        });
-    }
+    super::check_budget(file, o, &planned.iter().map(PlannedLine::work).collect::<Vec<_>>())?;
     Ok(planned)
 }
 

@@ -125,6 +125,71 @@ pub struct Planned {
     pub out_dir: Option<PathBuf>,
 }
 
+impl Planned {
+    /// Its work, as the budget check and the command's messages read it.
+    pub fn work(&self) -> LevelWork {
+        LevelWork {
+            label: self.level.label(),
+            factor: self.level.factor,
+            count: self.estimate.segments,
+            dt_s: self.estimate.dt_s,
+            node_steps: self.estimate.work_node_steps(),
+            wall_s: self.estimate.wall_time_s(),
+            resolvable: self.estimate.check_resolvable().is_ok(),
+        }
+    }
+}
+
+/// A level's work, whatever the scenario's kind (one conductor or a line).
+pub struct LevelWork {
+    /// its label (`x2`)
+    pub label: String,
+    /// its grid (or step) relative to the scenario as written [-]
+    pub factor: f64,
+    /// its segments (one conductor) or nodes (a line)
+    pub count: f64,
+    /// its step [s]
+    pub dt_s: f64,
+    /// its work [node-steps]
+    pub node_steps: f64,
+    /// its estimated wall time [s]
+    pub wall_s: f64,
+    /// whether the run's clock resolves its step (the estimate's `check_resolvable`)
+    pub resolvable: bool,
+}
+
+/// Where level `k` of `n` writes its files (none without `out`): the finest to `out`, the others to
+/// `out/levels/<k>_<label>`.
+pub(crate) fn level_dir(out: Option<&Path>, k: usize, n: usize, label: &str) -> Option<PathBuf> {
+    out.map(|out| {
+        if k + 1 == n { out.to_path_buf() } else { out.join("levels").join(format!("{k}_{}", label.replace('/', "_"))) }
+    })
+}
+
+/// Refuse the study of `levels` (coarse to fine) when its finest level is above the budget or its step is
+/// below what the run's clock resolves.
+pub(crate) fn check_budget(file: String, o: &Options, levels: &[LevelWork]) -> Result<(), StudyError> {
+    let total: f64 = levels.iter().map(|l| l.node_steps).sum();
+    let written = levels.iter().find(|l| l.factor == 1.0).map_or(f64::NAN, |l| l.node_steps);
+    let finest = levels.last().expect("at least three levels");
+    let within = finest.node_steps.partial_cmp(&o.budget_node_steps).is_some_and(|c| c.is_le());
+    if within && finest.resolvable {
+        return Ok(());
+    }
+    Err(StudyError::Budget {
+        file,
+        label: finest.label.clone(),
+        segments: finest.count,
+        dt_s: finest.dt_s,
+        node_steps: finest.node_steps,
+        wall_s: finest.wall_s,
+        budget: o.budget_node_steps,
+        levels: levels.len(),
+        total,
+        ratio: total / written,
+    })
+}
+
 /// Read `path`, make the levels, plan them and check the budget. The finest level writes to `out`, the
 /// others to `out/levels/<k>_<label>`.
 pub fn plan(path: &Path, out: &Path, o: &Options) -> Result<Vec<Planned>, StudyError> {
@@ -147,35 +212,11 @@ pub fn plan_scenario(sc: &Scenario, file: &str, out: Option<&Path>, o: &Options)
                 source: e,
             })?;
             let estimate = plan.work_estimate();
-            let out_dir = out.map(|out| {
-                if k + 1 == n {
-                    out.to_path_buf()
-                } else {
-                    out.join("levels").join(format!("{k}_{}", level.label().replace('/', "_")))
-                }
-            });
+            let out_dir = level_dir(out, k, n, &level.label());
             Ok(Planned { level, plan, estimate, out_dir })
         })
         .collect::<Result<Vec<_>, StudyError>>()?;
-    let total: f64 = planned.iter().map(|p| p.estimate.work_node_steps()).sum();
-    let written = planned.iter().find(|p| p.level.factor == 1.0).map_or(f64::NAN, |p| p.estimate.work_node_steps());
-    let finest = &planned[n - 1];
-    let work = finest.estimate.work_node_steps();
-    let within = work.partial_cmp(&o.budget_node_steps).is_some_and(|c| c.is_le());
-    if !within || finest.estimate.check_resolvable().is_err() {
-        return Err(StudyError::Budget {
-            file,
-            label: finest.level.label(),
-            segments: finest.estimate.segments,
-            dt_s: finest.estimate.dt_s,
-            node_steps: work,
-            wall_s: finest.estimate.wall_time_s(),
-            budget: o.budget_node_steps,
-            levels: n,
-            total,
-            ratio: total / written,
-        });
-    }
+    check_budget(file, o, &planned.iter().map(Planned::work).collect::<Vec<_>>())?;
     Ok(planned)
 }
 
