@@ -14,7 +14,7 @@
 use ohl::element::tension::LawKind;
 use ohl::line::contact::{ConductorContact, ContactError, ContactPair};
 use ohl::line::{LineConductor, Model, Role};
-use ohl::scheme::{LineExplicit, Loads, StepParams, WindGate};
+use ohl::scheme::{LineExplicit, Loads, StepParams};
 use ohl::wire::{Conductor, Constraint, Wire};
 
 /// Linear density [kg/m] and axial stiffness [N] (ACSR Drake, as tests/line.rs).
@@ -25,16 +25,6 @@ const LEN: f64 = 20.0;
 const N: usize = 20;
 /// Conductor radius [m]: gap 2 r between the axes.
 const RADIUS: f64 = 0.015;
-
-fn loads() -> Loads {
-    Loads {
-        gravity_m_per_s2: 0.0,
-        uniform_load_n_per_m: [0.0; 3],
-        wind: None,
-        wind_scale: 1.0,
-        wind_gate: WindGate::Always,
-    }
-}
 
 /// A straight, unstressed wire along `x2` at `x1 = x`, every node free (no supports: it moves as a body).
 fn free_wire(x: f64) -> Wire {
@@ -49,7 +39,12 @@ fn free_wire(x: f64) -> Wire {
 fn line(a: Wire, b: Wire, dt: f64, damping_per_s: f64, contact: ConductorContact) -> LineExplicit {
     let mut m = Model::new();
     for (k, wire) in [a, b].into_iter().enumerate() {
-        m.add_conductor(LineConductor { name: format!("C{k}"), role: Role::Phase, wire, loads: loads() });
+        m.add_conductor(LineConductor {
+            name: format!("C{k}"),
+            role: Role::Phase,
+            wire,
+            loads: Loads::gravity_only(0.0),
+        });
     }
     let p = StepParams { dt_s: dt, smoothing: 0.0, mass_damping_per_s: damping_per_s, max_speed_m_per_s: 1e3 };
     let mut l = LineExplicit::new(&m, p).unwrap();
@@ -246,7 +241,12 @@ fn stiff_contact_lowers_the_step() {
     let limit = 0.5 / (k / (0.5 * RHO)).sqrt();
     let mut m = Model::new();
     for (c, x) in [0.0, 1.0].into_iter().enumerate() {
-        m.add_conductor(LineConductor { name: format!("C{c}"), role: Role::Phase, wire: free_wire(x), loads: loads() });
+        m.add_conductor(LineConductor {
+            name: format!("C{c}"),
+            role: Role::Phase,
+            wire: free_wire(x),
+            loads: Loads::gravity_only(0.0),
+        });
     }
     let p = StepParams { dt_s: 1e-4, smoothing: 0.002, mass_damping_per_s: 0.0, max_speed_m_per_s: 1e3 };
     let mut l = LineExplicit::new(&m, p).unwrap();

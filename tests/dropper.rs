@@ -24,7 +24,7 @@ use ohl::exact::catenary::ElasticCatenary;
 use ohl::line::build::{Attach, add_section_conductor};
 use ohl::line::dropper::{add_dropper, dropper_nodes};
 use ohl::line::{Endpoint, LineConductor, Model, NodeRef, Role, Support};
-use ohl::scheme::{LineExplicit, Loads, StepParams, WindGate};
+use ohl::scheme::{LineExplicit, Loads, StepParams};
 use ohl::statics::{self, StaticOptions};
 use ohl::wire::section::{Section, Span, Stringing, Support as SectionSupport};
 use ohl::wire::{Conductor, Wire};
@@ -32,16 +32,6 @@ use ohl::wire::{Conductor, Wire};
 const G: f64 = 9.81;
 const EA: f64 = 1.334e7;
 const RHO: f64 = 0.6711;
-
-fn loads() -> Loads {
-    Loads {
-        gravity_m_per_s2: G,
-        uniform_load_n_per_m: [0.0; 3],
-        wind: None,
-        wind_scale: 1.0,
-        wind_gate: WindGate::Always,
-    }
-}
 
 fn conductor() -> Conductor {
     Conductor { axial_stiffness_n: EA, internal_friction_n_s: 0.0, law: LawKind::TensionOnly }
@@ -57,7 +47,7 @@ fn dropper_conductor(top: [f64; 3], terminal: [f64; 3], length: f64, segments: u
     let x = dropper_nodes(top, Some(terminal), length, segments, RHO * G, EA).unwrap();
     let x = x.map(|c| c[1..].to_vec());
     let wire = Wire::new(conductor(), x, vec![length / segments as f64; segments - 1], RHO);
-    LineConductor { name: "dropper".into(), role: Role::Phase, wire, loads: loads() }
+    LineConductor { name: "dropper".into(), role: Role::Phase, wire, loads: Loads::gravity_only(G) }
 }
 
 /// Courant step `l0 / sqrt(EA / rho)` times `c` [s].
@@ -140,7 +130,8 @@ fn span_with_dropper(courant: f64) -> (LineExplicit, usize, usize, [usize; 3], f
         gravity_m_per_s2: G,
     };
     let attach = [Attach::Fixed { support: s0 }, Attach::Fixed { support: s1 }];
-    let (span_c, _) = add_section_conductor(&mut model, "span", Role::Phase, &sec, &attach, loads()).unwrap();
+    let (span_c, _) =
+        add_section_conductor(&mut model, "span", Role::Phase, &sec, &attach, Loads::gravity_only(G)).unwrap();
     let joint = NodeRef::new(span_c, 15);
     let top = model.conductors[span_c].wire.position(15);
     let (segments, length) = (22, 5.5);
@@ -271,7 +262,7 @@ fn a_free_dropper_hangs_plumb_and_its_joint_carries_its_weight() {
     let wire = Wire::new(conductor(), x, vec![s / n as f64; n - 1], RHO);
     let mut model = Model::new();
     let top = model.add_support(Support::rigid("top", a));
-    let c = LineConductor { name: "free".into(), role: Role::Phase, wire, loads: loads() };
+    let c = LineConductor { name: "free".into(), role: Role::Phase, wire, loads: Loads::gravity_only(G) };
     let (c, link) = add_dropper(&mut model, c, Endpoint::Support { support: top, offset_m: [0.0; 3] }, false).unwrap();
     // Pushed aside by 0.1 m at the bottom, so that the solve has something to do (64 iterations; from 0.5
     // m the regularised iteration, built for hanging spans, does not find the plumb line: a limit of the

@@ -6,6 +6,8 @@
 use ohl::shortcircuit::current::{CurrentError, FaultCurrent, FaultCurrentSpec, FaultKind, Reclose};
 use std::f64::consts::{PI, SQRT_2};
 
+use crate::common::gauss_legendre as gl;
+
 fn spec(kind: FaultKind, r_over_x: f64, angle: Option<f64>) -> FaultCurrentSpec {
     FaultCurrentSpec {
         kind,
@@ -92,19 +94,6 @@ fn worst_case_peak_is_the_exact_peak_and_near_kappa() {
 /// below 1e-12 relative); tolerance 1e-10 relative.
 #[test]
 fn joule_integral_matches_its_closed_form() {
-    let gl = |f: &dyn Fn(f64) -> f64, a: f64, b: f64, panels: usize| {
-        let x = [0.183_434_642_495_649_8, 0.525_532_409_916_329, 0.796_666_477_413_626_7, 0.960_289_856_497_536_3];
-        let wt = [0.362_683_783_378_362, 0.313_706_645_877_887_3, 0.222_381_034_453_374_5, 0.101_228_536_290_376_3];
-        let h = (b - a) / panels as f64;
-        let mut s = 0.0;
-        for p in 0..panels {
-            let (m, r) = (a + (p as f64 + 0.5) * h, 0.5 * h);
-            for k in 0..4 {
-                s += wt[k] * r * (f(m - r * x[k]) + f(m + r * x[k]));
-            }
-        }
-        s
-    };
     let closed = |i: f64, f: f64, rx: f64, a: f64, t: f64| {
         let w = 2.0 * PI * f;
         let tau = 1.0 / (w * rx);

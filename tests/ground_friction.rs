@@ -8,7 +8,7 @@
 //! to about `v0 dt`: 5e-3 m here for `dt = 1e-3 s`; asserted at 2 v0 dt.
 
 use ohl::element::tension::LawKind;
-use ohl::scheme::{Explicit, Ground, Loads, StepParams, WindGate};
+use ohl::scheme::{Explicit, Ground, Loads, StepParams};
 use ohl::wire::{Conductor, Constraint, Wire};
 
 const G: f64 = 9.81;
@@ -21,13 +21,7 @@ fn lying_wire(n: usize, v0: f64, dt: f64, ground: Ground) -> Explicit {
     w.set_constraint(0, Constraint::Free);
     w.set_constraint(n, Constraint::Free);
     w.v[1].fill(v0);
-    let loads = Loads {
-        gravity_m_per_s2: G,
-        uniform_load_n_per_m: [0.0; 3],
-        wind: None,
-        wind_scale: 1.0,
-        wind_gate: WindGate::Always,
-    };
+    let loads = Loads::gravity_only(G);
     let params = StepParams { dt_s: dt, smoothing: 0.0, mass_damping_per_s: 0.0, max_speed_m_per_s: 1e3 };
     let mut s = Explicit::new(w, loads, params);
     s.set_ground(Some(ground));

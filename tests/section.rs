@@ -16,7 +16,7 @@
 //! stretch).
 
 use ohl::element::tension::LawKind;
-use ohl::scheme::{Explicit, Loads, StepParams, WindGate};
+use ohl::scheme::{Explicit, Loads, StepParams};
 use ohl::statics::{self, StaticOptions};
 use ohl::wire::section::{self, CrossarmSpec, Layout, Section, Span, Stringing, Support};
 use ohl::wire::{Conductor, Wire};
@@ -55,13 +55,7 @@ fn drake_section(segments: usize, crossarm: Option<CrossarmSpec>) -> Section {
 }
 
 fn solver(wire: Wire, dt_s: f64) -> Explicit {
-    let loads = Loads {
-        gravity_m_per_s2: G,
-        uniform_load_n_per_m: [0.0; 3],
-        wind: None,
-        wind_scale: 1.0,
-        wind_gate: WindGate::Always,
-    };
+    let loads = Loads::gravity_only(G);
     Explicit::new(wire, loads, StepParams { dt_s, smoothing: 0.0, mass_damping_per_s: 0.0, max_speed_m_per_s: 4.2e3 })
 }
 

@@ -16,27 +16,19 @@ use ohl::element::em_force::MU0_H_PER_M;
 use ohl::element::tension::LawKind;
 use ohl::line::electromagnetic::{Carrier, Electromagnetic, EmError, EmNumerics};
 use ohl::line::{LineConductor, Model, Role};
-use ohl::scheme::{Explicit, LineExplicit, Loads, StepParams, WindGate};
+use ohl::scheme::{Explicit, LineExplicit, Loads, StepParams};
 use ohl::shortcircuit::current::{FaultCurrent, FaultCurrentSpec, FaultKind};
 use ohl::statics::{self, StaticOptions};
 use ohl::wire::{Conductor, Wire};
 use std::f64::consts::PI;
+
+use crate::common::gauss_legendre as gl;
 
 const G: f64 = 9.81;
 /// ACSR Drake as in tests/line.rs: EA [N], linear density [kg/m], radius [m].
 const EA: f64 = 2.9e7;
 const RHO: f64 = 1.628;
 const RADIUS: f64 = 0.01405;
-
-fn loads(g: f64) -> Loads {
-    Loads {
-        gravity_m_per_s2: g,
-        uniform_load_n_per_m: [0.0; 3],
-        wind: None,
-        wind_scale: 1.0,
-        wind_gate: WindGate::Always,
-    }
-}
 
 fn params(dt_s: f64) -> StepParams {
     StepParams { dt_s, smoothing: 0.0, mass_damping_per_s: 0.0, max_speed_m_per_s: 4.0e3 }
@@ -54,7 +46,7 @@ fn straight(a: [f64; 3], b: [f64; 3], n: usize, rho: f64, strain: f64) -> Wire {
 
 /// The wire at its static equilibrium under gravity.
 fn settled(w: Wire) -> Wire {
-    let mut s = Explicit::new(w, loads(G), params(1e-3));
+    let mut s = Explicit::new(w, Loads::gravity_only(G), params(1e-3));
     statics::solve(&mut s, &StaticOptions::default()).unwrap();
     let mut w = s.wire().clone();
     for v in &mut w.v {
@@ -66,7 +58,12 @@ fn settled(w: Wire) -> Wire {
 fn model(wires: Vec<Wire>, g: f64) -> Model {
     let mut m = Model::new();
     for (i, wire) in wires.into_iter().enumerate() {
-        m.add_conductor(LineConductor { name: format!("L{}", i + 1), role: Role::Phase, wire, loads: loads(g) });
+        m.add_conductor(LineConductor {
+            name: format!("L{}", i + 1),
+            role: Role::Phase,
+            wire,
+            loads: Loads::gravity_only(g),
+        });
     }
     m
 }
@@ -92,21 +89,6 @@ fn load(n: usize, current: FaultCurrent, k: usize, m: usize, extrapolate: bool) 
         current,
         numerics: EmNumerics { chord_segments: k, refresh_steps: m, extrapolate },
     }
-}
-
-/// Composite 8-point Gauss-Legendre on `[a, b]`.
-fn gl(f: &dyn Fn(f64) -> f64, a: f64, b: f64, panels: usize) -> f64 {
-    let x = [0.183_434_642_495_649_8, 0.525_532_409_916_329, 0.796_666_477_413_626_7, 0.960_289_856_497_536_3];
-    let w = [0.362_683_783_378_362, 0.313_706_645_877_887_3, 0.222_381_034_453_374_5, 0.101_228_536_290_376_3];
-    let h = (b - a) / panels as f64;
-    let mut s = 0.0;
-    for p in 0..panels {
-        let (m, r) = (a + (p as f64 + 0.5) * h, 0.5 * h);
-        for k in 0..4 {
-            s += w[k] * r * (f(m - r * x[k]) + f(m + r * x[k]));
-        }
-    }
-    s
 }
 
 fn sum_forces(f: &[Vec<f64>; 3]) -> [f64; 3] {

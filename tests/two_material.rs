@@ -16,7 +16,7 @@
 use ohl::conductor::{Component, Curve, CurveKind, TwoMaterial};
 use ohl::element::tension::LawKind;
 use ohl::exact::ElasticCatenary;
-use ohl::scheme::{Explicit, Loads, StepParams, WindGate};
+use ohl::scheme::{Explicit, Loads, StepParams};
 use ohl::statics::{self, StaticOptions};
 use ohl::wire::{Conductor, Wire};
 
@@ -88,13 +88,7 @@ fn span_wire(n: usize, span: f64, length: f64, law: TwoMaterial, theta: f64) -> 
 }
 
 fn solver(w: Wire, dt: f64, damping: f64) -> Explicit {
-    let loads = Loads {
-        gravity_m_per_s2: G,
-        uniform_load_n_per_m: [0.0; 3],
-        wind: None,
-        wind_scale: 1.0,
-        wind_gate: WindGate::Always,
-    };
+    let loads = Loads::gravity_only(G);
     Explicit::new(
         w,
         loads,
@@ -196,13 +190,7 @@ fn a_taut_wire_loaded_then_unloaded_returns_along_the_modulus_line_to_the_perman
     let dt = 0.5 * 10.0 / (w.axial_stiffness_n[0] / RHO).sqrt();
     let mut s = Explicit::new(
         w,
-        Loads {
-            gravity_m_per_s2: 0.0,
-            uniform_load_n_per_m: [0.0; 3],
-            wind: None,
-            wind_scale: 1.0,
-            wind_gate: WindGate::Always,
-        },
+        Loads::gravity_only(0.0),
         StepParams { dt_s: dt, smoothing: 0.0, mass_damping_per_s: 20.0, max_speed_m_per_s: 1e3 },
     );
     let (peak, t_ramp) = (0.003, 2.0);

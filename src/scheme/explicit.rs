@@ -50,6 +50,19 @@ pub struct Loads {
     pub wind_gate: WindGate,
 }
 
+impl Loads {
+    /// The weight alone: gravity `g` [m/s^2] along `-x3` (0 for none), no uniform load, no wind.
+    pub fn gravity_only(gravity_m_per_s2: f64) -> Self {
+        Loads {
+            gravity_m_per_s2,
+            uniform_load_n_per_m: [0.0; 3],
+            wind: None,
+            wind_scale: 1.0,
+            wind_gate: WindGate::Always,
+        }
+    }
+}
+
 /// Where the wind acts.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum WindGate {

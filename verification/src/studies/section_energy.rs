@@ -90,7 +90,7 @@
 
 use crate::report::{Budget, StudyReport, Table, sci};
 use ohl::element::tension::LawKind;
-use ohl::scheme::{Explicit, Ground, Loads, StepParams, WindGate};
+use ohl::scheme::{Explicit, Ground, Loads, StepParams};
 use ohl::wire::section::{self, CrossarmSpec, Layout, Section, Span, Stringing, Support};
 use ohl::wire::{Conductor, Wire};
 use ohl_app::plot::{Chart, Series, Style};
@@ -159,13 +159,7 @@ fn solver_of(n: usize, courant: f64) -> Result<(Explicit, Layout), String> {
     }
     let ds = (0..wire.segments()).map(|j| wire.rest_length[j]).fold(f64::INFINITY, f64::min);
     let dt = courant * ds / (EA / RHO).sqrt();
-    let loads = Loads {
-        gravity_m_per_s2: G,
-        uniform_load_n_per_m: [0.0; 3],
-        wind: None,
-        wind_scale: 1.0,
-        wind_gate: WindGate::Always,
-    };
+    let loads = Loads::gravity_only(G);
     let params = StepParams { dt_s: dt, smoothing: SMOOTHING, mass_damping_per_s: 0.0, max_speed_m_per_s: 1.0e3 };
     let mut s = Explicit::new(wire, loads, params);
     s.set_ground(Some(Ground::level(GROUND_M, RESTITUTION, FRICTION)));
