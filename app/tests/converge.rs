@@ -112,6 +112,15 @@ fn converge_above_the_budget_is_refused_with_the_estimate() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
+/// `ohl run FILE --out OUT --converge --quiet`, which must succeed.
+fn converge_quietly(file: &Path, out: &Path) {
+    let o = Command::new(env!("CARGO_BIN_EXE_ohl"))
+        .args(["run", file.to_str().unwrap(), "--out", out.to_str().unwrap(), "--converge", "--quiet"])
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+}
+
 /// Run `--converge` on case (a) with its first 3 s (the study's window) and `segments_per_span = n`,
 /// with `numerics` replacing the case's `[numerics]` values; the study's quantity is the largest
 /// longitudinal load on the first suspension support.
@@ -129,11 +138,7 @@ fn break_case(name: &str, n: usize, numerics: Option<&str>) -> serde_json::Value
     let file = dir.join("a.toml");
     std::fs::write(&file, text).unwrap();
     let out = dir.join("out");
-    let o = Command::new(env!("CARGO_BIN_EXE_ohl"))
-        .args(["run", file.to_str().unwrap(), "--out", out.to_str().unwrap(), "--converge", "--quiet"])
-        .output()
-        .unwrap();
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    converge_quietly(&file, &out);
     let json = serde_json::from_str(&std::fs::read_to_string(out.join("convergence.json")).unwrap()).unwrap();
     let _ = std::fs::remove_dir_all(&dir);
     json
@@ -302,11 +307,7 @@ fn converge_on_a_line_pairs_every_value_of_its_summaries() {
     let file = dir.join("e.toml");
     std::fs::write(&file, text).unwrap();
     let out = dir.join("out");
-    let o = Command::new(env!("CARGO_BIN_EXE_ohl"))
-        .args(["run", file.to_str().unwrap(), "--out", out.to_str().unwrap(), "--converge", "--quiet"])
-        .output()
-        .unwrap();
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    converge_quietly(&file, &out);
     let read = |p: &Path| -> serde_json::Value { serde_json::from_str(&std::fs::read_to_string(p).unwrap()).unwrap() };
     let json = read(&out.join("convergence.json"));
     let finest = read(&out.join("summary.json"));
