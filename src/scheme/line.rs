@@ -250,8 +250,9 @@ impl LineExplicit {
 
     /// Set (or remove) the contact between conductors ([`crate::line::contact`], evaluated by
     /// [`crate::scheme::conductor_contact`]) from the next evaluated level on, its penalty scaled to the
-    /// line's nominal step. Refuses pairs that do not fit the line. Without it (the default) nothing is
-    /// evaluated and the step is bitwise the one without it.
+    /// line's nominal step, or given ([`ConductorContact::stiffness_n_per_m2`]: then the nominal step is
+    /// lowered by [`LineExplicit::set_time_step`] where the contact needs it). Refuses pairs that do not fit
+    /// the line. Without it (the default) nothing is evaluated and the step is bitwise the one without it.
     pub fn set_contact(&mut self, contact: Option<ConductorContact>) -> Result<(), ContactError> {
         if let Some(c) = &contact {
             c.check(self.conductors.len())?;
