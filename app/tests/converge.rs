@@ -182,6 +182,219 @@ fn converge_on_the_break_case_agrees_with_the_section_transients_study() {
     assert!(quantity(&smoothed, "supports[1].peaks.components[1].time_s")["verdict"] != "converged within rtol");
 }
 
+/// Run `--converge` on case (b) to 7 s (the study's window) with `numerics` in place of the case's
+/// `[numerics]` values; segments 100, 200, 400 per span.
+fn shedding_case(name: &str, numerics: &str) -> serde_json::Value {
+    let dir = tmp(name);
+    let text = std::fs::read_to_string(repo().join("cases/b_ice_shedding.toml")).unwrap();
+    let mut text = text
+        .replace("end_time_s = 40.0", "end_time_s = 7.0")
+        .replace("snapshot_times_s = [1.0, 2.0, 3.0, 4.0, 6.0]", "snapshot_times_s = []");
+    let (a, b) = (text.find("[numerics]").unwrap(), text.find("[duration]").unwrap());
+    text.replace_range(a..b, numerics);
+    let file = dir.join("b.toml");
+    std::fs::write(&file, text).unwrap();
+    let out = dir.join("out");
+    converge_quietly(&file, &out);
+    let json = serde_json::from_str(&std::fs::read_to_string(out.join("convergence.json")).unwrap()).unwrap();
+    let _ = std::fs::remove_dir_all(&dir);
+    json
+}
+
+/// Case (b) against study `section_transients` (figures/verification/REPORT.md, its tables of runs and
+/// orders): the study's quantity is the jump `max_t x3(t) - x3(0)` of the middle span's mid-span node,
+/// which is the summary's rise of probe `span2_mid` (component 3, at a node of the even grid). The
+/// study gives, at N = 100, 200, 400 per span and Courant 0.9:
+/// - with the smoothing b = 0.02: 18.852954, 18.940428, 18.984279 m, Celik order 0.996, Richardson
+///   19.028360 m, GCI 2.902e-3;
+/// - undamped: 19.028856, 19.028372, 19.028253 m, Celik order 2.015, Richardson 19.028214 m, GCI
+///   2.582e-6;
+/// - and the undamped extrapolate inside the smoothed fine-grid GCI band (4.393e-2 m <= 5.481e-2 m).
+///
+/// What may differ, and by how much:
+/// - the study takes the vertex of the parabola through the discrete extreme and its neighbours, the
+///   summary the extreme of the time levels (a peak is what was computed at a level), which lies below
+///   the vertex by at most `|x''| dt^2 / 8`; the study's own bound is 2e-6 m at N = 100 (`|x''| = 22
+///   m/s^2`), a quarter of it per halving of dt;
+/// - the study measures from `t = 0` and the summary from the shedding at 1 s, between which the iced
+///   equilibrium moves by its Newton residual; the summary gives that drift itself (phase 0's rise,
+///   about 5e-9 m);
+/// - the study prints 6 decimals (5e-7 m).
+///
+/// So each level lies in `[v - x'' dt^2 / 8 - drift - 5e-7, v + drift + 5e-7]`. Orders: the smoothed
+/// differences (8.7e-2, 4.4e-2 m) are moved by those terms by less than 1e-4 in the order, so within 2e-3
+/// of the study's (its printed digits); the undamped differences (4.8e-4, 1.2e-4 m) are of the size of
+/// the sampling term, so the order is held to the study's admitted interval 2 +- 0.15. The extrapolates
+/// agree within the sum of their GCI bands.
+#[test]
+fn converge_on_the_ice_shedding_case_agrees_with_the_section_transients_study() {
+    let path = "probes[3].peak_rise_m[2].value_m";
+    let drift = "phases[0].peaks.rises[3][2].value_m";
+    let dt_coarse = 8.5399e-4;
+    let sampling = |k: i32| 22.0 * (dt_coarse / 2f64.powi(k)).powi(2) / 8.0;
+    let runs = [
+        (
+            "shed_smooth",
+            "[numerics]\ncourant = 0.9\nsmoothing = 0.02\n\n",
+            [18.852954, 18.940428, 18.984279],
+            0.996,
+            2e-3,
+            19.028360,
+            2.902e-3,
+        ),
+        (
+            "shed_undamped",
+            "[numerics]\ncourant = 0.9\nsmoothing = 0.0\n\n",
+            [19.028856, 19.028372, 19.028253],
+            2.0,
+            0.15,
+            19.028214,
+            2.582e-6,
+        ),
+    ];
+    let mut fine_band = (0.0, 0.0);
+    for (name, numerics, study, order, order_tol, richardson, gci) in runs {
+        let json = shedding_case(name, numerics);
+        let q = quantity(&json, path);
+        for (k, v) in study.iter().enumerate() {
+            let drift = quantity(&json, drift)["values"][k].as_f64().unwrap().abs();
+            assert!(drift < 1e-7, "{name}: the iced equilibrium drifts by {drift} m before the shedding");
+            let x = q["values"][k].as_f64().unwrap();
+            let (lo, hi) = (v - sampling(k as i32) - drift - 5e-7, v + drift + 5e-7);
+            assert!(x >= lo && x <= hi, "{name} level {k}: {x} outside [{lo}, {hi}] about the study's {v}");
+        }
+        let e = &q["estimate"];
+        let p = e["order"].as_f64().unwrap();
+        assert!((p - order).abs() <= order_tol, "{name}: order {p} vs {order} +- {order_tol}");
+        let ext = e["extrapolate"].as_f64().unwrap();
+        let band = e["gci_fine_abs"].as_f64().unwrap() + gci * study[2];
+        assert!((ext - richardson).abs() <= band, "{name}: extrapolate {ext} vs the study's {richardson}, band {band}");
+        if name == "shed_smooth" {
+            fine_band = (q["values"][2].as_f64().unwrap(), e["gci_fine_abs"].as_f64().unwrap());
+        } else {
+            // the inviscid limit of both: the undamped extrapolate lies in the smoothed fine-grid band
+            assert!((ext - fine_band.0).abs() <= fine_band.1, "{ext} outside {fine_band:?}");
+        }
+        // the mid-span of the shedding span rises above the chord, so its oscillation has a period about it
+        assert!(quantity(&json, "probes[3].period_about_chord_s[2]")["values"][2].as_f64().unwrap() > 4.0);
+    }
+}
+
+/// A taut string (chord 100 m, EA = 1e6 N, 1 kg/m, pre-strain 1 %: T = 1e4 N) released at rest from a
+/// parabola of sag `A = 1e-3 m`, without gravity or damping, built with its two exact answers:
+/// - the continuous string's period `2 L0 / c`, `c = sqrt(T / (rho0 (1 + e0)))` (`ohl::exact::modes`):
+///   the mid-span's crossings of the chord are at `T/4, 3T/4, ...` exactly, since the parabola holds odd
+///   modes only and `cos(n pi / 2) = 0` for odd `n`;
+/// - the lumped chain's (the semi-discrete scheme's) crossing period at `n` segments, from its exact modal
+///   solution `u_mid(t) = sum_n b_n sin(n pi / 2) cos(w_n t)`, `w_n = (2 c / ds) sin(n pi / (2 N))`, `b_n`
+///   the discrete sine transform of the start, each upward crossing found by bisection to 1e-13 s.
+/// The amplitude's nonlinear stiffening, `(A / L)^2 EA / T` ~ 1e-8 relative (2e-8 s), and the start's
+/// nodes being equally spaced in arc length (a 1e-13 m difference) are far below every tolerance here.
+fn taut_string_problem(segments: usize, courant: f64) -> (String, f64, f64) {
+    let (ea, rho, chord, e0, sag): (f64, f64, f64, f64, f64) = (1.0e6, 1.0, 100.0, 0.01, 1.0e-3);
+    let l0 = chord / (1.0 + e0);
+    let text = format!(
+        "name = \"taut_string\"\n[conductor]\naxial_stiffness_n = {ea:e}\nlinear_density_kg_per_m = {rho:e}\n\
+         [geometry]\nleft_support_m = [0.0, 0.0, 0.0]\nright_support_m = [0.0, {chord:e}, 0.0]\nsegments = {segments}\n\
+         unstretched_length_m = {l0:e}\n[initial]\nshape = \"parabola\"\nsag_m = {sag:e}\n\
+         [loads]\ngravity_m_per_s2 = 0.0\n[numerics]\ncourant = {courant:e}\nsmoothing = 0.0\n\
+         [duration]\nend_time_s = 5.0\n[output]\nsample_interval_s = 0.1\n"
+    );
+    let c = (ea * e0 / (rho * (1.0 + e0))).sqrt();
+    let n = segments;
+    let ds = l0 / n as f64;
+    let pi = std::f64::consts::PI;
+    let u: Vec<f64> = (0..=n).map(|i| i as f64 / n as f64).map(|x| -sag * 4.0 * x * (1.0 - x)).collect();
+    let modes: Vec<(f64, f64)> = (1..n)
+        .filter(|k| k % 2 == 1)
+        .map(|k| {
+            let b: f64 =
+                (0..=n).map(|i| u[i] * (k as f64 * pi * i as f64 / n as f64).sin()).sum::<f64>() * 2.0 / n as f64;
+            let w = 2.0 * c / ds * (k as f64 * pi / (2.0 * n as f64)).sin();
+            (b * (k as f64 * pi / 2.0).sin(), w)
+        })
+        .collect();
+    let mid = |t: f64| modes.iter().map(|&(b, w)| b * (w * t).cos()).sum::<f64>();
+    let mut ups = vec![];
+    let (mut t, step) = (0.0, 1e-3);
+    while t < 5.0 {
+        if mid(t) < 0.0 && mid(t + step) >= 0.0 {
+            let (mut lo, mut hi) = (t, t + step);
+            while hi - lo > 1e-13 {
+                let m = 0.5 * (lo + hi);
+                if mid(m) < 0.0 { lo = m } else { hi = m }
+            }
+            ups.push(0.5 * (lo + hi));
+        }
+        t += step;
+    }
+    assert!(ups.len() >= 2, "the chain's mid-span crosses upward {} times in 5 s", ups.len());
+    let chain = (ups[ups.len() - 1] - ups[0]) / (ups.len() - 1) as f64;
+    (text, chain, 2.0 * l0 / c)
+}
+
+/// `--converge` on [`taut_string_problem`], returning the mid-span's period entry and the level periods.
+fn string_period(name: &str, segments: usize, refine: &[&str]) -> serde_json::Value {
+    let dir = tmp(name);
+    let file = dir.join("string.toml");
+    std::fs::write(&file, taut_string_problem(segments, 0.5).0).unwrap();
+    let out = dir.join("out");
+    let mut args = vec!["run", file.to_str().unwrap(), "--out", out.to_str().unwrap(), "--converge", "--quiet"];
+    args.extend_from_slice(refine);
+    let o = Command::new(env!("CARGO_BIN_EXE_ohl")).args(&args).output().unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("convergence.json")).unwrap()).unwrap();
+    let _ = std::fs::remove_dir_all(&dir);
+    quantity(&json, "probes[0].period_about_chord_s[2]").clone()
+}
+
+/// The elastic string's frequency. **Time-step refinement** at N = 20 (Courant 0.5, 0.25, 0.125): the
+/// limit is the semi-discrete chain, whose period is exact from its modes; the leapfrog is second order,
+/// so the observed order is 2 +- 0.1 and the chain's period lies in the extrapolate's GCI band. **Grid
+/// refinement** (N = 20, 40, 80 at Courant 0.5): the continuous period lies in the GCI bands of the
+/// extrapolate and of the finest value. The order is not 2: the parabola's sine coefficients fall like
+/// `n^-3` (its curvature does not vanish at the supports), and mode `n`'s phase error `~ n^3 t / N^2`
+/// reaches O(1) for `n ~ N^(2/3)`, so the crossing period converges like `N^(-4/3)` (the chain's exact
+/// sequence: orders 1.34, 1.25, 1.43, 1.35 over N = 20 ... 640). The predicted order is therefore the
+/// chain's own three-grid order at 20, 40, 80; the run's levels differ from the chain's by the time
+/// error, at most `E = 1e-5` s (the step refinement gives 7.9e-6 s at N = 20, Courant 0.5, and dt halves
+/// with N), which moves the order by at most `(2E / |d21| + 2E / |d32|) / ln 2` (`d` the chain's
+/// differences).
+#[test]
+fn converge_recovers_the_elastic_strings_period() {
+    let (_, chain20, exact) = taut_string_problem(20, 0.5);
+    let q = string_period("string_step", 20, &["--refine", "step", "--rtol", "1e-6"]);
+    let e = &q["estimate"];
+    let p = e["order"].as_f64().unwrap();
+    assert!((p - 2.0).abs() <= 0.1, "step refinement: order {p}");
+    let (ext, band) = (e["extrapolate"].as_f64().unwrap(), e["gci_fine_abs"].as_f64().unwrap());
+    assert!((ext - chain20).abs() <= band, "step refinement: extrapolate {ext}, chain {chain20}, band {band}");
+    for k in 0..3 {
+        let x = q["values"][k].as_f64().unwrap();
+        assert!((x - chain20).abs() <= 1e-5, "Courant {}: period {x}, chain {chain20}", 0.5 / 2f64.powi(k as i32));
+    }
+
+    let q = string_period("string_grid", 20, &["--rtol", "1e-3"]);
+    let chain: Vec<f64> = [20, 40, 80].iter().map(|&n| taut_string_problem(n, 0.5).1).collect();
+    for (k, c) in chain.iter().enumerate() {
+        let x = q["values"][k].as_f64().unwrap();
+        assert!((x - c).abs() <= 1e-5, "N = {}: period {x}, chain {c}", 20 << k);
+    }
+    let (d21, d32) = (chain[1] - chain[0], chain[2] - chain[1]);
+    let chain_order = (d21 / d32).abs().ln() / 2f64.ln();
+    let tol = (2e-5 / d21.abs() + 2e-5 / d32.abs()) / 2f64.ln();
+    let e = &q["estimate"];
+    let p = e["order"].as_f64().unwrap();
+    assert!((chain_order - 4.0 / 3.0).abs() < 0.05, "the chain's own order {chain_order}");
+    assert!((p - chain_order).abs() <= tol, "grid refinement: order {p}, the chain's {chain_order} +- {tol}");
+    let (ext, band) = (e["extrapolate"].as_f64().unwrap(), e["gci_fine_abs"].as_f64().unwrap());
+    assert!((ext - exact).abs() <= band, "extrapolate {ext}, exact {exact}, band {band}");
+    let fine = q["values"][2].as_f64().unwrap();
+    assert!((fine - exact).abs() <= band, "finest {fine}, exact {exact}, band {band}");
+    assert_eq!(q["verdict"], "converged within rtol");
+}
+
 /// Levels that cannot be made are refused before anything runs, exit 2, naming the field as written: a
 /// grid that does not divide for `--coarsen` (of a single span and of a line), a coarsened Courant number
 /// above 1, two levels, `--static-after`.

@@ -8,6 +8,20 @@
 //!   run that settles and then breaks, ices or gusts reports the peaks of what the events do and not the
 //!   transient of a start from a shape that is not the equilibrium; 0 for a run without events;
 //! - the peaks of every phase: the stretches between events (the first starts at `t = 0`).
+//!
+//! Besides its extremes, every probe's displacement `d_k(t)` (component `k`, from the chord point) gives
+//! over each stretch `[t_a, ...]`:
+//!
+//! - its **rise** `max_t (d_k(t) - d_k(t_a))` and **fall** `min_t (d_k(t) - d_k(t_a))`, each with its
+//!   time: the largest increase and decrease from the stretch's first time level, e.g. the jump of an
+//!   ice-shedding span (`k = 3`) above its iced position and the dip of its neighbours;
+//! - its **period about the chord point**: each sign change of `d_k` between the levels `t_n` and `t_n+1`
+//!   is placed by linear interpolation, `t_c = t_n + (t_n+1 - t_n) d_n / (d_n - d_n+1)` (an `O(dt^2)`
+//!   error for a smooth signal); over the `m >= 2` crossings in the direction of the first one (upward or
+//!   downward) the period is `(t_c,m - t_c,1) / (m - 1)`, exact for any periodic signal that crosses
+//!   twice a period, whatever its mean. A level where `d_k` is exactly zero is not a side: the crossing is taken from the last level with a
+//!   sign. An oscillation about another position (a sagging span's vertical motion) never crosses the
+//!   chord point and has no period.
 
 use serde::Serialize;
 
@@ -88,6 +102,69 @@ pub struct SpanPeaks {
     pub least_clearance: Option<LeastLength>,
 }
 
+/// Sign changes of one displacement component about the chord point (module documentation).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Crossings {
+    /// the last level where the component had a sign: time [s] and value [m]
+    last: Option<(f64, f64)>,
+    /// the time of the last sign change [s], not yet confirmed by leaving the band
+    candidate: f64,
+    /// the side (`true` above) the component last left the band on
+    side: Option<bool>,
+    /// the first crossing: time [s] and whether it was upward (`None` before it)
+    first: Option<(f64, bool)>,
+    /// crossings in the first one's direction, and the time of the last of them [s]
+    same: u64,
+    last_same_s: f64,
+    /// all crossings
+    count: u64,
+}
+
+impl Crossings {
+    /// The level at `t` [s] with the value `d` [m]; a crossing counts once `|d|` exceeds `band` [m] on
+    /// the other side.
+    fn update(&mut self, t: f64, d: f64, band: f64) {
+        if d == 0.0 || d.is_nan() {
+            return;
+        }
+        if let Some((t0, d0)) = self.last
+            && (d0 < 0.0) != (d < 0.0)
+        {
+            self.candidate = t0 + (t - t0) * (d0 / (d0 - d));
+        }
+        self.last = Some((t, d));
+        if d.abs() <= band {
+            return;
+        }
+        let up = d > 0.0;
+        match self.side {
+            Some(side) if side != up => {
+                let tc = self.candidate;
+                let (_, first_up) = *self.first.get_or_insert((tc, up));
+                if up == first_up {
+                    self.same += 1;
+                    self.last_same_s = tc;
+                }
+                self.count += 1;
+            }
+            _ => {}
+        }
+        self.side = Some(up);
+    }
+
+    /// The mean period `(t_c,m - t_c,1) / (m - 1)` [s] over the `m >= 2` crossings in the direction of
+    /// the first; `None` with fewer.
+    pub fn period_s(&self) -> Option<f64> {
+        let (first_s, _) = self.first?;
+        (self.same >= 2).then(|| (self.last_same_s - first_s) / (self.same - 1) as f64)
+    }
+
+    /// The number of crossings, both directions.
+    pub fn count(&self) -> u64 {
+        self.count
+    }
+}
+
 /// Everything tracked over one stretch of time.
 #[derive(Clone, Debug, Default, PartialEq, Serialize)]
 pub struct PeakSet {
@@ -95,6 +172,17 @@ pub struct PeakSet {
     pub max_tension: PeakForce,
     /// largest-magnitude displacement of each probe per component (the mid-span probe first) [m]
     pub probes: Vec<[Peak; 3]>,
+    /// largest increase of each probe's displacement per component from its value at the stretch's first
+    /// time level, `>= 0` (the mid-span probe first) [m]
+    pub rises: Vec<[Peak; 3]>,
+    /// largest decrease likewise, `<= 0` [m]
+    pub falls: Vec<[Peak; 3]>,
+    /// each probe's crossings of the chord point per component (the mid-span probe first)
+    #[serde(skip)]
+    pub crossings: Vec<[Crossings; 3]>,
+    /// each probe's displacement at the stretch's first time level [m]
+    #[serde(skip)]
+    origin: Option<Vec<[f64; 3]>>,
     /// per support (fixed nodes in node order)
     pub supports: Vec<SupportPeaks>,
     /// per span of a section (empty for one span)
@@ -135,13 +223,17 @@ impl PeakSet {
         PeakSet {
             max_tension: PeakForce::default(),
             probes: vec![[Peak::default(); 3]; probes],
+            rises: vec![[Peak::default(); 3]; probes],
+            falls: vec![[Peak::default(); 3]; probes],
+            crossings: vec![[Crossings::default(); 3]; probes],
+            origin: None,
             supports: vec![SupportPeaks::default(); supports],
             spans: vec![SpanPeaks::default(); spans],
         }
     }
 
     fn update(&mut self, c: &Current) {
-        let Current { t, tau, tension, ref disp, ref forces, ref swings, ref spans } = *c;
+        let Current { t, tau, tension, ref disp, ref forces, ref swings, ref spans, band_m } = *c;
         largest(&mut self.max_tension, tension, t, tau);
         for (p, &(tension, clearance)) in self.spans.iter_mut().zip(spans) {
             largest(&mut p.max_tension, tension, t, tau);
@@ -155,6 +247,23 @@ impl PeakSet {
         for (p, d) in self.probes.iter_mut().zip(disp) {
             for k in 0..3 {
                 signed(&mut p[k], d[k], t, tau);
+            }
+        }
+        let origin = self.origin.get_or_insert_with(|| disp.clone());
+        for (((r, f), o), d) in self.rises.iter_mut().zip(&mut self.falls).zip(origin.iter()).zip(disp) {
+            for k in 0..3 {
+                let change = d[k] - o[k];
+                if change > r[k].value_m {
+                    r[k] = Peak { value_m: change, time_s: t, tau };
+                }
+                if change < f[k].value_m {
+                    f[k] = Peak { value_m: change, time_s: t, tau };
+                }
+            }
+        }
+        for (c, d) in self.crossings.iter_mut().zip(disp) {
+            for k in 0..3 {
+                c[k].update(t, d[k], band_m);
             }
         }
         for (s, (_, f)) in self.supports.iter_mut().zip(forces) {
@@ -205,7 +314,12 @@ struct Current {
     swings: Vec<Option<[f64; 2]>>,
     /// per span: largest tension [N] and least clearance [m]
     spans: Vec<(f64, Option<f64>)>,
+    /// the band a crossing must leave [m]: `1e-9` of the wire's chord at the first level
+    band_m: f64,
 }
+
+/// A crossing counts once the displacement passes this fraction of the wire's chord (module docs).
+const CROSSING_BAND: f64 = 1e-9;
 
 impl Peaks {
     /// Track `probes` (the mid-span probe first), `supports` supports and the `spans` of a section (first
@@ -243,6 +357,12 @@ impl Observer for Peaks {
         let s = level.solver;
         let c = &mut self.current;
         (c.t, c.tau) = (level.t_s, level.tau());
+        if c.band_m == 0.0 {
+            let w = s.wire();
+            let (a, b) = (w.position(0), w.position(w.segments()));
+            let chord = ((b[0] - a[0]).powi(2) + (b[1] - a[1]).powi(2) + (b[2] - a[2]).powi(2)).sqrt();
+            c.band_m = CROSSING_BAND * chord;
+        }
         for (d, p) in c.disp.iter_mut().zip(&self.probes) {
             *d = p.displacement(s.wire());
         }
@@ -280,5 +400,86 @@ impl Observer for Peaks {
         } else {
             self.phases.push(Phase { start_s: t_s, started_by: what.to_string(), peaks });
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Levels `t_n = n dt` of `d(t)`, fed to one component's crossings.
+    fn crossings_of(d: impl Fn(f64) -> f64, dt: f64, end_s: f64) -> Crossings {
+        let mut c = Crossings::default();
+        let steps = (end_s / dt).round() as usize;
+        for n in 0..=steps {
+            let t = n as f64 * dt;
+            c.update(t, d(t), 1e-9);
+        }
+        c
+    }
+
+    /// `d = 0.5 + sin(2 pi t)`: the crossings are unevenly spaced (downward at `7/12`, upward at `11/12` of
+    /// each period), so only crossings of one direction give the period, 1 s. Linear interpolation places
+    /// a crossing within `dt^2 max|d''| / (8 |d'|) = dt^2 (2 pi)^2 0.5 / (8 2 pi 0.866) = 0.453 dt^2` of the
+    /// true one, so the period over `m - 1` periods is within `2 (0.453 dt^2) / (m - 1)`.
+    #[test]
+    fn period_from_one_direction_of_crossings_of_an_offset_sine() {
+        let w = 2.0 * std::f64::consts::PI;
+        for dt in [1e-2, 1e-3] {
+            let c = crossings_of(|t| 0.5 + (w * t).sin(), dt, 5.3);
+            // crossings at 7/12, 11/12, 19/12, ... up to 5.3 s: 5 downward, 5 upward (the last at 59/12)
+            assert_eq!(c.count(), 10);
+            let bound = 2.0 * 0.453 * dt * dt / 4.0;
+            let p = c.period_s().unwrap();
+            assert!((p - 1.0).abs() <= bound, "dt = {dt}: period {p}, bound {bound}");
+        }
+    }
+
+    /// A level exactly at zero is not a side; touching zero is no crossing; one crossing gives no period.
+    #[test]
+    fn zero_levels_and_too_few_crossings() {
+        let mut c = Crossings::default();
+        for (t, d) in [(0.0, 1.0), (1.0, 0.0), (2.0, 1.0)] {
+            c.update(t, d, 1e-9);
+        }
+        assert_eq!((c.count(), c.period_s()), (0, None));
+        for (t, d) in [(3.0, 0.0), (4.0, -1.0)] {
+            c.update(t, d, 1e-9);
+        }
+        // from (2, 1) to (4, -1): one crossing at 3 s
+        assert_eq!((c.count(), c.period_s()), (1, None));
+        assert_eq!(c.first, Some((3.0, false)));
+        let still = crossings_of(|_| -2.0, 0.1, 10.0);
+        assert_eq!((still.count(), still.period_s()), (0, None));
+    }
+
+    /// Rounding noise about zero (here +-3e-12 m, alternating every level) stays inside the band and is no
+    /// oscillation; noise on a real crossing leaves its time at the last sign change.
+    #[test]
+    fn noise_inside_the_band_is_no_crossing() {
+        let noise = crossings_of(|t| if ((t * 10.0).round() as i64) % 2 == 0 { 3e-12 } else { -3e-12 }, 0.1, 10.0);
+        assert_eq!((noise.count(), noise.period_s()), (0, None));
+        let mut c = Crossings::default();
+        for (t, d) in [(0.0, 1.0), (1.0, 1e-12), (2.0, -1e-12), (3.0, 1e-12), (4.0, -1e-12), (5.0, -1.0)] {
+            c.update(t, d, 1e-9);
+        }
+        assert_eq!(c.count(), 1);
+        assert_eq!(c.first, Some((3.5, false)));
+    }
+
+    /// The rise and fall count from the stretch's first level, whatever the displacement was before it.
+    #[test]
+    fn rise_and_fall_are_the_changes_from_the_first_level() {
+        let mut set = PeakSet::sized(1, 0, 0);
+        // an iced mid-span 14.8 m below the chord jumps by 18.9 m, then falls back past its start
+        for (t, z) in [(1.0, -14.8), (2.0, -5.0), (3.0, 4.1), (4.0, -10.0), (5.0, -15.5)] {
+            let c = Current { t, tau: t / 100.0, disp: vec![[0.0, 0.0, z]], ..Default::default() };
+            set.update(&c);
+        }
+        let (r, f) = (set.rises[0][2], set.falls[0][2]);
+        assert!((r.value_m - 18.9).abs() < 1e-12 && r.time_s == 3.0, "{r:?}");
+        assert!((f.value_m + 0.7).abs() < 1e-12 && f.time_s == 5.0, "{f:?}");
+        assert_eq!((set.rises[0][0], set.falls[0][1]), (Peak::default(), Peak::default()));
+        assert_eq!(set.probes[0][2].value_m, -15.5);
     }
 }

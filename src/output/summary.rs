@@ -64,6 +64,15 @@ pub struct ProbeSummary {
     pub final_displacement_m: [f64; 3],
     /// largest-magnitude displacement per component from `peaks_from_s` on, every time level [m]
     pub peak_displacement_m: [Peak; 3],
+    /// largest increase of the displacement per component from its value at `peaks_from_s`, `>= 0`,
+    /// every time level (the jump of an ice-shedding span is component 3) [m]
+    pub peak_rise_m: [Peak; 3],
+    /// largest decrease likewise, `<= 0` [m]
+    pub peak_fall_m: [Peak; 3],
+    /// mean period of each component's oscillation about the chord point from `peaks_from_s` on, from
+    /// its sign changes interpolated between time levels (`crate::output::peaks`); `null` without two
+    /// crossings in the same direction [s]
+    pub period_about_chord_s: [Option<f64>; 3],
 }
 
 /// The static solve that gave the initial state (`[initial] shape = "equilibrium"`).

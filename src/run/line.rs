@@ -52,10 +52,18 @@ pub struct ConductorSummary {
     pub peak_max_tension_time_s: f64,
     /// largest segment tension at the end [N]
     pub final_max_tension_n: f64,
-    /// mid-span displacement from the initial position at the end [m]
+    /// mid-span displacement from the chord midpoint at the end [m]
     pub final_midspan_displacement_m: [f64; 3],
     /// largest-magnitude mid-span displacement per component over the run [m]
     pub peak_midspan_displacement_m: [Peak; 3],
+    /// largest increase of the mid-span displacement per component from its value at the start of the
+    /// peaks' window, `>= 0` (the jump of a conductor shedding its ice is component 3) [m]
+    pub peak_midspan_rise_m: [Peak; 3],
+    /// largest decrease likewise, `<= 0` [m]
+    pub peak_midspan_fall_m: [Peak; 3],
+    /// mean period of each mid-span component's oscillation about the chord point, from its sign changes
+    /// (`crate::output::peaks`); `null` without two crossings in the same direction [s]
+    pub midspan_period_about_chord_s: [Option<f64>; 3],
     /// whether its peak tension comes from the wind's onset ([`crate::output::start_up`]): present when
     /// the wind is raised during the run or acts from `t = 0` on a line not started from its equilibrium
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -616,6 +624,9 @@ pub fn run_line_observed<'o>(
                     final_max_tension_n: s.max_tension_n(),
                     final_midspan_displacement_m: outputs[c].mid.displacement(s.wire()),
                     peak_midspan_displacement_m: run.probes[0],
+                    peak_midspan_rise_m: run.rises[0],
+                    peak_midspan_fall_m: run.falls[0],
+                    midspan_period_about_chord_s: run.crossings[0].map(|c| c.period_s()),
                     start_up: super::start_up::check(
                         &plan.plans[c],
                         s,

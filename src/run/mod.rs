@@ -243,12 +243,15 @@ pub fn run_observed<'o>(
             .collect(),
         probes: all_probes
             .iter()
-            .zip(&run_peaks.probes)
-            .map(|(p, peak)| ProbeSummary {
+            .zip(run_peaks.probes.iter().zip(run_peaks.rises.iter().zip(&run_peaks.falls)).zip(&run_peaks.crossings))
+            .map(|(p, ((peak, (rise, fall)), crossings))| ProbeSummary {
                 name: p.name.clone(),
                 at_fraction: p.at_fraction,
                 final_displacement_m: p.displacement(solver.wire()),
                 peak_displacement_m: *peak,
+                peak_rise_m: *rise,
+                peak_fall_m: *fall,
+                period_about_chord_s: crossings.map(|c| c.period_s()),
             })
             .collect(),
         spans: plan
