@@ -11,11 +11,17 @@
 //! - `<case>_table.csv` and the printed table: per support, the longitudinal load at the start, its peak
 //!   (largest magnitude, from `output.peaks_from_s` on, tracked every time step: `summary.json`) and
 //!   time, the residual static load, the ratio of peak to residual and the string's largest swing along
-//!   the line (every step too); per span the jump of its mid-span point (highest rise above its starting
-//!   height, from the samples of `timeseries.csv`). The ratio is left empty
+//!   the line (every step too); per span the jump of its mid-span point (highest rise above its height at
+//!   `peaks_from_s`, tracked every step: the probe's `peak_rise_m[2]` in `summary.json`). The ratio is left empty
 //!   (`-` in the printed table) where the support carries no residual longitudinal load: a residual below
 //!   [`NO_RESIDUAL`] of the peak is zero to the static solver's tolerance (a support that symmetry or a
 //!   break unloads), and the ratio would be rounding over rounding (it printed `4.7e15`, `inf`, `NaN`).
+//!
+//! With `--converge` ([`converge_case`]) the case is also run on two refined grids (segments per span
+//! times 2 and 4, the step following at the case's Courant number; no files written) and the table gains,
+//! for every peak load and jump, the Richardson extrapolate and the fine-level GCI (Celik et al. 2008,
+//! `F_s = 1.25`; docs/convergence.md), or the verdict where there is none (oscillatory, divergent, a peak
+//! moving between events); the whole study is written to `<case>/convergence.json`.
 //!
 //! The residual static load is the static equilibrium after the event, solved by Newton from the run's
 //! final state ([`ohl::statics::residual`], the solve of `ohl run --static-after`): the design quantity
@@ -64,6 +70,47 @@ pub struct SupportRow {
     pub residual_vertical_n: f64,
     /// largest-magnitude swing along the line [deg] (suspension supports)
     pub peak_swing_deg: Option<f64>,
+    /// the peak's grid study (`--converge`)
+    pub peak_converged: Option<Converged>,
+}
+
+/// A value's grid study ([`converge_case`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Converged {
+    /// Richardson extrapolate (none unless converging)
+    pub extrapolate: Option<f64>,
+    /// fine-level GCI [-] (none unless converging)
+    pub gci_fine: Option<f64>,
+    /// the study's verdict
+    pub verdict: String,
+    /// the spread of the three finest levels' values relative to the finest [-]
+    pub spread_rel: Option<f64>,
+}
+
+impl Converged {
+    fn of(q: &crate::converge::Quantity) -> Self {
+        let e = q.estimate.as_ref();
+        Converged {
+            extrapolate: e.and_then(|e| e.extrapolate),
+            gci_fine: e.and_then(|e| e.gci_fine),
+            verdict: q.verdict.to_string(),
+            spread_rel: e.zip(q.values.last().copied().flatten()).map(|(e, fine)| e.spread / fine.abs()),
+        }
+    }
+
+    /// `58.101 (0.05 %)` in the unit `scale` (1e3: kN), or the verdict with the levels' spread.
+    fn shown(c: &Option<Converged>, scale: f64, digits: usize) -> String {
+        match c {
+            None => "-".into(),
+            Some(Converged { extrapolate: Some(x), gci_fine: Some(g), .. }) => {
+                format!("{:.digits$} ({:.2} %)", x / scale, g * 100.0)
+            }
+            Some(c) => match c.spread_rel {
+                Some(s) if s.is_finite() => format!("{} (levels within {:.2} %)", c.verdict, s * 100.0),
+                _ => c.verdict.clone(),
+            },
+        }
+    }
 }
 
 /// What a case produced.
@@ -83,6 +130,8 @@ pub struct CaseOutcome {
     pub supports: Vec<SupportRow>,
     /// per span: jump of the mid-span point (highest rise above its start) [m] and when [s]
     pub jumps: Vec<(f64, f64)>,
+    /// per span: the jump's grid study (`--converge`)
+    pub jumps_converged: Vec<Option<Converged>>,
     /// where the files are
     pub dir: PathBuf,
     /// how the residual loads were obtained
@@ -124,6 +173,9 @@ pub enum CaseError {
     /// a file could not be read or written
     #[error("{0}")]
     Io(String),
+    /// the grid study (`--converge`) could not be made or run
+    #[error("{0}")]
+    Converge(String),
 }
 
 /// The columns of a CSV file by name.
@@ -144,7 +196,8 @@ pub(crate) fn read_columns(path: &Path) -> Result<HashMap<String, Vec<f64>>, Cas
 }
 
 /// Run the case file `path` into `<out>/<case>/` and draw its figures and table.
-pub fn run_case(path: &Path, out: &Path) -> Result<CaseOutcome, CaseError> {
+/// Run the case `path` into `out/<case>/`; with `converge`, also its grid study ([`converge_case`]).
+pub fn run_case(path: &Path, out: &Path, converge: bool) -> Result<CaseOutcome, CaseError> {
     let name = path.file_stem().and_then(|s| s.to_str()).unwrap_or("case").to_string();
     let file = path.display().to_string();
     let sc = scenario::load(path)?;
@@ -180,14 +233,29 @@ pub fn run_case(path: &Path, out: &Path) -> Result<CaseOutcome, CaseError> {
             residual_n: residual.as_ref().map_or(f2.last().copied().unwrap_or(f64::NAN), |r| r.supports[k][1]),
             residual_vertical_n: residual.as_ref().map_or(f3.last().copied().unwrap_or(f64::NAN), |r| r.supports[k][2]),
             peak_swing_deg: peaks.and_then(|p| p.swing.as_ref()).map(|[along, _]| along.value_deg),
+            peak_converged: None,
         });
     }
-    let mut jumps = Vec::new();
-    for k in 0..n_span {
-        let z = col(&format!("span{k}_mid_dx3_m"));
-        let z0 = z.first().copied().unwrap_or(0.0);
-        let i = (0..z.len()).max_by(|&a, &b| z[a].total_cmp(&z[b])).unwrap_or(0);
-        jumps.push((z.get(i).map_or(f64::NAN, |v| v - z0), t.get(i).copied().unwrap_or(f64::NAN)));
+    // The jump of each span's mid-span: its probe's rise above its height at `peaks_from_s`, every step.
+    let jump_probe = |k: usize| o.summary.probes.iter().position(|p| p.name == format!("span{k}_mid"));
+    let jumps: Vec<(f64, f64)> = (0..n_span)
+        .map(|k| {
+            jump_probe(k).map_or((f64::NAN, f64::NAN), |i| {
+                let r = o.summary.probes[i].peak_rise_m[2];
+                (r.value_m, r.time_s)
+            })
+        })
+        .collect();
+    let mut jumps_converged = vec![None; n_span];
+    if converge {
+        let qs = converge_case(path, &dir)?;
+        let find = |p: &str| qs.iter().find(|q| q.path == p).map(Converged::of);
+        for s in &mut supports {
+            s.peak_converged = find(&format!("supports[{}].peaks.components[1].value_n", s.support));
+        }
+        for (k, c) in jumps_converged.iter_mut().enumerate() {
+            *c = jump_probe(k).and_then(|i| find(&format!("probes[{i}].peak_rise_m[2].value_m")));
+        }
     }
     // A thermal case (de-icing) runs for many minutes before the event: its load charts start where its
     // peaks do (`output.peaks_from_s`), and the conductor temperature gets a chart over the whole run.
@@ -202,7 +270,7 @@ pub fn run_case(path: &Path, out: &Path) -> Result<CaseOutcome, CaseError> {
         c.axial_stiffness_n.map_or(String::new(), |ea| format!(", EA = {:.0} kN", ea / 1e3)),
     );
     draw(&name, &heading, &dir, &t, &ts, n_sup, n_span, from, ground.as_ref())?;
-    write_table(&dir.join(format!("{name}_table.csv")), &supports, &jumps)?;
+    write_table(&dir.join(format!("{name}_table.csv")), &supports, &jumps, &jumps_converged)?;
     let s = &o.summary;
     Ok(CaseOutcome {
         residual_ground_n: residual.as_ref().map_or(0.0, |r| r.ground_n[2]),
@@ -217,8 +285,46 @@ pub fn run_case(path: &Path, out: &Path) -> Result<CaseOutcome, CaseError> {
         node_steps_per_second: s.node_steps_per_second,
         supports,
         jumps,
+        jumps_converged,
         dir,
     })
+}
+
+/// The grid study of a case: the case as written and on segments per span times 2 and 4 (the step at its
+/// Courant number), no files written; every summary value paired across the levels and estimated
+/// ([`crate::converge::analyse`], rtol 1 %); `dir/convergence.json` written.
+pub fn converge_case(path: &Path, dir: &Path) -> Result<Vec<crate::converge::Quantity>, CaseError> {
+    use crate::converge::{self, Options, Refine, report};
+    let o = Options {
+        refine: Refine::Grid,
+        levels: 3,
+        ratio: 2,
+        coarsen: false,
+        scaled_smoothing: false,
+        rtol: 0.01,
+        budget_node_steps: ohl::scenario::work::BUDGET_NODE_STEPS,
+    };
+    let file = path.display().to_string();
+    let study = |e: converge::StudyError| match e {
+        converge::StudyError::Input(e) => CaseError::Input(e),
+        e => CaseError::Converge(e.to_string()),
+    };
+    let sc = scenario::load(path)?;
+    let planned = converge::plan_scenario(&sc, &file, None, &o).map_err(study)?;
+    let (runs, finest) = converge::run(path, planned, |_, _| {}).map_err(study)?;
+    let quantities = converge::analyse(&runs, o.rtol);
+    let s = report::Study {
+        scenario: file,
+        name: finest.name,
+        options: &o,
+        safety_factor: ohl::verify::gci::SAFETY_FACTOR_THREE_GRIDS,
+        levels: &runs,
+        cost_relative_to_one_run: report::cost(&runs),
+        quantities: &quantities,
+    };
+    report::write_json(dir, &s)
+        .map_err(|e| CaseError::Io(format!("{}: {e}", dir.join("convergence.json").display())))?;
+    Ok(quantities)
 }
 
 #[allow(clippy::too_many_arguments)]
@@ -346,7 +452,12 @@ fn draw(
     Ok(())
 }
 
-fn write_table(path: &Path, supports: &[SupportRow], jumps: &[(f64, f64)]) -> Result<(), CaseError> {
+fn write_table(
+    path: &Path,
+    supports: &[SupportRow],
+    jumps: &[(f64, f64)],
+    jumps_converged: &[Option<Converged>],
+) -> Result<(), CaseError> {
     let io = |e: &dyn std::fmt::Display| CaseError::Io(format!("{}: {e}", path.display()));
     let mut w = csv::Writer::from_path(path).map_err(|e| io(&e))?;
     w.write_record([
@@ -360,12 +471,24 @@ fn write_table(path: &Path, supports: &[SupportRow], jumps: &[(f64, f64)]) -> Re
         "peak_swing_deg",
         "jump_m",
         "jump_time_s",
+        "extrapolate",
+        "gci_fine",
+        "verdict",
     ])
     .map_err(|e| io(&e))?;
+    // the grid study's columns (`--converge`): the extrapolate of the row's peak (N) or jump (m)
+    let study = |c: &Option<Converged>| match c {
+        None => [String::new(), String::new(), String::new()],
+        Some(c) => [
+            c.extrapolate.map_or(String::new(), |x| format!("{x:.4}")),
+            c.gci_fine.map_or(String::new(), |g| format!("{g:.3e}")),
+            c.verdict.clone(),
+        ],
+    };
     for s in supports {
         let ratio = peak_over_residual(s.peak_n, s.residual_n).map_or(String::new(), |r| format!("{r:.4}"));
         let swing = s.peak_swing_deg.map_or(String::new(), |v| format!("{v:.3}"));
-        w.write_record([
+        let mut rec = vec![
             format!("support {}", s.support),
             format!("{:.3}", s.initial_n),
             format!("{:.3}", s.peak_n),
@@ -376,13 +499,15 @@ fn write_table(path: &Path, supports: &[SupportRow], jumps: &[(f64, f64)]) -> Re
             swing,
             String::new(),
             String::new(),
-        ])
-        .map_err(|e| io(&e))?;
+        ];
+        rec.extend(study(&s.peak_converged));
+        w.write_record(rec).map_err(|e| io(&e))?;
     }
     for (k, (j, tj)) in jumps.iter().enumerate() {
         let mut rec = vec![format!("span {k}")];
         rec.extend(std::iter::repeat_n(String::new(), 7));
         rec.extend([format!("{j:.4}"), format!("{tj:.4}")]);
+        rec.extend(study(jumps_converged.get(k).unwrap_or(&None)));
         w.write_record(rec).map_err(|e| io(&e))?;
     }
     w.flush().map_err(|e| io(&e))
@@ -406,12 +531,17 @@ pub fn format_table(c: &CaseOutcome) -> String {
             String::new()
         }
     ));
-    s.push_str("| support | f2 at t=0 [kN] | peak f2 [kN] | at [s] | residual f2 [kN] | peak/residual | residual f3 [kN] | peak swing [deg] |\n");
-    s.push_str("|---|---|---|---|---|---|---|---|\n");
+    let study = c.supports.iter().any(|r| r.peak_converged.is_some());
+    let (head, rule) = if study { (" converged peak f2 [kN] (GCI) |", "---|") } else { ("", "") };
+    s.push_str(&format!(
+        "| support | f2 at t=0 [kN] | peak f2 [kN] | at [s] |{head} residual f2 [kN] | peak/residual | residual f3 [kN] | peak swing [deg] |\n"
+    ));
+    s.push_str(&format!("|---|---|---|---|{rule}---|---|---|---|\n"));
     for r in &c.supports {
         let swing = r.peak_swing_deg.map_or("-".into(), |v| format!("{v:.1}"));
+        let conv = if study { format!(" {} |", Converged::shown(&r.peak_converged, 1e3, 3)) } else { String::new() };
         s.push_str(&format!(
-            "| {} | {:.2} | {:.2} | {:.2} | {:.2} | {} | {:.2} | {} |\n",
+            "| {} | {:.2} | {:.2} | {:.2} |{conv} {:.2} | {} | {:.2} | {} |\n",
             r.support,
             r.initial_n / 1e3,
             r.peak_n / 1e3,
@@ -422,9 +552,20 @@ pub fn format_table(c: &CaseOutcome) -> String {
             swing
         ));
     }
-    s.push_str("| span | mid-span jump [m] | at [s] |\n|---|---|---|\n");
+    s.push_str(&format!(
+        "| span | mid-span jump [m] | at [s] |{}\n|---|---|---|{rule}\n",
+        if study { " converged jump [m] (GCI) |" } else { "" }
+    ));
     for (k, (j, t)) in c.jumps.iter().enumerate() {
-        s.push_str(&format!("| {k} | {j:.3} | {t:.2} |\n"));
+        let conv = if study {
+            format!(" {} |", Converged::shown(c.jumps_converged.get(k).unwrap_or(&None), 1.0, 4))
+        } else {
+            String::new()
+        };
+        s.push_str(&format!("| {k} | {j:.3} | {t:.2} |{conv}\n"));
+    }
+    if study {
+        s.push_str("   converged: the Richardson extrapolate of the case on 1, 2 and 4 times its segments per span, with the finest grid's GCI (F_s = 1.25), or why there is none (docs/convergence.md); convergence.json in the case's folder\n");
     }
     s
 }

@@ -17,7 +17,7 @@ use ohl_app::cases::{CaseOutcome, run_case};
 fn case(name: &str) -> CaseOutcome {
     let repo = Path::new(env!("CARGO_MANIFEST_DIR")).parent().unwrap().to_path_buf();
     let out: PathBuf = std::env::temp_dir().join(format!("ohl-cases-test-{}", std::process::id()));
-    let c = run_case(&repo.join("cases").join(format!("{name}.toml")), &out).unwrap();
+    let c = run_case(&repo.join("cases").join(format!("{name}.toml")), &out, false).unwrap();
     print!("{}", ohl_app::cases::format_table(&c));
     c
 }
@@ -91,6 +91,63 @@ fn shedding_cases_are_symmetric_and_end_in_the_same_state() {
     }
     assert!(c.jumps[2].0 < b.jumps[2].0, "progressive jump {} vs instant {}", c.jumps[2].0, b.jumps[2].0);
     assert!(c.supports[0].peak_n.abs() < b.supports[0].peak_n.abs());
+}
+
+/// The table's jump is the rise tracked at every time level, so no sample of `timeseries.csv` (each sample
+/// is a time level) rises higher above the height at the shedding (1 s); the samples reach it to within
+/// the motion between two samples (0.02 s apart: at most the mid-span's speed, below 20 m/s, times 0.01 s
+/// plus the drift of the iced equilibrium before 1 s, below 1e-6 m).
+#[test]
+fn a_shedding_jump_is_tracked_every_level_not_at_samples() {
+    let b = case("b_ice_shedding");
+    let ts = std::fs::read_to_string(b.dir.join("timeseries.csv")).unwrap();
+    let mut lines = ts.lines();
+    let head: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let (it, iz) =
+        (head.iter().position(|h| *h == "t_s").unwrap(), head.iter().position(|h| *h == "span2_mid_dx3_m").unwrap());
+    let rows: Vec<(f64, f64)> = lines
+        .map(|l| l.split(',').collect::<Vec<_>>())
+        .map(|c| (c[it].parse().unwrap(), c[iz].parse().unwrap()))
+        .collect();
+    let z0 = rows.iter().find(|r| r.0 >= 1.0 - 1e-9).unwrap().1;
+    let sampled = rows.iter().filter(|r| r.0 >= 1.0).map(|r| r.1 - z0).fold(f64::NEG_INFINITY, f64::max);
+    let (jump, _) = b.jumps[2];
+    assert!(jump >= sampled - 1e-6, "level-tracked jump {jump} below the samples' {sampled}");
+    assert!(jump - sampled <= 20.0 * 0.01, "level-tracked jump {jump} vs the samples' {sampled}");
+}
+
+/// `ohl cases --converge` on case (b): the table's converged columns are the grid study's (its
+/// `convergence.json` in the case's folder), the dead-end's peak converges within 1e-3 (docs/convergence.md
+/// gives 93.76 kN, GCI 0.005 % over 100, 200, 400 segments per span), and its extrapolate lies between the
+/// written grid's peak and the finest's (a monotone converging sequence).
+#[test]
+fn cases_converge_gives_the_table_its_grid_study() {
+    let repo = Path::new(env!("CARGO_MANIFEST_DIR")).parent().unwrap().to_path_buf();
+    let out: PathBuf = std::env::temp_dir().join(format!("ohl-cases-converge-{}", std::process::id()));
+    let c = run_case(&repo.join("cases/b_ice_shedding.toml"), &out, true).unwrap();
+    let table = ohl_app::cases::format_table(&c);
+    assert!(table.contains("converged peak f2 [kN] (GCI)"), "{table}");
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(c.dir.join("convergence.json")).unwrap()).unwrap();
+    let q = json["quantities"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|q| q["path"] == "supports[0].peaks.components[1].value_n")
+        .unwrap();
+    let conv = c.supports[0].peak_converged.as_ref().unwrap();
+    assert_eq!(conv.extrapolate, q["estimate"]["extrapolate"].as_f64());
+    assert_eq!(conv.verdict, "converged within rtol");
+    let gci = conv.gci_fine.unwrap();
+    assert!(gci < 1e-3, "GCI {gci}");
+    let (written, finest, ext) =
+        (q["values"][0].as_f64().unwrap(), q["values"][2].as_f64().unwrap(), conv.extrapolate.unwrap());
+    assert_eq!(written, c.supports[0].peak_n, "the study's first level is the case as written");
+    assert!(
+        (ext - finest) * (written - finest) <= 0.0,
+        "extrapolate {ext} not beyond the finest {finest} from {written}"
+    );
+    let _ = std::fs::remove_dir_all(&out);
 }
 
 #[test]

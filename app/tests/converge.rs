@@ -288,6 +288,7 @@ fn converge_on_the_ice_shedding_case_agrees_with_the_section_transients_study() 
 /// - the lumped chain's (the semi-discrete scheme's) crossing period at `n` segments, from its exact modal
 ///   solution `u_mid(t) = sum_n b_n sin(n pi / 2) cos(w_n t)`, `w_n = (2 c / ds) sin(n pi / (2 N))`, `b_n`
 ///   the discrete sine transform of the start, each upward crossing found by bisection to 1e-13 s.
+///
 /// The amplitude's nonlinear stiffening, `(A / L)^2 EA / T` ~ 1e-8 relative (2e-8 s), and the start's
 /// nodes being equally spaced in arc length (a 1e-13 m difference) are far below every tolerance here.
 fn taut_string_problem(segments: usize, courant: f64) -> (String, f64, f64) {

@@ -20,6 +20,11 @@ pub struct CasesArgs {
     /// directory for the results (one folder per case)
     #[arg(long, default_value = "figures/cases")]
     out: PathBuf,
+    /// also run each section case on 2 and 4 times its segments per span and give every peak load and
+    /// jump its Richardson extrapolate and GCI in the table (about 20 times a run; line cases: use
+    /// `ohl run CASE --converge`)
+    #[arg(long)]
+    converge: bool,
 }
 
 /// Run the command.
@@ -55,6 +60,13 @@ pub fn main(args: CasesArgs) -> ExitCode {
     let mut code = 0u8;
     for p in &paths {
         if ohl_app::line_cases::is_line_case(p) {
+            if args.converge {
+                err!(
+                    "note: {}: --converge is for section cases; for a line case run `ohl run {} --converge`",
+                    p.display(),
+                    p.display()
+                );
+            }
             match ohl_app::line_cases::run_line_case(p, &args.out) {
                 Ok(c) => out!("{}", ohl_app::line_cases::format_line_table(&c)),
                 Err(e) => {
@@ -64,7 +76,7 @@ pub fn main(args: CasesArgs) -> ExitCode {
             }
             continue;
         }
-        match cases::run_case(p, &args.out) {
+        match cases::run_case(p, &args.out, args.converge) {
             Ok(c) => out!("{}", cases::format_table(&c)),
             Err(e) => {
                 err!("error: {e}");
