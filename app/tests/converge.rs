@@ -534,5 +534,48 @@ fn converge_on_a_line_pairs_every_value_of_its_summaries() {
         assert_eq!(q["values"][2].as_f64(), at(&finest, path).as_f64(), "{path}");
         assert_eq!(q["values"][0].as_f64(), at(&coarsest, path).as_f64(), "{path}");
     }
+    // The same study as a sweep's row (`ohl sweep --converge` of a line base): the finest level's results
+    // and the error bars of the largest conductor tension, the least clearance and the largest tower load
+    // (each where the finest level has it), equal to the study's bit for bit.
+    let sweep = dir.join("sweep");
+    let o = Command::new(env!("CARGO_BIN_EXE_ohl"))
+        .args(["sweep", file.to_str().unwrap(), "--vary", "duration.end_time_s=5.0", "--converge", "--quiet"])
+        .args(["--out", sweep.to_str().unwrap()])
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let mut r = csv::Reader::from_path(sweep.join("sweep.csv")).unwrap();
+    let head: Vec<String> = r.headers().unwrap().iter().map(String::from).collect();
+    let row: Vec<String> = r.records().next().unwrap().unwrap().iter().map(String::from).collect();
+    let cell = |c: &str| row[head.iter().position(|h| h == c).unwrap_or_else(|| panic!("{c}"))].clone();
+    assert_eq!(cell("status"), "completed");
+    let arg = |xs: &serde_json::Value, key: &str, sign: f64| {
+        let v: Vec<f64> = xs.as_array().unwrap().iter().map(|x| sign * x[key].as_f64().unwrap()).collect();
+        (0..v.len()).fold(0, |b, k| if v[k] > v[b] { k } else { b })
+    };
+    for (column, path) in [
+        (
+            "peak_max_tension",
+            format!("conductors[{}].peak_max_tension_n", arg(&finest["conductors"], "peak_max_tension_n", 1.0)),
+        ),
+        ("least_clearance", format!("clearances[{}].least_m", arg(&finest["clearances"], "least_m", -1.0))),
+        (
+            "peak_tower_force",
+            format!("towers[{}].peak_force_magnitude_n", arg(&finest["towers"], "peak_force_magnitude_n", 1.0)),
+        ),
+    ] {
+        let q = quantity(&json, &path);
+        assert_eq!(cell(&format!("{column}_verdict")), q["verdict"].as_str().unwrap(), "{path}");
+        let unit = if column == "least_clearance" { "m" } else { "n" };
+        let shown = cell(&format!("{column}_extrapolate_{unit}"));
+        match q["estimate"]["extrapolate"].as_f64() {
+            Some(x) if q["verdict"] != "peak moves between events" => {
+                assert_eq!(shown.parse::<f64>().unwrap(), x, "{path}")
+            }
+            _ => assert_eq!(shown, "", "{path}"),
+        }
+    }
+    let within = qs.iter().filter(|q| q["verdict"] == "converged within rtol").count();
+    assert_eq!(cell("quantities_converged_within_rtol"), within.to_string());
     let _ = std::fs::remove_dir_all(&dir);
 }

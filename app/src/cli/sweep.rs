@@ -115,9 +115,6 @@ fn main_run(a: RunArgs) -> ExitCode {
     };
     let mut sweep = sweep;
     if a.converge.converge {
-        if matches!(sweep.kind, ohl_app::sweep::Kind::Line { .. }) {
-            return fail(format!("{}: --converge is not available for a [line] base yet", base.display()), 2);
-        }
         if a.allow_large {
             return fail("--converge with --allow-large: give --budget", 2);
         }

@@ -87,11 +87,16 @@ fn grid_fields(doc: &mut Table) -> Vec<(String, &mut Value)> {
 /// The levels of the line file `path` (coarse to fine), planned, with the finest level's work checked
 /// against the budget. The finest level writes to `out`, the others to `out/levels/<k>_<label>`.
 pub fn plan_line(path: &Path, out: Option<&Path>, o: &Options) -> Result<Vec<PlannedLine>, StudyError> {
-    let file = path.display().to_string();
     let text = scenario::read_text(path)?;
+    plan_line_text(&text, &path.display().to_string(), out, o)
+}
+
+/// [`plan_line`] of the line scenario `text`, named `file` in messages (a sweep's case).
+pub fn plan_line_text(text: &str, file: &str, out: Option<&Path>, o: &Options) -> Result<Vec<PlannedLine>, StudyError> {
+    let file = file.to_string();
     // the file as written must be a valid line first (its own messages, line numbers of its own text)
-    scenario::line::parse(&text, &file).and_then(|s| scenario::line::plan(&s, &file))?;
-    let doc: Table = scenario::from_toml(&text, &file)?;
+    scenario::line::parse(text, &file).and_then(|s| scenario::line::plan(&s, &file))?;
+    let doc: Table = scenario::from_toml(text, &file)?;
     let (levels, ratio) = (o.levels, o.ratio);
     if levels < 3 || ratio < 2 {
         return Err(LevelError::Shape { levels, ratio }.into());

@@ -65,6 +65,9 @@ fn run_into(sweep: &Sweep, id: usize, keep: Option<&Path>, row: &mut Row) {
     }
     let file = format!("case {id}");
     if let Kind::Line { conductors } = &sweep.kind {
+        if let Some(o) = &sweep.converge {
+            return converge_line_into(&text, &file, o, conductors, dir.as_deref(), row);
+        }
         return run_line_into(sweep, &text, &file, conductors, dir.as_deref(), row);
     }
     if let Some(o) = &sweep.converge {
@@ -166,6 +169,76 @@ fn converge_into(text: &str, file: &str, o: &crate::converge::Options, dir: Opti
     }
     let mut cells = result_cells(&finest);
     cells.extend(super::table::converge_cells(&quantities, &finest));
+    row.results = Some(cells);
+    row.loop_timing = Some((finest.wall_time_s, finest.node_steps_per_second));
+}
+
+/// [`converge_into`] for a line ([`crate::converge::line`]): the row holds the finest level's line results
+/// and [`super::table::LINE_CONVERGE_COLUMNS`].
+fn converge_line_into(
+    text: &str,
+    file: &str,
+    o: &crate::converge::Options,
+    conductors: &[String],
+    dir: Option<&Path>,
+    row: &mut Row,
+) {
+    use crate::converge::{StudyError, line as cl, report};
+    let planned = match cl::plan_line_text(text, file, dir, o) {
+        Ok(p) => p,
+        Err(StudyError::Input(e)) => {
+            row.reason = input_reason(e);
+            return;
+        }
+        Err(e @ StudyError::Budget { .. }) => {
+            (row.status, row.reason) = (Status::Refused, e.to_string());
+            return;
+        }
+        Err(e) => {
+            row.reason = e.to_string();
+            return;
+        }
+    };
+    let warnings = planned[0]
+        .plan
+        .plans
+        .iter()
+        .zip(planned[0].plan.line.names())
+        .flat_map(|(p, name)| p.warnings.iter().map(move |w| format!("{name}: {w}")));
+    row.warnings = warnings.collect::<Vec<_>>().join("; ");
+    let (runs, finest) = match cl::run_line_levels(Path::new(file), planned, |_, _| {}) {
+        Ok(r) => r,
+        Err(e @ StudyError::Unstable { .. }) => {
+            (row.status, row.reason) = (Status::Unstable, e.to_string());
+            return;
+        }
+        Err(e) => {
+            (row.status, row.reason) = (Status::Failed, e.to_string());
+            return;
+        }
+    };
+    let quantities = crate::converge::analyse(&runs, o.rtol);
+    if let Some(d) = dir {
+        let study = report::Study {
+            scenario: file.to_string(),
+            name: finest.name.clone(),
+            options: o,
+            safety_factor: ohl::verify::gci::SAFETY_FACTOR_THREE_GRIDS,
+            levels: &runs,
+            cost_relative_to_one_run: report::cost(&runs),
+            quantities: &quantities,
+        };
+        if let Err(e) = report::write_json(d, &study) {
+            (row.status, row.reason) = (Status::Failed, format!("{}: {e}", d.join("convergence.json").display()));
+            return;
+        }
+    }
+    row.status = Status::of_summary(&finest.status);
+    if row.status == Status::NotSettled {
+        row.reason = "reached duration.until_settled.max_time_s before every conductor settled".into();
+    }
+    let mut cells = line_result_cells(&finest, conductors);
+    cells.extend(super::table::line_converge_cells(&quantities, &finest));
     row.results = Some(cells);
     row.loop_timing = Some((finest.wall_time_s, finest.node_steps_per_second));
 }

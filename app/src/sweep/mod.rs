@@ -204,7 +204,13 @@ impl Sweep {
                 table::RESULT_COLUMNS.iter().chain(table::CONVERGE_COLUMNS.iter()).map(|c| c.to_string()).collect()
             }
             Kind::Single => table::RESULT_COLUMNS.map(String::from).to_vec(),
-            Kind::Line { conductors } => table::line_columns(conductors),
+            Kind::Line { conductors } => {
+                let mut c = table::line_columns(conductors);
+                if self.converge.is_some() {
+                    c.extend(table::LINE_CONVERGE_COLUMNS.map(String::from));
+                }
+                c
+            }
         }
     }
 

@@ -198,20 +198,86 @@ pub const CONVERGE_COLUMNS: [&str; 9] = [
     "quantities_without_limit",
 ];
 
+/// The extrapolate, GCI and verdict cells of the quantity `path` of a study (empty where it has none; no
+/// extrapolate and GCI for a peak moving between events).
+fn estimate_cells(q: &[crate::converge::Quantity], path: &str) -> [String; 3] {
+    match q.iter().find(|x| x.path == path) {
+        None => Default::default(),
+        Some(x) => {
+            let e = x.estimate.as_ref();
+            let shown = e.is_some_and(|e| e.extrapolate.is_some()) && x.verdict != crate::converge::PEAK_MOVES;
+            let cell = |v: Option<f64>| v.filter(|_| shown).map(number).unwrap_or_default();
+            [cell(e.and_then(|e| e.extrapolate)), cell(e.and_then(|e| e.gci_fine)), x.verdict.to_string()]
+        }
+    }
+}
+
+/// How many quantities are converged within rtol, converging but not within it, and without a
+/// converging limit (the last three of [`CONVERGE_COLUMNS`] and [`LINE_CONVERGE_COLUMNS`]).
+fn verdict_counts(q: &[crate::converge::Quantity]) -> [String; 3] {
+    let count = |f: &dyn Fn(&str) -> bool| q.iter().filter(|x| f(x.verdict)).count().to_string();
+    [
+        count(&|v| v == "converged within rtol"),
+        count(&|v| v == "not within rtol"),
+        count(&|v| matches!(v, "oscillatory" | "divergent" | "indeterminate") || v == crate::converge::PEAK_MOVES),
+    ]
+}
+
+/// The columns `--converge` adds to a line's ([`line_columns`]): the Richardson extrapolate, the fine-level
+/// GCI and the verdict of the largest peak tension of any conductor (the conductor that has it on the
+/// finest level), of the least clearance between any two groups (the pair that has it on the finest
+/// level) and of the largest tower load (the tower that has it on the finest level), then the counts of
+/// verdicts as [`CONVERGE_COLUMNS`]. The other result columns are the finest level's.
+pub const LINE_CONVERGE_COLUMNS: [&str; 12] = [
+    "peak_max_tension_extrapolate_n",
+    "peak_max_tension_gci",
+    "peak_max_tension_verdict",
+    "least_clearance_extrapolate_m",
+    "least_clearance_gci",
+    "least_clearance_verdict",
+    "peak_tower_force_extrapolate_n",
+    "peak_tower_force_gci",
+    "peak_tower_force_verdict",
+    "quantities_converged_within_rtol",
+    "quantities_not_within_rtol",
+    "quantities_without_limit",
+];
+
+/// The index of the first largest (`sign` 1) or least (`sign` -1) value, NaNs never chosen.
+fn extreme(values: impl Iterator<Item = f64>, sign: f64) -> Option<usize> {
+    values
+        .enumerate()
+        .fold(None, |best: Option<(usize, f64)>, (k, v)| match best {
+            Some((_, b)) if (sign * v).partial_cmp(&(sign * b)) != Some(std::cmp::Ordering::Greater) => best,
+            _ if v.is_nan() => best,
+            _ => Some((k, v)),
+        })
+        .map(|b| b.0)
+}
+
+/// The values of [`LINE_CONVERGE_COLUMNS`] from a line study's quantities and its finest level's summary.
+pub fn line_converge_cells(q: &[crate::converge::Quantity], finest: &LineSummary) -> Vec<String> {
+    let mut cells = Vec::with_capacity(LINE_CONVERGE_COLUMNS.len());
+    let at = |k: Option<usize>, path: &dyn Fn(usize) -> String| {
+        k.map_or_else(Default::default, |k| estimate_cells(q, &path(k)))
+    };
+    cells.extend(at(extreme(finest.conductors.iter().map(|c| c.peak_max_tension_n), 1.0), &|k| {
+        format!("conductors[{k}].peak_max_tension_n")
+    }));
+    cells.extend(at(extreme(finest.clearances.iter().map(|c| c.least_m), -1.0), &|k| {
+        format!("clearances[{k}].least_m")
+    }));
+    cells.extend(at(extreme(finest.towers.iter().map(|t| t.peak_force_magnitude_n), 1.0), &|k| {
+        format!("towers[{k}].peak_force_magnitude_n")
+    }));
+    cells.extend(verdict_counts(q));
+    debug_assert_eq!(cells.len(), LINE_CONVERGE_COLUMNS.len());
+    cells
+}
+
 /// The values of [`CONVERGE_COLUMNS`] from a study's quantities and its finest level's summary.
 pub fn converge_cells(q: &[crate::converge::Quantity], finest: &Summary) -> Vec<String> {
-    let find = |path: &str| q.iter().find(|x| x.path == path);
-    let estimate = |path: &str| -> [String; 3] {
-        match find(path) {
-            None => Default::default(),
-            Some(x) => {
-                let e = x.estimate.as_ref();
-                let shown = e.is_some_and(|e| e.extrapolate.is_some()) && x.verdict != crate::converge::PEAK_MOVES;
-                let cell = |v: Option<f64>| v.filter(|_| shown).map(number).unwrap_or_default();
-                [cell(e.and_then(|e| e.extrapolate)), cell(e.and_then(|e| e.gci_fine)), x.verdict.to_string()]
-            }
-        }
-    };
+    let estimate = |path: &str| estimate_cells(q, path);
     // the support with the largest peak force on the finest level, as `peak_support_force_support`
     let support = (finest.supports.iter().enumerate())
         .fold(None, |best: Option<(usize, f64)>, (k, sp)| match best {
@@ -219,15 +285,10 @@ pub fn converge_cells(q: &[crate::converge::Quantity], finest: &Summary) -> Vec<
             _ => Some((k, sp.peaks.magnitude.value_n)),
         })
         .map(|b| b.0);
-    let count = |f: &dyn Fn(&str) -> bool| q.iter().filter(|x| f(x.verdict)).count().to_string();
     let mut cells: Vec<String> = estimate("peak_max_tension_n").into();
     cells
         .extend(support.map_or_else(Default::default, |k| estimate(&format!("supports[{k}].peaks.magnitude.value_n"))));
-    cells.push(count(&|v| v == "converged within rtol"));
-    cells.push(count(&|v| v == "not within rtol"));
-    cells.push(count(&|v| {
-        matches!(v, "oscillatory" | "divergent" | "indeterminate") || v == crate::converge::PEAK_MOVES
-    }));
+    cells.extend(verdict_counts(q));
     debug_assert_eq!(cells.len(), CONVERGE_COLUMNS.len());
     cells
 }
