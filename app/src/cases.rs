@@ -313,16 +313,7 @@ pub fn converge_case(path: &Path, dir: &Path) -> Result<Vec<crate::converge::Qua
     let planned = converge::plan_scenario(&sc, &file, None, &o).map_err(study)?;
     let (runs, finest) = converge::run(path, planned, |_, _| {}).map_err(study)?;
     let quantities = converge::analyse(&runs, o.rtol);
-    let s = report::Study {
-        scenario: file,
-        name: finest.name,
-        options: &o,
-        safety_factor: ohl::verify::gci::SAFETY_FACTOR_THREE_GRIDS,
-        levels: &runs,
-        cost_relative_to_one_run: report::cost(&runs),
-        quantities: &quantities,
-    };
-    report::write_json(dir, &s)
+    report::write_json(dir, &report::Study::new(&file, &finest.name, &o, &runs, &quantities))
         .map_err(|e| CaseError::Io(format!("{}: {e}", dir.join("convergence.json").display())))?;
     Ok(quantities)
 }

@@ -121,27 +121,41 @@ fn converge_quietly(file: &Path, out: &Path) {
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
 }
 
-/// Run `--converge` on case (a) with its first 3 s (the study's window) and `segments_per_span = n`,
-/// with `numerics` replacing the case's `[numerics]` values; the study's quantity is the largest
-/// longitudinal load on the first suspension support.
-fn break_case(name: &str, n: usize, numerics: Option<&str>) -> serde_json::Value {
+/// Run `--converge --quiet` on the case file `cases/CASE.toml` as `edit` changes its text; the study's
+/// `convergence.json`.
+fn converge_case(name: &str, case: &str, edit: impl FnOnce(String) -> String) -> serde_json::Value {
     let dir = tmp(name);
-    let text = std::fs::read_to_string(repo().join("cases/a_broken_conductor.toml")).unwrap();
-    let mut text = text
-        .replace("segments_per_span = 100", &format!("segments_per_span = {n}"))
-        .replace("end_time_s = 30.0", "end_time_s = 3.0")
-        .replace("snapshot_times_s = [0.5, 1.0, 2.0, 5.0, 10.0]", "snapshot_times_s = []");
-    if let Some(block) = numerics {
-        let (a, b) = (text.find("[numerics]").unwrap(), text.find("[ground]").unwrap());
-        text.replace_range(a..b, block);
-    }
-    let file = dir.join("a.toml");
+    let text = edit(std::fs::read_to_string(repo().join(format!("cases/{case}.toml"))).unwrap());
+    let file = dir.join(format!("{case}.toml"));
     std::fs::write(&file, text).unwrap();
     let out = dir.join("out");
     converge_quietly(&file, &out);
     let json = serde_json::from_str(&std::fs::read_to_string(out.join("convergence.json")).unwrap()).unwrap();
     let _ = std::fs::remove_dir_all(&dir);
     json
+}
+
+/// The text with the table `[numerics]` (up to the table `next`) replaced by `block`.
+fn with_numerics(mut text: String, next: &str, block: &str) -> String {
+    let (a, b) = (text.find("[numerics]").unwrap(), text.find(next).unwrap());
+    text.replace_range(a..b, block);
+    text
+}
+
+/// Run `--converge` on case (a) with its first 3 s (the study's window) and `segments_per_span = n`,
+/// with `numerics` replacing the case's `[numerics]` values; the study's quantity is the largest
+/// longitudinal load on the first suspension support.
+fn break_case(name: &str, n: usize, numerics: Option<&str>) -> serde_json::Value {
+    converge_case(name, "a_broken_conductor", |text| {
+        let text = text
+            .replace("segments_per_span = 100", &format!("segments_per_span = {n}"))
+            .replace("end_time_s = 30.0", "end_time_s = 3.0")
+            .replace("snapshot_times_s = [0.5, 1.0, 2.0, 5.0, 10.0]", "snapshot_times_s = []");
+        match numerics {
+            Some(block) => with_numerics(text, "[ground]", block),
+            None => text,
+        }
+    })
 }
 
 /// Case (a) against study `section_transients` (figures/verification/REPORT.md, its table of runs): with
@@ -185,20 +199,12 @@ fn converge_on_the_break_case_agrees_with_the_section_transients_study() {
 /// Run `--converge` on case (b) to 7 s (the study's window) with `numerics` in place of the case's
 /// `[numerics]` values; segments 100, 200, 400 per span.
 fn shedding_case(name: &str, numerics: &str) -> serde_json::Value {
-    let dir = tmp(name);
-    let text = std::fs::read_to_string(repo().join("cases/b_ice_shedding.toml")).unwrap();
-    let mut text = text
-        .replace("end_time_s = 40.0", "end_time_s = 7.0")
-        .replace("snapshot_times_s = [1.0, 2.0, 3.0, 4.0, 6.0]", "snapshot_times_s = []");
-    let (a, b) = (text.find("[numerics]").unwrap(), text.find("[duration]").unwrap());
-    text.replace_range(a..b, numerics);
-    let file = dir.join("b.toml");
-    std::fs::write(&file, text).unwrap();
-    let out = dir.join("out");
-    converge_quietly(&file, &out);
-    let json = serde_json::from_str(&std::fs::read_to_string(out.join("convergence.json")).unwrap()).unwrap();
-    let _ = std::fs::remove_dir_all(&dir);
-    json
+    converge_case(name, "b_ice_shedding", |text| {
+        let text = text
+            .replace("end_time_s = 40.0", "end_time_s = 7.0")
+            .replace("snapshot_times_s = [1.0, 2.0, 3.0, 4.0, 6.0]", "snapshot_times_s = []");
+        with_numerics(text, "[duration]", numerics)
+    })
 }
 
 /// Case (b) against study `section_transients` (figures/verification/REPORT.md, its tables of runs and

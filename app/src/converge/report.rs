@@ -31,6 +31,28 @@ pub struct Study<'a> {
     pub quantities: &'a [Quantity],
 }
 
+impl<'a> Study<'a> {
+    /// The study of `scenario` (its file, named `name`) made with `options` on `levels`, giving
+    /// `quantities`; the factor of safety is that of three grids.
+    pub fn new(
+        scenario: &str,
+        name: &str,
+        options: &'a Options,
+        levels: &'a [LevelRun],
+        quantities: &'a [Quantity],
+    ) -> Self {
+        Study {
+            scenario: scenario.to_string(),
+            name: name.to_string(),
+            options,
+            safety_factor: ohl::verify::gci::SAFETY_FACTOR_THREE_GRIDS,
+            levels,
+            cost_relative_to_one_run: cost(levels),
+            quantities,
+        }
+    }
+}
+
 /// Wall time of all levels over that of the level as written (NaN without it).
 pub fn cost(levels: &[LevelRun]) -> f64 {
     let total: f64 = levels.iter().map(|l| l.wall_time_s).sum();

@@ -112,7 +112,7 @@ fn run_into(sweep: &Sweep, id: usize, keep: Option<&Path>, row: &mut Row) {
 /// `convergence.json` go to the case's folder. A study above the budget is `refused`, a level that is no
 /// valid scenario `invalid`, a level that went unstable `unstable` (no results).
 fn converge_into(text: &str, file: &str, o: &crate::converge::Options, dir: Option<&Path>, row: &mut Row) {
-    use crate::converge::{self, StudyError, report};
+    use crate::converge::{self, report};
     let sc = match scenario::parse(text, file) {
         Ok(s) => s,
         Err(e) => {
@@ -122,46 +122,16 @@ fn converge_into(text: &str, file: &str, o: &crate::converge::Options, dir: Opti
     };
     let planned = match converge::plan_scenario(&sc, file, dir, o) {
         Ok(p) => p,
-        Err(StudyError::Input(e)) => {
-            row.reason = input_reason(e);
-            return;
-        }
-        Err(e @ StudyError::Budget { .. }) => {
-            (row.status, row.reason) = (Status::Refused, e.to_string());
-            return;
-        }
-        Err(e) => {
-            row.reason = e.to_string();
-            return;
-        }
+        Err(e) => return study_failed(e, row),
     };
     row.warnings = planned[0].plan.warnings.iter().map(|w| w.to_string()).collect::<Vec<_>>().join("; ");
     let (runs, finest) = match converge::run(Path::new(file), planned, |_, _| {}) {
         Ok(r) => r,
-        Err(e @ StudyError::Unstable { .. }) => {
-            (row.status, row.reason) = (Status::Unstable, e.to_string());
-            return;
-        }
-        Err(e) => {
-            (row.status, row.reason) = (Status::Failed, e.to_string());
-            return;
-        }
+        Err(e) => return study_failed(e, row),
     };
     let quantities = converge::analyse(&runs, o.rtol);
-    if let Some(d) = dir {
-        let study = report::Study {
-            scenario: file.to_string(),
-            name: finest.name.clone(),
-            options: o,
-            safety_factor: ohl::verify::gci::SAFETY_FACTOR_THREE_GRIDS,
-            levels: &runs,
-            cost_relative_to_one_run: report::cost(&runs),
-            quantities: &quantities,
-        };
-        if let Err(e) = report::write_json(d, &study) {
-            (row.status, row.reason) = (Status::Failed, format!("{}: {e}", d.join("convergence.json").display()));
-            return;
-        }
+    if !study_written(dir, &report::Study::new(file, &finest.name, o, &runs, &quantities), row) {
+        return;
     }
     row.status = Status::of_summary(&finest.status);
     if row.status == Status::NotSettled {
@@ -171,6 +141,32 @@ fn converge_into(text: &str, file: &str, o: &crate::converge::Options, dir: Opti
     cells.extend(super::table::converge_cells(&quantities, &finest));
     row.results = Some(cells);
     row.loop_timing = Some((finest.wall_time_s, finest.node_steps_per_second));
+}
+
+/// A study that could not be planned or run: an invalid level is `invalid` (the default status), one
+/// above the budget `refused`, one that went unstable `unstable`, anything else `failed`.
+fn study_failed(e: crate::converge::StudyError, row: &mut Row) {
+    use crate::converge::StudyError;
+    match e {
+        StudyError::Input(e) => row.reason = input_reason(e),
+        e @ StudyError::Budget { .. } => (row.status, row.reason) = (Status::Refused, e.to_string()),
+        e @ StudyError::Level(_) => row.reason = e.to_string(),
+        e @ StudyError::Unstable { .. } => (row.status, row.reason) = (Status::Unstable, e.to_string()),
+        e => (row.status, row.reason) = (Status::Failed, e.to_string()),
+    }
+}
+
+/// Write the study's `convergence.json` into `dir` (`--keep-runs`); false, with the row `failed`, if it
+/// cannot be written.
+fn study_written(dir: Option<&Path>, study: &crate::converge::report::Study, row: &mut Row) -> bool {
+    let Some(d) = dir else { return true };
+    match crate::converge::report::write_json(d, study) {
+        Ok(()) => true,
+        Err(e) => {
+            (row.status, row.reason) = (Status::Failed, format!("{}: {e}", d.join("convergence.json").display()));
+            false
+        }
+    }
 }
 
 /// [`converge_into`] for a line ([`crate::converge::line`]): the row holds the finest level's line results
@@ -183,21 +179,10 @@ fn converge_line_into(
     dir: Option<&Path>,
     row: &mut Row,
 ) {
-    use crate::converge::{StudyError, line as cl, report};
+    use crate::converge::{line as cl, report};
     let planned = match cl::plan_line_text(text, file, dir, o) {
         Ok(p) => p,
-        Err(StudyError::Input(e)) => {
-            row.reason = input_reason(e);
-            return;
-        }
-        Err(e @ StudyError::Budget { .. }) => {
-            (row.status, row.reason) = (Status::Refused, e.to_string());
-            return;
-        }
-        Err(e) => {
-            row.reason = e.to_string();
-            return;
-        }
+        Err(e) => return study_failed(e, row),
     };
     let warnings = planned[0]
         .plan
@@ -208,30 +193,11 @@ fn converge_line_into(
     row.warnings = warnings.collect::<Vec<_>>().join("; ");
     let (runs, finest) = match cl::run_line_levels(Path::new(file), planned, |_, _| {}) {
         Ok(r) => r,
-        Err(e @ StudyError::Unstable { .. }) => {
-            (row.status, row.reason) = (Status::Unstable, e.to_string());
-            return;
-        }
-        Err(e) => {
-            (row.status, row.reason) = (Status::Failed, e.to_string());
-            return;
-        }
+        Err(e) => return study_failed(e, row),
     };
     let quantities = crate::converge::analyse(&runs, o.rtol);
-    if let Some(d) = dir {
-        let study = report::Study {
-            scenario: file.to_string(),
-            name: finest.name.clone(),
-            options: o,
-            safety_factor: ohl::verify::gci::SAFETY_FACTOR_THREE_GRIDS,
-            levels: &runs,
-            cost_relative_to_one_run: report::cost(&runs),
-            quantities: &quantities,
-        };
-        if let Err(e) = report::write_json(d, &study) {
-            (row.status, row.reason) = (Status::Failed, format!("{}: {e}", d.join("convergence.json").display()));
-            return;
-        }
+    if !study_written(dir, &report::Study::new(file, &finest.name, o, &runs, &quantities), row) {
+        return;
     }
     row.status = Status::of_summary(&finest.status);
     if row.status == Status::NotSettled {
