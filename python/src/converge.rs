@@ -55,15 +55,7 @@ pub fn converge_raw(
             (runs, finest.name)
         };
         let quantities = converge::analyse(&runs, rtol);
-        let study = report::Study {
-            scenario: path.display().to_string(),
-            name,
-            options: &o,
-            safety_factor: ohl::verify::gci::SAFETY_FACTOR_THREE_GRIDS,
-            levels: &runs,
-            cost_relative_to_one_run: report::cost(&runs),
-            quantities: &quantities,
-        };
+        let study = report::Study::new(&path.display().to_string(), &name, &o, &runs, &quantities);
         report::write_json(&out, &study).map_err(|e| StudyError::Run {
             file: path.display().to_string(),
             label: "all".into(),

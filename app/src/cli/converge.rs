@@ -184,15 +184,7 @@ fn report_study(
 ) -> ExitCode {
     let n = runs.len();
     let quantities = converge::analyse(runs, o.rtol);
-    let study = report::Study {
-        scenario: path.display().to_string(),
-        name: name.to_string(),
-        options: o,
-        safety_factor: ohl::verify::gci::SAFETY_FACTOR_THREE_GRIDS,
-        levels: runs,
-        cost_relative_to_one_run: report::cost(runs),
-        quantities: &quantities,
-    };
+    let study = report::Study::new(&path.display().to_string(), name, o, runs, &quantities);
     if let Err(e) = report::write_json(out, &study) {
         err!("error: {}: {e}", out.join("convergence.json").display());
         return ExitCode::from(1);
