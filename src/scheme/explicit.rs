@@ -115,23 +115,56 @@ pub struct Instability {
     pub reason: InstabilityReason,
 }
 
-/// Whether the passes compiled for AVX2 may run here: the processor reports AVX2, and the environment
-/// variable `OHL_NO_AVX2` is not set (to measure or compare the baseline copy).
-fn avx2_available() -> bool {
+/// The instruction set of the kernel's compiled copies (see `isa_dispatch!`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+enum Isa {
+    /// the target's baseline (x86-64: SSE2, 2 doubles per vector)
+    Baseline,
+    /// AVX2 (4 doubles per vector)
+    Avx2,
+    /// AVX-512 F, DQ and VL (8 doubles per vector, mask registers, 64-bit integer maxima)
+    Avx512,
+}
+
+/// AVX-512's features that the AVX-512 copies are compiled with: F (the 512-bit vectors), DQ (64-bit
+/// integer and double conversions) and VL (the same instructions on 128- and 256-bit vectors).
+#[cfg(target_arch = "x86_64")]
+fn has_avx512() -> bool {
+    std::is_x86_feature_detected!("avx512f")
+        && std::is_x86_feature_detected!("avx512dq")
+        && std::is_x86_feature_detected!("avx512vl")
+}
+
+/// The widest copy of the passes that may run here: AVX-512 where the processor reports F, DQ and VL and
+/// the environment variable `OHL_NO_AVX512` is not set, else AVX2 where the processor reports it and
+/// `OHL_NO_AVX2` is not set (which also rules out AVX-512), else the baseline: the variables select a
+/// narrower copy, to measure or compare it.
+fn detected_isa() -> Isa {
     #[cfg(target_arch = "x86_64")]
     {
-        std::is_x86_feature_detected!("avx2") && std::env::var_os("OHL_NO_AVX2").is_none()
+        if !std::is_x86_feature_detected!("avx2") || std::env::var_os("OHL_NO_AVX2").is_some() {
+            Isa::Baseline
+        } else if has_avx512() && std::env::var_os("OHL_NO_AVX512").is_none() {
+            Isa::Avx512
+        } else {
+            Isa::Avx2
+        }
     }
     #[cfg(not(target_arch = "x86_64"))]
     {
-        false
+        Isa::Baseline
     }
 }
 
-/// The instruction set the kernel's passes run with on this machine: `"avx2"` (the AVX2 copies) or
-/// `"baseline"` (x86-64 SSE2, or the target's baseline elsewhere).
+/// The instruction set the kernel's passes run with on this machine: `"avx512"` (the AVX-512 copies),
+/// `"avx2"` (the AVX2 copies) or `"baseline"` (x86-64 SSE2, or the target's baseline elsewhere); the
+/// environment variables `OHL_NO_AVX512` and `OHL_NO_AVX2` select a narrower copy.
 pub fn kernel_instruction_set() -> &'static str {
-    if avx2_available() { "avx2" } else { "baseline" }
+    match detected_isa() {
+        Isa::Avx512 => "avx512",
+        Isa::Avx2 => "avx2",
+        Isa::Baseline => "baseline",
+    }
 }
 
 fn describe(r: &InstabilityReason) -> String {
@@ -192,11 +225,22 @@ unsafe fn largest_square_sum_avx2(f1: &[f64], f2: &[f64], f3: &[f64]) -> f64 {
     largest_square_sum(f1, f2, f3)
 }
 
-/// One definition, two compiled copies: `fn NAME[generics][generic args](args) -> R = BODY;` defines the
-/// method `NAME` that calls the `#[inline(always)]` method `BODY` through a copy compiled for AVX2 where the
-/// processor has it (chosen at construction, [`Explicit::new`]) and through a copy for the baseline
-/// instruction set otherwise. Both copies perform the same IEEE operations in the same order, so their
-/// results are bitwise identical (tested); only the vector width differs.
+/// [`largest_square_sum`] compiled for AVX-512 (the same IEEE operations: bitwise the same number).
+///
+/// # Safety
+/// Only where the processor has AVX-512 F, DQ and VL.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,avx512f,avx512dq,avx512vl")]
+unsafe fn largest_square_sum_avx512(f1: &[f64], f2: &[f64], f3: &[f64]) -> f64 {
+    largest_square_sum(f1, f2, f3)
+}
+
+/// One definition, three compiled copies: `fn NAME[generics][generic args](args) -> R = BODY;` defines the
+/// method `NAME` that calls the `#[inline(always)]` method `BODY` through a copy compiled for AVX-512 (F,
+/// DQ, VL) or for AVX2 where the processor has it (chosen at construction, [`Explicit::new`]) and through a
+/// copy for the baseline instruction set otherwise. All copies perform the same IEEE operations in the
+/// same order (no FMA: Rust never contracts `a * b + c`, and the bodies call no `mul_add`), so their
+/// results are bitwise identical (tested); only the vector width and the instruction encoding differ.
 macro_rules! isa_dispatch {
     (
         $(#[$doc:meta])*
@@ -204,6 +248,12 @@ macro_rules! isa_dispatch {
     ) => {
         $(#[$doc])*
         fn $name<$($g)*>(&mut self, $($arg: $ty),*) -> $ret {
+            #[cfg(target_arch = "x86_64")]
+            #[inline(never)]
+            #[target_feature(enable = "avx2,avx512f,avx512dq,avx512vl")]
+            fn avx512<$($g)*>(s: &mut Explicit, $($arg: $ty),*) -> $ret {
+                s.$body::<$($ga)*>($($arg),*)
+            }
             #[cfg(target_arch = "x86_64")]
             #[inline(never)]
             #[target_feature(enable = "avx2")]
@@ -215,9 +265,12 @@ macro_rules! isa_dispatch {
                 s.$body::<$($ga)*>($($arg),*)
             }
             #[cfg(target_arch = "x86_64")]
-            if self.avx2 {
-                // SAFETY: `avx2` is set only where the processor reports AVX2 (`avx2_available`).
-                return unsafe { avx2::<$($ga)*>(self, $($arg),*) };
+            match self.isa {
+                // SAFETY: `isa` is `Avx512` only where the processor reports AVX-512 F, DQ and VL and
+                // `Avx2` only where it reports AVX2 (`detected_isa`).
+                Isa::Avx512 => return unsafe { avx512::<$($ga)*>(self, $($arg),*) },
+                Isa::Avx2 => return unsafe { avx2::<$($ga)*>(self, $($arg),*) },
+                Isa::Baseline => {}
             }
             baseline::<$($ga)*>(self, $($arg),*)
         }
@@ -266,8 +319,9 @@ pub struct Explicit {
     /// the supports' nodes at construction (fixed nodes and strings' clamps, in node order): the list
     /// [`Explicit::support_forces`] reports, fixed for the run (a released dead-end reports zero)
     supports: Vec<usize>,
-    /// run the passes compiled for AVX2 (detected at construction; see [`Explicit::step`])
-    avx2: bool,
+    /// the copy of the passes that runs: AVX-512, AVX2 or the baseline (detected at construction; see
+    /// [`Explicit::step`])
+    isa: Isa,
 }
 
 impl Explicit {
@@ -294,7 +348,7 @@ impl Explicit {
             external_force: Vec::new(),
             point_scratch: Vec::new(),
             supports,
-            avx2: avx2_available(),
+            isa: detected_isa(),
         }
     }
 
@@ -306,10 +360,10 @@ impl Explicit {
     /// gate, uniform load, damping, prescribed forces) is chosen here, once per step, so the node loops
     /// carry no branch on the scenario's options.
     ///
-    /// On x86-64 processors with AVX2 the same passes run from copies compiled for AVX2 (4 doubles per
-    /// vector instead of SSE2's 2), chosen once at construction. Both copies perform the same IEEE
-    /// operations in the same order (Rust neither contracts to FMA nor reassociates), so the results are
-    /// bitwise identical; a test checks it.
+    /// On x86-64 processors with AVX-512 (F, DQ, VL) or AVX2 the same passes run from copies compiled for
+    /// them (8 or 4 doubles per vector instead of SSE2's 2), chosen once at construction. All copies
+    /// perform the same IEEE operations in the same order (Rust neither contracts to FMA nor
+    /// reassociates), so the results are bitwise identical; a test checks it.
     pub fn step(&mut self, dt: f64) -> Result<(), Instability> {
         debug_assert!(dt > 0.0 && dt <= self.params.dt_s * (1.0 + 1e-12));
         if !self.fresh {
@@ -505,9 +559,12 @@ impl Explicit {
         let (a, b) = (segments.start + 1, segments.end + 1);
         let (f1, f2, f3) = (&f1[a..b], &f2[a..b], &f3[a..b]);
         #[cfg(target_arch = "x86_64")]
-        if self.avx2 {
-            // SAFETY: `avx2` is set only where the processor reports AVX2 (`avx2_available`).
-            return unsafe { largest_square_sum_avx2(f1, f2, f3) }.sqrt();
+        match self.isa {
+            // SAFETY: `isa` is `Avx512` only where the processor reports AVX-512 F, DQ and VL and `Avx2`
+            // only where it reports AVX2 (`detected_isa`).
+            Isa::Avx512 => return unsafe { largest_square_sum_avx512(f1, f2, f3) }.sqrt(),
+            Isa::Avx2 => return unsafe { largest_square_sum_avx2(f1, f2, f3) }.sqrt(),
+            Isa::Baseline => {}
         }
         largest_square_sum(f1, f2, f3).sqrt()
     }
@@ -659,7 +716,7 @@ impl Explicit {
     }
 
     isa_dispatch! {
-        /// The segment pass ([`Explicit::segment_pass_body`]), from the AVX2 copy where the processor has it.
+        /// The segment pass ([`Explicit::segment_pass_body`]), from the widest copy the processor runs.
         fn segment_pass[L: TensionLaw, W: SegmentLoad, const UNIFORM: bool, const VISCOUS: bool][L, W, UNIFORM, VISCOUS](
             load: &W, q: [f64; 3]) -> ()
             = segment_pass_body;
@@ -721,7 +778,7 @@ impl Explicit {
     }
 
     isa_dispatch! {
-        /// The node pass ([`Explicit::kick_drift`]), from the AVX2 copy where the processor has it.
+        /// The node pass ([`Explicit::kick_drift`]), from the widest copy the processor runs.
         fn node_pass[const EXTRA: bool, const DAMP: bool, const SMOOTH: bool][EXTRA, DAMP, SMOOTH](
             kick: f64, dt: f64, extra: &[Vec<f64>; 3], points: &[(usize, [f64; 3])]) -> bool
             = kick_drift;
@@ -1248,23 +1305,38 @@ mod tests {
     }
 
     #[test]
-    fn avx2_copies_are_bitwise_identical_to_the_baseline() {
-        if !avx2_available() {
+    fn wide_copies_are_bitwise_identical_to_the_baseline() {
+        let widest = detected_isa();
+        if widest == Isa::Baseline {
             eprintln!("no AVX2 here (or OHL_NO_AVX2 set): only the baseline copy runs, nothing to compare");
             return;
         }
-        // The option cases (`option_cases`), 400 steps with shortened steps.
-        let cases = option_cases();
-        for (name, mut wide) in cases {
-            wide.avx2 = true;
-            let mut baseline = wide.clone();
-            baseline.avx2 = false;
-            let dt = wide.params.dt_s;
-            for step in 0..400 {
-                let h = if step % 7 == 3 { 0.37 * dt } else { dt };
-                assert_eq!(wide.step(h).is_ok(), baseline.step(h).is_ok(), "{name}: verdicts differ at step {step}");
+        if widest == Isa::Avx2 {
+            eprintln!("no AVX-512 here (or OHL_NO_AVX512 set): the AVX2 copy is compared alone");
+        }
+        // The option cases (`option_cases`), 400 steps with shortened steps, in every copy this processor
+        // runs, each against the baseline copy; the largest tension of the observers too.
+        for isa in [Isa::Avx2, Isa::Avx512].into_iter().filter(|&i| i <= widest) {
+            for (name, mut wide) in option_cases() {
+                wide.isa = isa;
+                let mut baseline = wide.clone();
+                baseline.isa = Isa::Baseline;
+                let dt = wide.params.dt_s;
+                for step in 0..400 {
+                    let h = if step % 7 == 3 { 0.37 * dt } else { dt };
+                    let (a, b) = (wide.step(h).is_ok(), baseline.step(h).is_ok());
+                    assert_eq!(a, b, "{isa:?} {name}: verdicts differ at step {step}");
+                }
+                assert_bitwise(&wide, &baseline, &format!("{isa:?} {name}"));
+                wide.evaluate_forces();
+                baseline.evaluate_forces();
+                let n = wide.wire.segments();
+                assert_eq!(wide.max_tension_n().to_bits(), baseline.max_tension_n().to_bits(), "{isa:?} {name}");
+                for r in [0..n, 3..n - 2, 1..9] {
+                    let (a, b) = (wide.max_tension_in(r.clone()), baseline.max_tension_in(r.clone()));
+                    assert_eq!(a.to_bits(), b.to_bits(), "{isa:?} {name} {r:?}");
+                }
             }
-            assert_bitwise(&wide, &baseline, &name);
         }
     }
 }
