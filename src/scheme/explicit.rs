@@ -303,10 +303,18 @@ pub struct Explicit {
     max_tension_n: f64,
     /// whether any segment has internal friction (`None`: not known since the wire last changed)
     viscous: Option<bool>,
+    /// `1.0 / l0` of every segment [1/m], for the segment pass; valid while `inv_rest_length_fresh`
+    inv_rest_length: Vec<f64>,
+    /// `inv_rest_length` holds the wire's stress-free lengths (false once the wire may have changed)
+    inv_rest_length_fresh: bool,
     /// segment tension force `T t` [N], padded: index `j + 1` for segment `j`, zero at 0 and `N + 1`
     fs: [Vec<f64>; 3],
-    /// half the segment load `P / 2` [N], padded like `fs`
+    /// half the segment load `P / 2` [N], padded like `fs` (between the segment pass's two loops, the
+    /// unit tangent `t`)
     es: [Vec<f64>; 3],
+    /// each segment's length `|r_{i+1} - r_i|` [m] from the segment pass's tension loop for its load loop
+    /// (index `j` for segment `j`)
+    seg_len: Vec<f64>,
     /// force of each suspension insulator string on its clamp node `(node, F)` [N], in the order of
     /// `Wire::insulators`, from the last segment pass
     point_force: Vec<(usize, [f64; 3])>,
@@ -342,8 +350,11 @@ impl Explicit {
             fresh: false,
             max_tension_n: 0.0,
             viscous: None,
+            inv_rest_length: vec![0.0; pad],
+            inv_rest_length_fresh: false,
             fs: z(),
             es: z(),
+            seg_len: vec![0.0; pad],
             point_force: Vec::new(),
             external_force: Vec::new(),
             point_scratch: Vec::new(),
@@ -431,6 +442,7 @@ impl Explicit {
     pub fn wire_mut(&mut self) -> &mut Wire {
         self.fresh = false;
         self.viscous = None;
+        self.inv_rest_length_fresh = false;
         &mut self.wire
     }
 
@@ -731,8 +743,16 @@ impl Explicit {
         load: &W,
         q: [f64; 3],
     ) {
+        let n = self.wire.segments();
+        if !self.inv_rest_length_fresh {
+            // The division the segment element performs, once per change of the wire rather than every
+            // step: the same quotient, so the same bits.
+            for (inv, l0) in self.inv_rest_length[..n].iter_mut().zip(&self.wire.rest_length[..n]) {
+                *inv = 1.0 / l0;
+            }
+            self.inv_rest_length_fresh = true;
+        }
         let w = &self.wire;
-        let n = w.segments();
         let ea = &w.axial_stiffness_n[..n];
         let eta = &w.internal_friction_n_s[..n];
         // The largest tension, as a maximum of order keys: an integer reduction vectorises, a
@@ -744,7 +764,7 @@ impl Explicit {
         let (v1a, v1b) = (&w.v[0][..n], &w.v[0][1..n + 1]);
         let (v2a, v2b) = (&w.v[1][..n], &w.v[1][1..n + 1]);
         let (v3a, v3b) = (&w.v[2][..n], &w.v[2][1..n + 1]);
-        let l0 = &w.rest_length[..n];
+        let inv_l0 = &self.inv_rest_length[..n];
         let lref = &w.reference_length[..n];
         let intact = &w.intact[..n];
         let dfac = &w.wind_diameter_factor[..n];
@@ -752,11 +772,42 @@ impl Explicit {
         let [es1, es2, es3] = &mut self.es;
         let (fs1, fs2, fs3) = (&mut fs1[1..n + 1], &mut fs2[1..n + 1], &mut fs3[1..n + 1]);
         let (es1, es2, es3) = (&mut es1[1..n + 1], &mut es2[1..n + 1], &mut es3[1..n + 1]);
+        if W::ZERO && !UNIFORM {
+            // No load: one loop, the tension and a zero share.
+            for j in 0..n {
+                // The segment element (`element::segment`) on f64, piece by piece: the same operations in
+                // the same order as its dual-number evaluation in the static Jacobian.
+                let (va, vb) = ([v1a[j], v2a[j], v3a[j]], [v1b[j], v2b[j], v3b[j]]);
+                let st =
+                    segment::stretch_by_inverse([x1a[j], x2a[j], x3a[j]], [x1b[j], x2b[j], x3b[j]], va, vb, inv_l0[j]);
+                let tension = if VISCOUS {
+                    L::tension(ea[j], eta[j], st.e, st.edot) * intact[j]
+                } else {
+                    L::tension(ea[j], 0.0, st.e, 0.0) * intact[j]
+                };
+                kmax = kmax.max(L::order_key(tension));
+                let t = st.t;
+                fs1[j] = tension * t[0];
+                fs2[j] = tension * t[1];
+                fs3[j] = tension * t[2];
+                let e = segment::share::<f64, W, UNIFORM>(load, &st, va, vb, q, lref[j], intact[j], dfac[j]);
+                es1[j] = e[0];
+                es2[j] = e[1];
+                es3[j] = e[2];
+            }
+            self.max_tension_n = from_order_key(kmax);
+            return;
+        }
+        // Two loops: the tension loop (square root, division, the law) keeps each segment's tangent and
+        // length, the load loop (the wind law's square root and division) reads them back. Each value is
+        // the one the single loop forms (stored and loaded as it is), so the result is bitwise the same;
+        // two shorter dependency chains per iteration let the processor overlap more segments.
+        let len = &mut self.seg_len[..n];
         for j in 0..n {
             // The segment element (`element::segment`) on f64, piece by piece: the same operations in
             // the same order as its dual-number evaluation in the static Jacobian.
             let (va, vb) = ([v1a[j], v2a[j], v3a[j]], [v1b[j], v2b[j], v3b[j]]);
-            let st = segment::stretch([x1a[j], x2a[j], x3a[j]], [x1b[j], x2b[j], x3b[j]], va, vb, l0[j]);
+            let st = segment::stretch_by_inverse([x1a[j], x2a[j], x3a[j]], [x1b[j], x2b[j], x3b[j]], va, vb, inv_l0[j]);
             // Without internal friction anywhere (`VISCOUS = false`) the viscous term is the constant
             // `0 * 0`: it changes only the sign of a zero tension, and the strain rate is not computed.
             let tension = if VISCOUS {
@@ -769,6 +820,15 @@ impl Explicit {
             fs1[j] = tension * t[0];
             fs2[j] = tension * t[1];
             fs3[j] = tension * t[2];
+            es1[j] = t[0];
+            es2[j] = t[1];
+            es3[j] = t[2];
+            len[j] = st.len;
+        }
+        for j in 0..n {
+            let (va, vb) = ([v1a[j], v2a[j], v3a[j]], [v1b[j], v2b[j], v3b[j]]);
+            // `e` and `edot` are not read by the load.
+            let st = segment::Stretch { len: len[j], t: [es1[j], es2[j], es3[j]], e: 0.0, edot: 0.0 };
             let e = segment::share::<f64, W, UNIFORM>(load, &st, va, vb, q, lref[j], intact[j], dfac[j]);
             es1[j] = e[0];
             es2[j] = e[1];
@@ -1223,6 +1283,36 @@ mod tests {
                 assert_eq!(fused.step(h).is_ok(), ok, "{name}: stability verdicts differ at step {step}");
             }
             assert_bitwise(&fused, &reference, &name);
+        }
+    }
+
+    /// The kept inverses of the stress-free lengths follow a change of the wire: a solver whose
+    /// stress-free lengths change mid-run (a temperature step through `wire_mut`) steps bitwise as one that
+    /// divides afresh every step, and differently from one without the change (so the change reached
+    /// the tension).
+    #[test]
+    fn kept_inverse_rest_lengths_follow_the_wire() {
+        for config in [Config::PlaneWeight, Config::Wind3d, Config::ViscousSmoothed] {
+            let mut kept = config.solver(40);
+            let mut afresh = kept.clone();
+            let mut unchanged = kept.clone();
+            let dt = kept.params.dt_s;
+            for step in 0..300 {
+                if step == 100 {
+                    for s in [&mut kept, &mut afresh] {
+                        // aluminium's expansion, 1.9e-5 /K (any nonzero value would do)
+                        let t = s.wire.reference_temperature_k + 40.0;
+                        s.wire_mut().thermal_expansion_per_k = 1.9e-5;
+                        s.wire_mut().set_temperature(0..40, t);
+                    }
+                }
+                afresh.inv_rest_length_fresh = false;
+                for s in [&mut kept, &mut afresh, &mut unchanged] {
+                    s.step(dt).expect("stable");
+                }
+            }
+            assert_bitwise(&kept, &afresh, config.name());
+            assert_ne!(kept.wire.x[2][20].to_bits(), unchanged.wire.x[2][20].to_bits(), "{}", config.name());
         }
     }
 
