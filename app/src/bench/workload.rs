@@ -166,6 +166,7 @@ fn line(t: &toml::Table, name: &str) -> LineExplicit {
 
 /// The solver of a workload: one wire or a line.
 #[derive(Clone, Debug)]
+#[allow(clippy::large_enum_variant)] // two per measurement, cloned per episode: the size does not matter
 pub enum Solver {
     /// one wire (a conductor or a section)
     Wire(Explicit),

@@ -179,15 +179,13 @@ pub fn main(args: BenchArgs) -> ExitCode {
     out!("\ncost of an element per node-step [CPU ns] (the difference of a pair of workloads):");
     for (with, without, what) in [
         ("ground_contact", "plane_weight", "ground contact, every node on the ground"),
-        ("bundle_spacers", "bundle_bare", "case g's spacers (18 a sub-conductor, 6 arms each)"),
+        ("bundle_spacers", "bundle_bare", "case g's 18 spacers (6 arms each)"),
         ("short_circuit", "short_circuit_bare", "case j's short-circuit pair forces (3 phases)"),
     ] {
-        for n in bench::SIZES.iter().chain(&bench::LINE_SIZES) {
-            let find = |name: &str| {
-                rows.iter().find(|(r, _)| r.config == name && r.n == *n).map(|(r, _)| r.ns_per_node_step())
-            };
-            if let (Some(a), Some(b)) = (find(with), find(without)) {
-                out!("  {what}, N = {n}: {:.3} - {:.3} = {:.3} ns per node-step", a, b, a - b);
+        for (r, _) in rows.iter().filter(|(r, _)| r.config == with) {
+            if let Some((o, _)) = rows.iter().find(|(o, _)| o.config == without && o.n == r.n) {
+                let (a, b) = (r.ns_per_node_step(), o.ns_per_node_step());
+                out!("  {what}, N = {}: {a:.3} - {b:.3} = {:.3} ns per node-step", r.n, a - b);
             }
         }
     }
