@@ -49,6 +49,10 @@ pub fn cpu_clock_s() -> f64 {
         .unwrap_or_else(|| START.get_or_init(Instant::now).elapsed().as_secs_f64())
 }
 
+/// Longest CPU time of one repetition [s] ([`measure_kernel`] takes fewer steps than the node-step budget
+/// asks for a workload slower than that).
+pub const MAX_REP_S: f64 = 0.5;
+
 /// Longest stretch of steps timed from one initial state: 4000 steps are 13 s simulated at N = 50
 /// (longer undamped tension-only runs can go unstable, docs/paper_notes.md) and 0.1 s at N = 5000.
 pub const EPISODE_STEPS: usize = 4000;
@@ -120,7 +124,17 @@ fn median(mut v: Vec<f64>) -> f64 {
 pub fn measure_kernel(config: Workload, n: usize, node_steps: f64, reps: usize) -> KernelResult {
     let initial = config.solver(n);
     let nodes = initial.nodes();
-    let steps = steps_per_rep(nodes, node_steps);
+    // A slow workload (the short circuit's pair forces cost about 100 kernels) would take minutes at the
+    // budget of the kernel's: 100 probe steps (untimed) bound a repetition to about MAX_REP_S.
+    let what = format!("{} N = {n}", config.name());
+    let mut probe = initial.clone();
+    let t0 = cpu_clock_s();
+    for _ in 0..100 {
+        probe.step(&what);
+    }
+    let per_step = (cpu_clock_s() - t0) / 100.0;
+    let affordable = if per_step > 0.0 { (MAX_REP_S / per_step) as usize } else { usize::MAX };
+    let steps = steps_per_rep(nodes, node_steps).min(affordable.max(100));
     let mut times = Vec::with_capacity(reps);
     for rep in 0..=reps {
         // Episodes of at most EPISODE_STEPS steps, each from a fresh (untimed) clone of the initial state.
@@ -128,7 +142,6 @@ pub fn measure_kernel(config: Workload, n: usize, node_steps: f64, reps: usize) 
         while left > 0 {
             let k = left.min(EPISODE_STEPS);
             let mut s = initial.clone();
-            let what = format!("{} N = {n}", config.name());
             let t0 = cpu_clock_s();
             for _ in 0..k {
                 s.step(&what);
