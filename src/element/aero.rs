@@ -107,6 +107,10 @@ impl<W: SegmentLoad> SegmentLoad for Option<W> {
 
 /// A load distributed along each segment, evaluated once per segment per step.
 pub trait SegmentLoad {
+    /// Whether the load is zero on every segment whatever its state (no wind): a kernel may then skip
+    /// the load's own loop.
+    const ZERO: bool = false;
+
     /// Total force [N] on a segment with unit tangent `t`, deformed length `len` [m] and velocity `v`
     /// [m/s] (mean of the end nodes).
     fn force<S: Scalar>(&self, t: [S; 3], len: S, v: [S; 3]) -> [S; 3];
@@ -129,6 +133,8 @@ const TINY_SIN: f64 = 1.0e-300;
 pub struct NoWind;
 
 impl SegmentLoad for NoWind {
+    const ZERO: bool = true;
+
     #[inline(always)]
     fn force<S: Scalar>(&self, _t: [S; 3], _len: S, _v: [S; 3]) -> [S; 3] {
         [S::c(0.0); 3]

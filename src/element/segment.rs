@@ -80,11 +80,17 @@ impl<S: Scalar> SegmentForce<S> {
 /// Geometry and strain of the segment from end positions `xa, xb` [m] and velocities `va, vb` [m/s].
 #[inline(always)]
 pub fn stretch<S: Scalar>(xa: [S; 3], xb: [S; 3], va: [S; 3], vb: [S; 3], rest_length_m: f64) -> Stretch<S> {
+    stretch_by_inverse(xa, xb, va, vb, 1.0 / rest_length_m)
+}
+
+/// [`stretch`] given the inverse of the stress-free length `1 / l0` [1/m] (the same number, so the same
+/// bits, when it is `1.0 / l0` computed beforehand: the explicit kernel keeps them between steps).
+#[inline(always)]
+pub fn stretch_by_inverse<S: Scalar>(xa: [S; 3], xb: [S; 3], va: [S; 3], vb: [S; 3], inv_l0: f64) -> Stretch<S> {
     let d = sub3(xb, xa);
     let len = dot3(d, d).sqrt();
     let inv_len = S::c(1.0) / len;
     let t = [d[0] * inv_len, d[1] * inv_len, d[2] * inv_len];
-    let inv_l0 = 1.0 / rest_length_m;
     let e = len * inv_l0 - 1.0;
     let dv = sub3(vb, va);
     let edot = dot3(dv, t) * inv_l0;

@@ -115,23 +115,56 @@ pub struct Instability {
     pub reason: InstabilityReason,
 }
 
-/// Whether the passes compiled for AVX2 may run here: the processor reports AVX2, and the environment
-/// variable `OHL_NO_AVX2` is not set (to measure or compare the baseline copy).
-fn avx2_available() -> bool {
+/// The instruction set of the kernel's compiled copies (see `isa_dispatch!`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+enum Isa {
+    /// the target's baseline (x86-64: SSE2, 2 doubles per vector)
+    Baseline,
+    /// AVX2 (4 doubles per vector)
+    Avx2,
+    /// AVX-512 F, DQ and VL (8 doubles per vector, mask registers, 64-bit integer maxima)
+    Avx512,
+}
+
+/// AVX-512's features that the AVX-512 copies are compiled with: F (the 512-bit vectors), DQ (64-bit
+/// integer and double conversions) and VL (the same instructions on 128- and 256-bit vectors).
+#[cfg(target_arch = "x86_64")]
+fn has_avx512() -> bool {
+    std::is_x86_feature_detected!("avx512f")
+        && std::is_x86_feature_detected!("avx512dq")
+        && std::is_x86_feature_detected!("avx512vl")
+}
+
+/// The widest copy of the passes that may run here: AVX-512 where the processor reports F, DQ and VL and
+/// the environment variable `OHL_NO_AVX512` is not set, else AVX2 where the processor reports it and
+/// `OHL_NO_AVX2` is not set (which also rules out AVX-512), else the baseline: the variables select a
+/// narrower copy, to measure or compare it.
+fn detected_isa() -> Isa {
     #[cfg(target_arch = "x86_64")]
     {
-        std::is_x86_feature_detected!("avx2") && std::env::var_os("OHL_NO_AVX2").is_none()
+        if !std::is_x86_feature_detected!("avx2") || std::env::var_os("OHL_NO_AVX2").is_some() {
+            Isa::Baseline
+        } else if has_avx512() && std::env::var_os("OHL_NO_AVX512").is_none() {
+            Isa::Avx512
+        } else {
+            Isa::Avx2
+        }
     }
     #[cfg(not(target_arch = "x86_64"))]
     {
-        false
+        Isa::Baseline
     }
 }
 
-/// The instruction set the kernel's passes run with on this machine: `"avx2"` (the AVX2 copies) or
-/// `"baseline"` (x86-64 SSE2, or the target's baseline elsewhere).
+/// The instruction set the kernel's passes run with on this machine: `"avx512"` (the AVX-512 copies),
+/// `"avx2"` (the AVX2 copies) or `"baseline"` (x86-64 SSE2, or the target's baseline elsewhere); the
+/// environment variables `OHL_NO_AVX512` and `OHL_NO_AVX2` select a narrower copy.
 pub fn kernel_instruction_set() -> &'static str {
-    if avx2_available() { "avx2" } else { "baseline" }
+    match detected_isa() {
+        Isa::Avx512 => "avx512",
+        Isa::Avx2 => "avx2",
+        Isa::Baseline => "baseline",
+    }
 }
 
 fn describe(r: &InstabilityReason) -> String {
@@ -192,11 +225,22 @@ unsafe fn largest_square_sum_avx2(f1: &[f64], f2: &[f64], f3: &[f64]) -> f64 {
     largest_square_sum(f1, f2, f3)
 }
 
-/// One definition, two compiled copies: `fn NAME[generics][generic args](args) -> R = BODY;` defines the
-/// method `NAME` that calls the `#[inline(always)]` method `BODY` through a copy compiled for AVX2 where the
-/// processor has it (chosen at construction, [`Explicit::new`]) and through a copy for the baseline
-/// instruction set otherwise. Both copies perform the same IEEE operations in the same order, so their
-/// results are bitwise identical (tested); only the vector width differs.
+/// [`largest_square_sum`] compiled for AVX-512 (the same IEEE operations: bitwise the same number).
+///
+/// # Safety
+/// Only where the processor has AVX-512 F, DQ and VL.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,avx512f,avx512dq,avx512vl")]
+unsafe fn largest_square_sum_avx512(f1: &[f64], f2: &[f64], f3: &[f64]) -> f64 {
+    largest_square_sum(f1, f2, f3)
+}
+
+/// One definition, three compiled copies: `fn NAME[generics][generic args](args) -> R = BODY;` defines the
+/// method `NAME` that calls the `#[inline(always)]` method `BODY` through a copy compiled for AVX-512 (F,
+/// DQ, VL) or for AVX2 where the processor has it (chosen at construction, [`Explicit::new`]) and through a
+/// copy for the baseline instruction set otherwise. All copies perform the same IEEE operations in the
+/// same order (no FMA: Rust never contracts `a * b + c`, and the bodies call no `mul_add`), so their
+/// results are bitwise identical (tested); only the vector width and the instruction encoding differ.
 macro_rules! isa_dispatch {
     (
         $(#[$doc:meta])*
@@ -204,6 +248,12 @@ macro_rules! isa_dispatch {
     ) => {
         $(#[$doc])*
         fn $name<$($g)*>(&mut self, $($arg: $ty),*) -> $ret {
+            #[cfg(target_arch = "x86_64")]
+            #[inline(never)]
+            #[target_feature(enable = "avx2,avx512f,avx512dq,avx512vl")]
+            fn avx512<$($g)*>(s: &mut Explicit, $($arg: $ty),*) -> $ret {
+                s.$body::<$($ga)*>($($arg),*)
+            }
             #[cfg(target_arch = "x86_64")]
             #[inline(never)]
             #[target_feature(enable = "avx2")]
@@ -215,9 +265,12 @@ macro_rules! isa_dispatch {
                 s.$body::<$($ga)*>($($arg),*)
             }
             #[cfg(target_arch = "x86_64")]
-            if self.avx2 {
-                // SAFETY: `avx2` is set only where the processor reports AVX2 (`avx2_available`).
-                return unsafe { avx2::<$($ga)*>(self, $($arg),*) };
+            match self.isa {
+                // SAFETY: `isa` is `Avx512` only where the processor reports AVX-512 F, DQ and VL and
+                // `Avx2` only where it reports AVX2 (`detected_isa`).
+                Isa::Avx512 => return unsafe { avx512::<$($ga)*>(self, $($arg),*) },
+                Isa::Avx2 => return unsafe { avx2::<$($ga)*>(self, $($arg),*) },
+                Isa::Baseline => {}
             }
             baseline::<$($ga)*>(self, $($arg),*)
         }
@@ -250,10 +303,18 @@ pub struct Explicit {
     max_tension_n: f64,
     /// whether any segment has internal friction (`None`: not known since the wire last changed)
     viscous: Option<bool>,
+    /// `1.0 / l0` of every segment [1/m], for the segment pass; valid while `inv_rest_length_fresh`
+    inv_rest_length: Vec<f64>,
+    /// `inv_rest_length` holds the wire's stress-free lengths (false once the wire may have changed)
+    inv_rest_length_fresh: bool,
     /// segment tension force `T t` [N], padded: index `j + 1` for segment `j`, zero at 0 and `N + 1`
     fs: [Vec<f64>; 3],
-    /// half the segment load `P / 2` [N], padded like `fs`
+    /// half the segment load `P / 2` [N], padded like `fs` (between the segment pass's two loops, the
+    /// unit tangent `t`)
     es: [Vec<f64>; 3],
+    /// each segment's length `|r_{i+1} - r_i|` [m] from the segment pass's tension loop for its load loop
+    /// (index `j` for segment `j`)
+    seg_len: Vec<f64>,
     /// force of each suspension insulator string on its clamp node `(node, F)` [N], in the order of
     /// `Wire::insulators`, from the last segment pass
     point_force: Vec<(usize, [f64; 3])>,
@@ -266,8 +327,9 @@ pub struct Explicit {
     /// the supports' nodes at construction (fixed nodes and strings' clamps, in node order): the list
     /// [`Explicit::support_forces`] reports, fixed for the run (a released dead-end reports zero)
     supports: Vec<usize>,
-    /// run the passes compiled for AVX2 (detected at construction; see [`Explicit::step`])
-    avx2: bool,
+    /// the copy of the passes that runs: AVX-512, AVX2 or the baseline (detected at construction; see
+    /// [`Explicit::step`])
+    isa: Isa,
 }
 
 impl Explicit {
@@ -288,13 +350,16 @@ impl Explicit {
             fresh: false,
             max_tension_n: 0.0,
             viscous: None,
+            inv_rest_length: vec![0.0; pad],
+            inv_rest_length_fresh: false,
             fs: z(),
             es: z(),
+            seg_len: vec![0.0; pad],
             point_force: Vec::new(),
             external_force: Vec::new(),
             point_scratch: Vec::new(),
             supports,
-            avx2: avx2_available(),
+            isa: detected_isa(),
         }
     }
 
@@ -306,10 +371,10 @@ impl Explicit {
     /// gate, uniform load, damping, prescribed forces) is chosen here, once per step, so the node loops
     /// carry no branch on the scenario's options.
     ///
-    /// On x86-64 processors with AVX2 the same passes run from copies compiled for AVX2 (4 doubles per
-    /// vector instead of SSE2's 2), chosen once at construction. Both copies perform the same IEEE
-    /// operations in the same order (Rust neither contracts to FMA nor reassociates), so the results are
-    /// bitwise identical; a test checks it.
+    /// On x86-64 processors with AVX-512 (F, DQ, VL) or AVX2 the same passes run from copies compiled for
+    /// them (8 or 4 doubles per vector instead of SSE2's 2), chosen once at construction. All copies
+    /// perform the same IEEE operations in the same order (Rust neither contracts to FMA nor
+    /// reassociates), so the results are bitwise identical; a test checks it.
     pub fn step(&mut self, dt: f64) -> Result<(), Instability> {
         debug_assert!(dt > 0.0 && dt <= self.params.dt_s * (1.0 + 1e-12));
         if !self.fresh {
@@ -377,6 +442,7 @@ impl Explicit {
     pub fn wire_mut(&mut self) -> &mut Wire {
         self.fresh = false;
         self.viscous = None;
+        self.inv_rest_length_fresh = false;
         &mut self.wire
     }
 
@@ -505,9 +571,12 @@ impl Explicit {
         let (a, b) = (segments.start + 1, segments.end + 1);
         let (f1, f2, f3) = (&f1[a..b], &f2[a..b], &f3[a..b]);
         #[cfg(target_arch = "x86_64")]
-        if self.avx2 {
-            // SAFETY: `avx2` is set only where the processor reports AVX2 (`avx2_available`).
-            return unsafe { largest_square_sum_avx2(f1, f2, f3) }.sqrt();
+        match self.isa {
+            // SAFETY: `isa` is `Avx512` only where the processor reports AVX-512 F, DQ and VL and `Avx2`
+            // only where it reports AVX2 (`detected_isa`).
+            Isa::Avx512 => return unsafe { largest_square_sum_avx512(f1, f2, f3) }.sqrt(),
+            Isa::Avx2 => return unsafe { largest_square_sum_avx2(f1, f2, f3) }.sqrt(),
+            Isa::Baseline => {}
         }
         largest_square_sum(f1, f2, f3).sqrt()
     }
@@ -659,7 +728,7 @@ impl Explicit {
     }
 
     isa_dispatch! {
-        /// The segment pass ([`Explicit::segment_pass_body`]), from the AVX2 copy where the processor has it.
+        /// The segment pass ([`Explicit::segment_pass_body`]), from the widest copy the processor runs.
         fn segment_pass[L: TensionLaw, W: SegmentLoad, const UNIFORM: bool, const VISCOUS: bool][L, W, UNIFORM, VISCOUS](
             load: &W, q: [f64; 3]) -> ()
             = segment_pass_body;
@@ -674,8 +743,16 @@ impl Explicit {
         load: &W,
         q: [f64; 3],
     ) {
+        let n = self.wire.segments();
+        if !self.inv_rest_length_fresh {
+            // The division the segment element performs, once per change of the wire rather than every
+            // step: the same quotient, so the same bits.
+            for (inv, l0) in self.inv_rest_length[..n].iter_mut().zip(&self.wire.rest_length[..n]) {
+                *inv = 1.0 / l0;
+            }
+            self.inv_rest_length_fresh = true;
+        }
         let w = &self.wire;
-        let n = w.segments();
         let ea = &w.axial_stiffness_n[..n];
         let eta = &w.internal_friction_n_s[..n];
         // The largest tension, as a maximum of order keys: an integer reduction vectorises, a
@@ -687,7 +764,7 @@ impl Explicit {
         let (v1a, v1b) = (&w.v[0][..n], &w.v[0][1..n + 1]);
         let (v2a, v2b) = (&w.v[1][..n], &w.v[1][1..n + 1]);
         let (v3a, v3b) = (&w.v[2][..n], &w.v[2][1..n + 1]);
-        let l0 = &w.rest_length[..n];
+        let inv_l0 = &self.inv_rest_length[..n];
         let lref = &w.reference_length[..n];
         let intact = &w.intact[..n];
         let dfac = &w.wind_diameter_factor[..n];
@@ -695,11 +772,42 @@ impl Explicit {
         let [es1, es2, es3] = &mut self.es;
         let (fs1, fs2, fs3) = (&mut fs1[1..n + 1], &mut fs2[1..n + 1], &mut fs3[1..n + 1]);
         let (es1, es2, es3) = (&mut es1[1..n + 1], &mut es2[1..n + 1], &mut es3[1..n + 1]);
+        if W::ZERO && !UNIFORM {
+            // No load: one loop, the tension and a zero share.
+            for j in 0..n {
+                // The segment element (`element::segment`) on f64, piece by piece: the same operations in
+                // the same order as its dual-number evaluation in the static Jacobian.
+                let (va, vb) = ([v1a[j], v2a[j], v3a[j]], [v1b[j], v2b[j], v3b[j]]);
+                let st =
+                    segment::stretch_by_inverse([x1a[j], x2a[j], x3a[j]], [x1b[j], x2b[j], x3b[j]], va, vb, inv_l0[j]);
+                let tension = if VISCOUS {
+                    L::tension(ea[j], eta[j], st.e, st.edot) * intact[j]
+                } else {
+                    L::tension(ea[j], 0.0, st.e, 0.0) * intact[j]
+                };
+                kmax = kmax.max(L::order_key(tension));
+                let t = st.t;
+                fs1[j] = tension * t[0];
+                fs2[j] = tension * t[1];
+                fs3[j] = tension * t[2];
+                let e = segment::share::<f64, W, UNIFORM>(load, &st, va, vb, q, lref[j], intact[j], dfac[j]);
+                es1[j] = e[0];
+                es2[j] = e[1];
+                es3[j] = e[2];
+            }
+            self.max_tension_n = from_order_key(kmax);
+            return;
+        }
+        // Two loops: the tension loop (square root, division, the law) keeps each segment's tangent and
+        // length, the load loop (the wind law's square root and division) reads them back. Each value is
+        // the one the single loop forms (stored and loaded as it is), so the result is bitwise the same;
+        // two shorter dependency chains per iteration let the processor overlap more segments.
+        let len = &mut self.seg_len[..n];
         for j in 0..n {
             // The segment element (`element::segment`) on f64, piece by piece: the same operations in
             // the same order as its dual-number evaluation in the static Jacobian.
             let (va, vb) = ([v1a[j], v2a[j], v3a[j]], [v1b[j], v2b[j], v3b[j]]);
-            let st = segment::stretch([x1a[j], x2a[j], x3a[j]], [x1b[j], x2b[j], x3b[j]], va, vb, l0[j]);
+            let st = segment::stretch_by_inverse([x1a[j], x2a[j], x3a[j]], [x1b[j], x2b[j], x3b[j]], va, vb, inv_l0[j]);
             // Without internal friction anywhere (`VISCOUS = false`) the viscous term is the constant
             // `0 * 0`: it changes only the sign of a zero tension, and the strain rate is not computed.
             let tension = if VISCOUS {
@@ -712,6 +820,15 @@ impl Explicit {
             fs1[j] = tension * t[0];
             fs2[j] = tension * t[1];
             fs3[j] = tension * t[2];
+            es1[j] = t[0];
+            es2[j] = t[1];
+            es3[j] = t[2];
+            len[j] = st.len;
+        }
+        for j in 0..n {
+            let (va, vb) = ([v1a[j], v2a[j], v3a[j]], [v1b[j], v2b[j], v3b[j]]);
+            // `e` and `edot` are not read by the load.
+            let st = segment::Stretch { len: len[j], t: [es1[j], es2[j], es3[j]], e: 0.0, edot: 0.0 };
             let e = segment::share::<f64, W, UNIFORM>(load, &st, va, vb, q, lref[j], intact[j], dfac[j]);
             es1[j] = e[0];
             es2[j] = e[1];
@@ -721,7 +838,7 @@ impl Explicit {
     }
 
     isa_dispatch! {
-        /// The node pass ([`Explicit::kick_drift`]), from the AVX2 copy where the processor has it.
+        /// The node pass ([`Explicit::kick_drift`]), from the widest copy the processor runs.
         fn node_pass[const EXTRA: bool, const DAMP: bool, const SMOOTH: bool][EXTRA, DAMP, SMOOTH](
             kick: f64, dt: f64, extra: &[Vec<f64>; 3], points: &[(usize, [f64; 3])]) -> bool
             = kick_drift;
@@ -1169,6 +1286,36 @@ mod tests {
         }
     }
 
+    /// The kept inverses of the stress-free lengths follow a change of the wire: a solver whose
+    /// stress-free lengths change mid-run (a temperature step through `wire_mut`) steps bitwise as one that
+    /// divides afresh every step, and differently from one without the change (so the change reached
+    /// the tension).
+    #[test]
+    fn kept_inverse_rest_lengths_follow_the_wire() {
+        for config in [Config::PlaneWeight, Config::Wind3d, Config::ViscousSmoothed] {
+            let mut kept = config.solver(40);
+            let mut afresh = kept.clone();
+            let mut unchanged = kept.clone();
+            let dt = kept.params.dt_s;
+            for step in 0..300 {
+                if step == 100 {
+                    for s in [&mut kept, &mut afresh] {
+                        // aluminium's expansion, 1.9e-5 /K (any nonzero value would do)
+                        let t = s.wire.reference_temperature_k + 40.0;
+                        s.wire_mut().thermal_expansion_per_k = 1.9e-5;
+                        s.wire_mut().set_temperature(0..40, t);
+                    }
+                }
+                afresh.inv_rest_length_fresh = false;
+                for s in [&mut kept, &mut afresh, &mut unchanged] {
+                    s.step(dt).expect("stable");
+                }
+            }
+            assert_bitwise(&kept, &afresh, config.name());
+            assert_ne!(kept.wire.x[2][20].to_bits(), unchanged.wire.x[2][20].to_bits(), "{}", config.name());
+        }
+    }
+
     #[test]
     fn order_keys_order_like_the_numbers() {
         let xs = [f64::NEG_INFINITY, -3.5e300, -1.0, -1e-310, -0.0, 0.0, 1e-310, 2.0, 7.1e305, f64::INFINITY];
@@ -1248,23 +1395,38 @@ mod tests {
     }
 
     #[test]
-    fn avx2_copies_are_bitwise_identical_to_the_baseline() {
-        if !avx2_available() {
+    fn wide_copies_are_bitwise_identical_to_the_baseline() {
+        let widest = detected_isa();
+        if widest == Isa::Baseline {
             eprintln!("no AVX2 here (or OHL_NO_AVX2 set): only the baseline copy runs, nothing to compare");
             return;
         }
-        // The option cases (`option_cases`), 400 steps with shortened steps.
-        let cases = option_cases();
-        for (name, mut wide) in cases {
-            wide.avx2 = true;
-            let mut baseline = wide.clone();
-            baseline.avx2 = false;
-            let dt = wide.params.dt_s;
-            for step in 0..400 {
-                let h = if step % 7 == 3 { 0.37 * dt } else { dt };
-                assert_eq!(wide.step(h).is_ok(), baseline.step(h).is_ok(), "{name}: verdicts differ at step {step}");
+        if widest == Isa::Avx2 {
+            eprintln!("no AVX-512 here (or OHL_NO_AVX512 set): the AVX2 copy is compared alone");
+        }
+        // The option cases (`option_cases`), 400 steps with shortened steps, in every copy this processor
+        // runs, each against the baseline copy; the largest tension of the observers too.
+        for isa in [Isa::Avx2, Isa::Avx512].into_iter().filter(|&i| i <= widest) {
+            for (name, mut wide) in option_cases() {
+                wide.isa = isa;
+                let mut baseline = wide.clone();
+                baseline.isa = Isa::Baseline;
+                let dt = wide.params.dt_s;
+                for step in 0..400 {
+                    let h = if step % 7 == 3 { 0.37 * dt } else { dt };
+                    let (a, b) = (wide.step(h).is_ok(), baseline.step(h).is_ok());
+                    assert_eq!(a, b, "{isa:?} {name}: verdicts differ at step {step}");
+                }
+                assert_bitwise(&wide, &baseline, &format!("{isa:?} {name}"));
+                wide.evaluate_forces();
+                baseline.evaluate_forces();
+                let n = wide.wire.segments();
+                assert_eq!(wide.max_tension_n().to_bits(), baseline.max_tension_n().to_bits(), "{isa:?} {name}");
+                for r in [0..n, 3..n - 2, 1..9] {
+                    let (a, b) = (wide.max_tension_in(r.clone()), baseline.max_tension_in(r.clone()));
+                    assert_eq!(a.to_bits(), b.to_bits(), "{isa:?} {name} {r:?}");
+                }
             }
-            assert_bitwise(&wide, &baseline, &name);
         }
     }
 }

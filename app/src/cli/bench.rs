@@ -1,6 +1,9 @@
-//! `ohl bench`: throughput of the explicit kernel (node-steps per second, one thread) in the three
-//! configurations of [`ohl_app::bench`] at N = 50, 200, 1000, 5000, the wall time of `ohl run` on the weight
-//! release at N = 50, 100, 200, 400, and the measured cost of a square root and a division on this core.
+//! `ohl bench`: throughput of the explicit kernel (node-steps per CPU second, one thread, median of the
+//! repetitions) in the wire workloads of [`ohl_app::bench::workload`] at N = 50, 200, 1000, 5000 and its
+//! section and line workloads at N = 50, 100, 200 segments per span (with each multi-conductor element's
+//! cost per node-step, the difference of a pair), the CPU time of `ohl run` on the weight release at
+//! N = 50, 100, 200, 400, and the measured cost of a square root and a division on this core in the
+//! kernel's instruction set.
 //! Writes `<out>/<label>.csv`, `<out>/<label>_run.csv`, `<out>/<label>_primitives.csv` and the plot
 //! `<out>/throughput.png` / `.svg` (against `--baseline` if given).
 
@@ -126,6 +129,7 @@ pub fn main(args: BenchArgs) -> ExitCode {
     let machine = bench::machine();
     let build = match (cfg!(target_feature = "avx2"), ohl::scheme::explicit::kernel_instruction_set()) {
         (true, _) => "release, built for avx2",
+        (false, "avx512") => "release, baseline build, kernel passes in their avx512 copies (runtime detected)",
         (false, "avx2") => "release, baseline build, kernel passes in their avx2 copies (runtime detected)",
         _ => "release, baseline build (sse2), kernel passes in their baseline copies",
     };
@@ -133,28 +137,56 @@ pub fn main(args: BenchArgs) -> ExitCode {
 
     let p = bench::measure_primitives();
     out!(
-        "core clock ~{:.2} GHz (dependent adds); sqrt {:.2} cycles/double, division {:.2} cycles/double (throughput, as compiled)",
+        "core clock ~{:.2} GHz (dependent adds, CPU time); sqrt {:.2} cycles/double, division {:.2} cycles/double (throughput, {} copy)",
         p.clock_hz * 1e-9,
         p.sqrt_cycles,
-        p.div_cycles
+        p.div_cycles,
+        p.isa
     );
 
-    out!("\n{:<16} {:>6} {:>8} {:>14} {:>10} {:>8}  load", "config", "N", "steps", "node-steps/s", "ns/node", "cycles");
+    out!(
+        "\n{:<18} {:>6} {:>7} {:>8} {:>14} {:>10} {:>8}  load",
+        "config",
+        "N",
+        "nodes",
+        "steps",
+        "node-steps/s",
+        "ns/node",
+        "cycles"
+    );
     let mut rows = Vec::new();
-    for c in Config::ALL {
-        for n in bench::SIZES {
+    let sized = |ws: &'static [bench::Workload], ns: &'static [usize]| {
+        ws.iter().flat_map(move |&w| ns.iter().map(move |&n| (w, n)))
+    };
+    for (c, n) in sized(&bench::workload::WIRE, &bench::SIZES).chain(sized(&bench::workload::LINE, &bench::LINE_SIZES))
+    {
+        {
             let load = bench::load_average();
             let r = bench::measure_kernel(c, n, node_steps, reps);
             out!(
-                "{:<16} {:>6} {:>8} {:>14.4e} {:>10.3} {:>8.1}  {load}",
+                "{:<18} {:>6} {:>7} {:>8} {:>14.4e} {:>10.3} {:>8.1}  {load}",
                 r.config,
                 r.n,
+                r.nodes,
                 r.steps,
                 r.node_steps_per_s(),
                 r.ns_per_node_step(),
                 r.ns_per_node_step() * 1e-9 * p.clock_hz
             );
             rows.push((r, load));
+        }
+    }
+    out!("\ncost of an element per node-step [CPU ns] (the difference of a pair of workloads):");
+    for (with, without, what) in [
+        ("ground_contact", "plane_weight", "ground contact, every node on the ground"),
+        ("bundle_spacers", "bundle_bare", "case g's 18 spacers (6 arms each)"),
+        ("short_circuit", "short_circuit_bare", "case j's short-circuit pair forces (3 phases)"),
+    ] {
+        for (r, _) in rows.iter().filter(|(r, _)| r.config == with) {
+            if let Some((o, _)) = rows.iter().find(|(o, _)| o.config == without && o.n == r.n) {
+                let (a, b) = (r.ns_per_node_step(), o.ns_per_node_step());
+                out!("  {what}, N = {}: {a:.3} - {b:.3} = {:.3} ns per node-step", r.n, a - b);
+            }
         }
     }
     if args.quick {
@@ -169,8 +201,8 @@ pub fn main(args: BenchArgs) -> ExitCode {
     }
     let prim_csv = args.out.join(format!("{}_primitives.csv", args.label));
     let prim = format!(
-        "clock_hz,sqrt_cycles_per_double,div_cycles_per_double,cpu,build,load_1_5_15,date_utc\n{:.4e},{:.3},{:.3},{},{build},{},{}\n",
-        p.clock_hz, p.sqrt_cycles, p.div_cycles, machine.cpu, machine.load, machine.date
+        "clock_hz,isa,sqrt_cycles_per_double,div_cycles_per_double,cpu,build,load_1_5_15,date_utc\n{:.4e},{},{:.3},{:.3},{},{build},{},{}\n",
+        p.clock_hz, p.isa, p.sqrt_cycles, p.div_cycles, machine.cpu, machine.load, machine.date
     );
     if let Err(e) = std::fs::write(&prim_csv, prim) {
         err!("error: cannot write {}: {e}", prim_csv.display());

@@ -1,14 +1,20 @@
 //! Benchmark of the explicit kernel (3.1), (3.3), (3.6): the measurements and the machine description,
-//! shared by `ohl bench` and the criterion bench (`cargo bench -p ohl-app`). The configurations are the
-//! library's ([`ohl::scheme::configs`]).
+//! shared by `ohl bench` and the criterion bench (`cargo bench -p ohl-app`). The workloads are the
+//! library's kernel configurations ([`ohl::scheme::configs`]) and the sections and lines of
+//! [`workload`].
 //!
-//! Throughput is counted in node-steps per second, `(N + 1) * steps / wall time`, for one thread.
-//! Wall-clock time on a shared machine is noisy: every measurement is the minimum over several
-//! repetitions (the run least disturbed by other processes), and the load average is recorded with it.
-//! Instruction counts per node-step (`app/benches/instructions.sh`, valgrind's callgrind) are the
-//! load-independent measure; [`run_fixed_steps`] is the entry point they time.
+//! Throughput is counted in node-steps per CPU second, `nodes * steps / CPU time`, for one thread. The
+//! clock is the thread's CPU time ([`ohl::output::cpu_time`], `CLOCK_THREAD_CPUTIME_ID`): on a loaded
+//! machine wall time also counts the time the thread waited for a processor, CPU time does not. Every
+//! measurement is the median over several repetitions (the fastest is kept beside it), and the load
+//! average is recorded with it. Instruction counts per node-step (`app/benches/instructions.sh`,
+//! valgrind's callgrind) are the load-independent measure; [`run_fixed_steps`] is the entry point they
+//! time.
+
+pub mod workload;
 
 use std::path::{Path, PathBuf};
+use std::sync::OnceLock;
 use std::time::Instant;
 
 use ohl::run::{RunError, RunOptions, run};
@@ -16,21 +22,36 @@ use ohl::scenario;
 use ohl::scheme::Explicit;
 pub use ohl::scheme::configs::Config;
 use ohl::scheme::configs::{EA_N, RHO_KG_PER_M, SPAN_M};
+pub use workload::{Solver, Workload};
 
 use crate::plot::{self, Chart, Series, Style};
 
 /// Grid sizes `N` [segments] of the kernel table (issue 5).
 pub const SIZES: [usize; 4] = [50, 200, 1000, 5000];
+/// Segments per span `N` of the section and line workloads ([`workload::LINE`]).
+pub const LINE_SIZES: [usize; 3] = [50, 100, 200];
 /// Grid sizes `N` of the `ohl run` timing (issue 5).
 pub const RUN_SIZES: [usize; 4] = [50, 100, 200, 400];
 /// Target throughput of the 3D wind configuration at N = 1000 and 5000 [node-steps/s] (issue 5).
 pub const TARGET_NODE_STEPS_PER_S: f64 = 2.0e8;
 
-/// Steps per repetition for a grid of `n` segments: about `node_steps` node-steps, at least 100 steps
-/// (timer resolution).
-pub fn steps_per_rep(n: usize, node_steps: f64) -> usize {
-    ((node_steps / (n + 1) as f64) as usize).max(100)
+/// Steps per repetition for `nodes` nodes: about `node_steps` node-steps, at least 100 steps (timer
+/// resolution).
+pub fn steps_per_rep(nodes: usize, node_steps: f64) -> usize {
+    ((node_steps / nodes as f64) as usize).max(100)
 }
+
+/// The calling thread's CPU time [s] ([`ohl::output::cpu_time`]); where the system has no thread clock,
+/// the wall time since the first call.
+pub fn cpu_clock_s() -> f64 {
+    static START: OnceLock<Instant> = OnceLock::new();
+    ohl::output::cpu_time::thread_cpu_time_s()
+        .unwrap_or_else(|| START.get_or_init(Instant::now).elapsed().as_secs_f64())
+}
+
+/// Longest CPU time of one repetition [s] ([`measure_kernel`] takes fewer steps than the node-step budget
+/// asks for a workload slower than that).
+pub const MAX_REP_S: f64 = 0.5;
 
 /// Longest stretch of steps timed from one initial state: 4000 steps are 13 s simulated at N = 50
 /// (longer undamped tension-only runs can go unstable, docs/paper_notes.md) and 0.1 s at N = 5000.
@@ -67,24 +88,26 @@ pub fn state_hash(s: &Explicit) -> u64 {
 pub struct KernelResult {
     /// configuration name
     pub config: String,
-    /// segments `N`
+    /// segments `N` (per span for a section or line)
     pub n: usize,
+    /// nodes stepped per step (every conductor's)
+    pub nodes: usize,
     /// steps per repetition
     pub steps: usize,
     /// repetitions
     pub reps: usize,
-    /// fastest repetition [s]
+    /// fastest repetition [CPU s]
     pub best_s: f64,
-    /// median repetition [s]
+    /// median repetition [CPU s]
     pub median_s: f64,
 }
 
 impl KernelResult {
-    /// Throughput of the fastest repetition [node-steps/s].
+    /// Throughput of the median repetition [node-steps per CPU second].
     pub fn node_steps_per_s(&self) -> f64 {
-        (self.n + 1) as f64 * self.steps as f64 / self.best_s
+        self.nodes as f64 * self.steps as f64 / self.median_s
     }
-    /// Time per node-step of the fastest repetition [ns].
+    /// Time per node-step of the median repetition [CPU ns].
     pub fn ns_per_node_step(&self) -> f64 {
         1e9 / self.node_steps_per_s()
     }
@@ -97,11 +120,21 @@ fn median(mut v: Vec<f64>) -> f64 {
 
 /// Time the explicit step of `config` at `n` segments: `reps` repetitions of [`steps_per_rep`] steps
 /// (in episodes of at most [`EPISODE_STEPS`] from the initial state; the clones are not timed), after one
-/// untimed warm-up repetition.
-pub fn measure_kernel(config: Config, n: usize, node_steps: f64, reps: usize) -> KernelResult {
+/// untimed warm-up repetition, on the thread's CPU clock ([`cpu_clock_s`]).
+pub fn measure_kernel(config: Workload, n: usize, node_steps: f64, reps: usize) -> KernelResult {
     let initial = config.solver(n);
-    let steps = steps_per_rep(n, node_steps);
-    let dt = initial.params().dt_s;
+    let nodes = initial.nodes();
+    // A slow workload (the short circuit's pair forces cost about 100 kernels) would take minutes at the
+    // budget of the kernel's: 100 probe steps (untimed) bound a repetition to about MAX_REP_S.
+    let what = format!("{} N = {n}", config.name());
+    let mut probe = initial.clone();
+    let t0 = cpu_clock_s();
+    for _ in 0..100 {
+        probe.step(&what);
+    }
+    let per_step = (cpu_clock_s() - t0) / 100.0;
+    let affordable = if per_step > 0.0 { (MAX_REP_S / per_step) as usize } else { usize::MAX };
+    let steps = steps_per_rep(nodes, node_steps).min(affordable.max(100));
     let mut times = Vec::with_capacity(reps);
     for rep in 0..=reps {
         // Episodes of at most EPISODE_STEPS steps, each from a fresh (untimed) clone of the initial state.
@@ -109,11 +142,11 @@ pub fn measure_kernel(config: Config, n: usize, node_steps: f64, reps: usize) ->
         while left > 0 {
             let k = left.min(EPISODE_STEPS);
             let mut s = initial.clone();
-            let t0 = Instant::now();
+            let t0 = cpu_clock_s();
             for _ in 0..k {
-                s.step(dt).unwrap_or_else(|e| panic!("{} N = {n}: {e}", config.name()));
+                s.step(&what);
             }
-            t += t0.elapsed().as_secs_f64();
+            t += cpu_clock_s() - t0;
             std::hint::black_box(&s);
             left -= k;
         }
@@ -124,6 +157,7 @@ pub fn measure_kernel(config: Config, n: usize, node_steps: f64, reps: usize) ->
     KernelResult {
         config: config.name().into(),
         n,
+        nodes,
         steps,
         reps,
         best_s: times.iter().copied().fold(f64::INFINITY, f64::min),
@@ -187,9 +221,9 @@ pub fn measure_run(n: usize, reps: usize, out_dir: &Path) -> Result<RunTiming, R
     let opts = RunOptions { out_dir: Some(out_dir.to_path_buf()), record: false };
     let (mut run_s, mut steps, mut rows) = (f64::INFINITY, 0, 0);
     for _ in 0..reps.max(1) {
-        let t0 = Instant::now();
+        let t0 = cpu_clock_s();
         let o = run(plan.clone(), &opts)?;
-        run_s = run_s.min(t0.elapsed().as_secs_f64());
+        run_s = run_s.min(cpu_clock_s() - t0);
         steps = o.solver.steps();
         rows = (o.summary.final_time_s / plan.sample_interval_s).round() as usize + 1;
     }
@@ -197,20 +231,20 @@ pub fn measure_run(n: usize, reps: usize, out_dir: &Path) -> Result<RunTiming, R
     let mut steps_only_s = f64::INFINITY;
     for _ in 0..reps.max(1) {
         let mut s = plan.solver.clone();
-        let t0 = Instant::now();
+        let t0 = cpu_clock_s();
         for _ in 0..steps {
             s.step(dt).unwrap_or_else(|e| panic!("weight release N = {n}: {e}"));
         }
-        steps_only_s = steps_only_s.min(t0.elapsed().as_secs_f64());
+        steps_only_s = steps_only_s.min(cpu_clock_s() - t0);
         std::hint::black_box(&s);
     }
     let mut s = plan.solver.clone();
     let calls = 200;
-    let t0 = Instant::now();
+    let t0 = cpu_clock_s();
     for _ in 0..calls {
         std::hint::black_box(s.diagnostics());
     }
-    let diagnostics_each_s = t0.elapsed().as_secs_f64() / calls as f64;
+    let diagnostics_each_s = (cpu_clock_s() - t0) / calls as f64;
     Ok(RunTiming { n, steps, run_s, steps_only_s, diagnostics_calls: rows, diagnostics_each_s })
 }
 
@@ -220,25 +254,64 @@ pub struct Primitives {
     /// core clock [Hz], from a chain of dependent double additions (latency 3 cycles on AMD Zen 2-4 and
     /// Intel Skylake and later, Agner Fog's instruction tables)
     pub clock_hz: f64,
-    /// square root of a double, throughput, as compiled here (packed if the loop vectorises) [cycles]
+    /// the instruction set the square roots and divisions were compiled for: the kernel's
+    /// ([`ohl::scheme::explicit::kernel_instruction_set`])
+    pub isa: &'static str,
+    /// square root of a double, throughput, in the kernel's instruction set (packed) [cycles]
     pub sqrt_cycles: f64,
-    /// division of doubles, throughput [cycles]
+    /// division of doubles, throughput, in the kernel's instruction set (packed) [cycles]
     pub div_cycles: f64,
 }
 
-#[inline(never)]
-fn sqrt_array(a: &[f64], out: &mut [f64]) {
+#[inline(always)]
+fn sqrt_body(a: &[f64], out: &mut [f64]) {
     for (o, x) in out.iter_mut().zip(a) {
         *o = x.sqrt();
     }
 }
 
-#[inline(never)]
-fn div_array(a: &[f64], out: &mut [f64]) {
+#[inline(always)]
+fn div_body(a: &[f64], out: &mut [f64]) {
     for (o, x) in out.iter_mut().zip(a) {
         *o = 1.0 / x;
     }
 }
+
+/// `body` compiled for the baseline, AVX2 and AVX-512 (F, DQ, VL), as the kernel's passes are
+/// (`src/scheme/explicit.rs`), and a function running the copy of the instruction set named.
+macro_rules! isa_copies {
+    ($name:ident, $body:ident) => {
+        fn $name(isa: &str, a: &[f64], out: &mut [f64]) {
+            #[inline(never)]
+            fn baseline(a: &[f64], out: &mut [f64]) {
+                $body(a, out)
+            }
+            #[cfg(target_arch = "x86_64")]
+            #[inline(never)]
+            #[target_feature(enable = "avx2")]
+            fn avx2(a: &[f64], out: &mut [f64]) {
+                $body(a, out)
+            }
+            #[cfg(target_arch = "x86_64")]
+            #[inline(never)]
+            #[target_feature(enable = "avx2,avx512f,avx512dq,avx512vl")]
+            fn avx512(a: &[f64], out: &mut [f64]) {
+                $body(a, out)
+            }
+            #[cfg(target_arch = "x86_64")]
+            match isa {
+                // SAFETY: the kernel reports "avx512" or "avx2" only where the processor has them.
+                "avx512" => return unsafe { avx512(a, out) },
+                "avx2" => return unsafe { avx2(a, out) },
+                _ => {}
+            }
+            baseline(a, out)
+        }
+    };
+}
+
+isa_copies!(sqrt_array, sqrt_body);
+isa_copies!(div_array, div_body);
 
 #[inline(never)]
 fn add_chain(n: usize, y: f64) -> f64 {
@@ -249,20 +322,24 @@ fn add_chain(n: usize, y: f64) -> f64 {
     x
 }
 
-fn best_of(reps: usize, mut f: impl FnMut()) -> f64 {
-    (0..reps)
-        .map(|_| {
-            let t0 = Instant::now();
-            f();
-            t0.elapsed().as_secs_f64()
-        })
-        .fold(f64::INFINITY, f64::min)
+/// The median CPU time of `reps` runs of `f` [s].
+fn median_of(reps: usize, mut f: impl FnMut()) -> f64 {
+    median(
+        (0..reps)
+            .map(|_| {
+                let t0 = cpu_clock_s();
+                f();
+                cpu_clock_s() - t0
+            })
+            .collect(),
+    )
 }
 
-/// Measure [`Primitives`] (about 0.1 s).
+/// Measure [`Primitives`] (about 0.2 s) on the thread's CPU clock, the square roots and divisions in the
+/// copy compiled for the kernel's instruction set.
 pub fn measure_primitives() -> Primitives {
     let chain = 20_000_000;
-    let t_add = best_of(5, || {
+    let t_add = median_of(7, || {
         std::hint::black_box(add_chain(std::hint::black_box(chain), std::hint::black_box(1.0)));
     });
     let clock_hz = 3.0 * chain as f64 / t_add;
@@ -270,19 +347,20 @@ pub fn measure_primitives() -> Primitives {
     let a: Vec<f64> = (0..1024).map(|i| 1.0 + i as f64 * 1e-3).collect();
     let mut out = vec![0.0; a.len()];
     let rounds = 2000;
+    let isa = ohl::scheme::explicit::kernel_instruction_set();
     let per = |t: f64| t * clock_hz / (rounds * a.len()) as f64;
-    let t_sqrt = best_of(5, || {
+    let t_sqrt = median_of(7, || {
         for _ in 0..rounds {
-            sqrt_array(std::hint::black_box(&a), &mut out);
+            sqrt_array(isa, std::hint::black_box(&a), &mut out);
         }
     });
-    let t_div = best_of(5, || {
+    let t_div = median_of(7, || {
         for _ in 0..rounds {
-            div_array(std::hint::black_box(&a), &mut out);
+            div_array(isa, std::hint::black_box(&a), &mut out);
         }
     });
     std::hint::black_box(&out);
-    Primitives { clock_hz, sqrt_cycles: per(t_sqrt), div_cycles: per(t_div) }
+    Primitives { clock_hz, isa, sqrt_cycles: per(t_sqrt), div_cycles: per(t_div) }
 }
 
 /// Where and when a measurement was taken.
@@ -342,10 +420,11 @@ pub fn machine() -> Machine {
 pub type ThroughputRow = (String, usize, f64);
 
 /// Columns of the kernel CSV.
-pub const KERNEL_HEADER: [&str; 14] = [
+pub const KERNEL_HEADER: [&str; 15] = [
     "label",
     "config",
     "n",
+    "nodes",
     "steps_per_rep",
     "reps",
     "best_s",
@@ -375,6 +454,7 @@ pub fn write_kernel_csv(
             label.to_string(),
             r.config.clone(),
             r.n.to_string(),
+            r.nodes.to_string(),
             r.steps.to_string(),
             r.reps.to_string(),
             format!("{:.6e}", r.best_s),
@@ -462,7 +542,7 @@ pub fn plot_throughput(
     stem: &Path,
 ) -> Result<(), plot::PlotError> {
     let mut series = Vec::new();
-    for (ci, c) in Config::ALL.iter().enumerate() {
+    for (ci, c) in workload::WIRE.iter().enumerate() {
         let pts = |rows: &[ThroughputRow]| -> Vec<(f64, f64)> {
             rows.iter().filter(|r| r.0 == c.name()).map(|r| (r.1 as f64, r.2)).collect()
         };
@@ -475,7 +555,7 @@ pub fn plot_throughput(
         "target, wind_3d (issue 5)",
         vec![(1000.0, TARGET_NODE_STEPS_PER_S), (5000.0, TARGET_NODE_STEPS_PER_S)],
         Style::Markers,
-        Config::ALL.len(),
+        workload::WIRE.len(),
     ));
     let chart = Chart {
         title: "Explicit step, one thread".into(),

@@ -1,0 +1,244 @@
+//! The workloads of `ohl bench`: the library's kernel configurations ([`Config`]) and, around the same
+//! kernel, the elements a section or a line adds, each built by the library from a committed case file
+//! (so the bench times what `ohl run` and `ohl shortcircuit` step), with its grid set by `N` and its
+//! events, initial static solve and output left out (the timed part is the step alone):
+//!
+//! - `ground_contact`: [`Config::PlaneWeight`] on a level ground at the chord's height (restitution 0.2,
+//!   friction 0.5, as case a): every node is on the ground from the first step, the contact pass
+//!   ([`ohl::scheme::contact`]) acts on every node;
+//! - `section_strings`: case b's 5 x 400 m Drake section with its 4 suspension insulator strings
+//!   (`cases/b_ice_shedding.toml`), `N` segments per span;
+//! - `bundle_spacers` / `bundle_bare`: case g's quad bundle of Drake over 3 x 400 m with its 18 spacers
+//!   (six arms each) and its strings (`cases/g_quad_bundle_break.toml`), and the same without spacers;
+//! - `short_circuit` / `short_circuit_bare`: case j's three distribution phases with the short circuit's
+//!   pair forces (`cases/j_distribution_reclose.toml`, [`ohl::line::electromagnetic`]) on from `t = 0`
+//!   for 10 s (the longest the scenario allows, longer than any timed episode), and the same line
+//!   without the short circuit;
+//!
+//! Interphase spacers are links of the library's model ([`ohl::line::LinkKind::InterphaseSpacer`]) that
+//! the line scenarios do not offer, so no committed case has one; they are not timed here.
+//!
+//! The difference of a pair's times per node-step is the element's cost per node-step.
+
+use ohl::scenario;
+pub use ohl::scheme::configs::Config;
+use ohl::scheme::{Explicit, Ground, LineExplicit};
+
+/// A workload of `ohl bench`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Workload {
+    /// a kernel configuration of the library, `N` segments
+    Kernel(Config),
+    /// plane_weight lying on a level ground
+    GroundContact,
+    /// case b's section with suspension strings, `N` segments per span
+    SectionStrings,
+    /// case g's quad bundle, with its spacers or without
+    Bundle {
+        /// with the spacers
+        spacers: bool,
+    },
+    /// case j's three phases, with the short circuit's pair forces or without
+    ShortCircuit {
+        /// with the short circuit
+        forces: bool,
+    },
+}
+
+/// The workloads with `N` the segments of one wire, in table order.
+pub const WIRE: [Workload; 5] = [
+    Workload::Kernel(Config::PlaneWeight),
+    Workload::Kernel(Config::Wind3d),
+    Workload::Kernel(Config::ViscousSmoothed),
+    Workload::Kernel(Config::TwoMaterialPlane),
+    Workload::GroundContact,
+];
+
+/// The workloads with `N` the segments per span of a section or line, in table order.
+pub const LINE: [Workload; 5] = [
+    Workload::SectionStrings,
+    Workload::Bundle { spacers: true },
+    Workload::Bundle { spacers: false },
+    Workload::ShortCircuit { forces: true },
+    Workload::ShortCircuit { forces: false },
+];
+
+impl Workload {
+    /// Short name used in tables and files.
+    pub fn name(self) -> &'static str {
+        match self {
+            Workload::Kernel(c) => c.name(),
+            Workload::GroundContact => "ground_contact",
+            Workload::SectionStrings => "section_strings",
+            Workload::Bundle { spacers: true } => "bundle_spacers",
+            Workload::Bundle { spacers: false } => "bundle_bare",
+            Workload::ShortCircuit { forces: true } => "short_circuit",
+            Workload::ShortCircuit { forces: false } => "short_circuit_bare",
+        }
+    }
+
+    /// Parse a name given by [`Workload::name`].
+    pub fn from_name(s: &str) -> Option<Workload> {
+        WIRE.into_iter().chain(LINE).find(|w| w.name() == s)
+    }
+
+    /// The solver of this workload at `n` segments (per span for a section or line), at `t = 0`.
+    pub fn solver(self, n: usize) -> Solver {
+        match self {
+            Workload::Kernel(c) => Solver::Wire(c.solver(n)),
+            Workload::GroundContact => {
+                let mut s = Config::PlaneWeight.solver(n);
+                s.set_ground(Some(Ground::level(0.0, 0.2, 0.5)));
+                Solver::Wire(s)
+            }
+            Workload::SectionStrings => {
+                let mut t = case_table(include_str!("../../../cases/b_ice_shedding.toml"));
+                set(&mut t, &["section"], "segments_per_span", n);
+                let text = toml::to_string(&t).expect("a TOML table serialises");
+                let sc = scenario::parse(&text, "section_strings").unwrap_or_else(|e| panic!("{e}"));
+                Solver::Wire(scenario::plan(&sc, "section_strings").unwrap_or_else(|e| panic!("{e}")).solver)
+            }
+            Workload::Bundle { spacers } => {
+                let mut t = case_table(include_str!("../../../cases/g_quad_bundle_break.toml"));
+                for_conductors(&mut t, |c| {
+                    set(c, &["section"], "segments_per_span", n);
+                    if !spacers {
+                        let b = c.get_mut("bundle").and_then(|b| b.as_table_mut()).expect("case g has a bundle");
+                        b.insert("spacers".into(), toml::Value::Array(Vec::new()));
+                    }
+                });
+                Solver::Line(line(&t, self.name()))
+            }
+            Workload::ShortCircuit { forces } => {
+                let mut t = case_table(include_str!("../../../cases/j_distribution_reclose.toml"));
+                for_conductors(&mut t, |c| set(c, &["section"], "segments_per_span", n));
+                if forces {
+                    let sc = t.get_mut("short_circuit").and_then(|s| s.as_table_mut()).expect("case j's fault");
+                    sc.remove("reclose");
+                    sc.insert("start_s".into(), toml::Value::Float(0.0));
+                    sc.insert("duration_s".into(), toml::Value::Float(10.0));
+                } else {
+                    t.remove("short_circuit");
+                }
+                Solver::Line(line(&t, self.name()))
+            }
+        }
+    }
+}
+
+/// A case file's table without what the timed steps do not use: its events, its initial static solve
+/// (the run starts from the strung shape), its snapshot times.
+fn case_table(text: &str) -> toml::Table {
+    let mut t: toml::Table = text.parse().expect("a committed case file is TOML");
+    for k in ["events", "initial"] {
+        t.remove(k);
+    }
+    if let Some(o) = t.get_mut("output").and_then(|o| o.as_table_mut()) {
+        o.remove("snapshot_times_s");
+    }
+    t.insert("duration".into(), toml::Value::Table(toml::Table::from_iter([("end_time_s".into(), 1.0e3.into())])));
+    t
+}
+
+fn set(t: &mut toml::Table, path: &[&str], key: &str, n: usize) {
+    let mut at = t;
+    for p in path {
+        at = at.get_mut(*p).and_then(|v| v.as_table_mut()).unwrap_or_else(|| panic!("no table {p}"));
+    }
+    at.insert(key.into(), toml::Value::Integer(n as i64));
+}
+
+fn for_conductors(t: &mut toml::Table, mut f: impl FnMut(&mut toml::Table)) {
+    let line = t.get_mut("line").and_then(|l| l.as_table_mut()).expect("a line case");
+    let cs = line.get_mut("conductors").and_then(|c| c.as_array_mut()).expect("conductors");
+    for c in cs {
+        let c = c.as_table_mut().expect("a conductor table");
+        c.remove("events");
+        f(c);
+    }
+}
+
+fn line(t: &toml::Table, name: &str) -> LineExplicit {
+    let text = toml::to_string(t).expect("a TOML table serialises");
+    let s = scenario::line::parse(&text, name).unwrap_or_else(|e| panic!("{e}"));
+    scenario::line::plan(&s, name).unwrap_or_else(|e| panic!("{e}")).line
+}
+
+/// The solver of a workload: one wire or a line.
+#[derive(Clone, Debug)]
+#[allow(clippy::large_enum_variant)] // two per measurement, cloned per episode: the size does not matter
+pub enum Solver {
+    /// one wire (a conductor or a section)
+    Wire(Explicit),
+    /// a line of several conductors
+    Line(LineExplicit),
+}
+
+impl Solver {
+    /// Nodes stepped per step (every conductor's).
+    pub fn nodes(&self) -> usize {
+        match self {
+            Solver::Wire(s) => s.wire().nodes(),
+            Solver::Line(l) => l.conductors().iter().map(|c| c.wire().nodes()).sum(),
+        }
+    }
+
+    /// The nominal step [s].
+    pub fn dt_s(&self) -> f64 {
+        match self {
+            Solver::Wire(s) => s.params().dt_s,
+            Solver::Line(l) => l.params().dt_s,
+        }
+    }
+
+    /// One nominal step; panics if it goes unstable (for these workloads a bug).
+    pub fn step(&mut self, what: &str) {
+        let dt = self.dt_s();
+        match self {
+            Solver::Wire(s) => s.step(dt).unwrap_or_else(|e| panic!("{what}: {e}")),
+            Solver::Line(l) => l.step(dt).unwrap_or_else(|e| panic!("{what}: {e}")),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Each workload is the grid it claims (nodes from the case files' spans and conductors: case b one
+    /// conductor over 5 spans, case g four sub-conductors over 3, case j three phases over 1), steps
+    /// stably, and the element a pair differs by acts: the spacers and the short circuit's forces move
+    /// the conductors away from the bare line's motion, the ground holds every node at its height.
+    #[test]
+    fn workloads_are_their_grids_and_their_elements_act() {
+        let n = 10;
+        let expected = [
+            (Workload::SectionStrings, 5 * n + 1),
+            (Workload::Bundle { spacers: true }, 4 * (3 * n + 1)),
+            (Workload::Bundle { spacers: false }, 4 * (3 * n + 1)),
+            (Workload::ShortCircuit { forces: true }, 3 * (n + 1)),
+            (Workload::ShortCircuit { forces: false }, 3 * (n + 1)),
+            (Workload::GroundContact, n + 1),
+        ];
+        let mut states = Vec::new();
+        for (w, nodes) in expected {
+            let mut s = w.solver(n);
+            assert_eq!(s.nodes(), nodes, "{}", w.name());
+            for _ in 0..200 {
+                s.step(w.name());
+            }
+            assert_eq!(Workload::from_name(w.name()), Some(w));
+            states.push(s);
+        }
+        let wires = |s: &Solver| -> Vec<Vec<f64>> {
+            match s {
+                Solver::Wire(w) => vec![w.wire().x[2].clone()],
+                Solver::Line(l) => l.conductors().iter().map(|c| c.wire().x[2].clone()).collect(),
+            }
+        };
+        assert_ne!(wires(&states[1]), wires(&states[2]), "the spacers change the bundle's motion");
+        assert_ne!(wires(&states[3]), wires(&states[4]), "the pair forces change the phases' motion");
+        let ground = &wires(&states[5])[0];
+        assert!(ground.iter().all(|&x| x >= 0.0), "on the ground at 0 m: {ground:?}");
+    }
+}
