@@ -12,6 +12,7 @@
 #                by build_moordyn.sh when it has no moordyn module or REBUILD=1
 #   SEGMENTS     numbers of segments (default "50 100 200")
 #   REPS         timed repetitions, the fastest counts (default 3)
+#   SCHEME       MoorDyn's time scheme (tScheme; default RK2, MoorDyn's default)
 #   WORK         scratch directory for inputs and outputs (default /tmp/ohl-moordyn-work)
 #   CSV          result table (default figures/bench/moordyn_ratio.csv)
 set -euo pipefail
@@ -33,4 +34,5 @@ fi
 echo "load average before the runs: $(cut -d' ' -f1-3 /proc/loadavg)"
 # shellcheck disable=SC2086
 "$venv/bin/python" "$here/moordyn_case.py" --ohl "$ohl" --segments $segments --reps "${REPS:-3}" \
+    --scheme "${SCHEME:-RK2}" \
     --out "$work" --csv "$csv"
