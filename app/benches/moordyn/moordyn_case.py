@@ -1,17 +1,20 @@
 """Side by side: the paper's weight release (paper_cases/fig2b_catenary.toml) in ohl and in MoorDyn.
 
 The physical problem (paper section 4.2, Fig. 2b): a wire of span l = 160 m between two supports at the
-same height, unstretched length equal to the span (straight start), 1.0 kg/m, EA = 792000.54 N, released
-at rest under gravity g = 9.81 m/s^2; it falls and settles onto the elastic catenary (260.8 s simulated).
+same height, unstretched length equal to the span (straight start), 1.0 kg/m, EA = 792000.54 N,
+Kelvin-Voigt friction eta = 316.76 N s, released at rest under gravity g = 9.81 m/s^2; 260.8 s simulated.
 
 For each number of segments N this script
-  1. writes a copy of the case with `segments = N` and runs `OHL run` on it, reading `cpu_time_s` (CPU
-     time of the step loop) and the time series;
-  2. writes the same problem as a MoorDyn v2 input file (README of this folder: the mapping), finds the
-     largest stable MoorDyn step dtM on this grid by bisection, and runs MoorDyn's step loop in-process
-     for the same simulated time, timing the CPU time (time.process_time) of the loop of Step calls only;
-  3. compares both with the exact elastic catenary (Irvine, Cable Structures (1981), eq. 2.16-2.19 for
-     supports at one level) and with each other, and appends a row to the CSV.
+  1. computes a reference of the first --window-s seconds: the same chain integrated by MoorDyn RK4 at
+     Courant 0.05, every step recorded (and ohl at Courant 0.05 against it: the two discretise the same
+     ODE system);
+  2. runs `OHL run` on a copy of the case with `segments = N` and `smoothing = 0` (MoorDyn has no velocity
+     smoothing), and on the case as written, reading `cpu_time_s` (CPU time of the step loop);
+  3. writes the problem as a MoorDyn v2 input (figures/bench/README.md: the mapping), finds MoorDyn's
+     largest stable step dtM on this grid by bisection on the whole run, and times MoorDyn's step loop
+     in-process (time.process_time around one Step call over the run);
+  4. measures the mid-span sag error of both against the reference, finds the MoorDyn step that is as
+     accurate as ohl and times it too, and writes one CSV row.
 
 Usage (run.sh calls it): python moordyn_case.py --ohl BIN --segments 50 100 200 --out DIR --csv FILE
 """
@@ -43,7 +46,7 @@ T_END_S = 260.8
 # MoorDyn needs a diameter for its hydrodynamic terms, which are all switched off here (rho = 0, Cd =
 # Ca = 0); any positive value gives the same motion. The value of README.md's example wire.
 DIAMETER_M = 0.01553
-# Output interval of both runs [s] (the case's sample_interval_s); MoorDyn is called once per interval.
+# Output interval [s] (the case's sample_interval_s): the recorded MoorDyn run calls Step once per interval.
 DT_OUT_S = 0.02
 
 
