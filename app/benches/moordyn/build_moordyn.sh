@@ -27,7 +27,8 @@ python3 -m venv "$venv"
 
 src="$venv/moordyn-src"
 mkdir -p "$src"
-# Only what the library and the wrapper need (a shallow mirror may lack the large test data).
+# Only what the library and the wrapper need. A mirror without the large test data makes git print
+# "error: invalid object ... tests/..." here and carry on: those files are not extracted or needed.
 git -C "$src_git" archive "$tag" CMakeLists.txt cmake source wrappers README.md LICENSE.txt | tar -x -C "$src"
 cd "$src"
 # The wheel workflow's recipe: the wheel's setup.py, version and Eigen data at the root.

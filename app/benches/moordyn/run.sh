@@ -29,8 +29,9 @@ segments=${SEGMENTS:-50 100 200}
 if [ "${REBUILD:-0}" = 1 ] || ! (cd / && "$venv/bin/python" -c 'import moordyn' 2>/dev/null); then
     [ -n "${MOORDYN_GIT:-}" ] || { echo "run.sh: set MOORDYN_GIT to a MoorDyn git repository to build it" >&2; exit 2; }
     bash "$here/build_moordyn.sh" "$venv" "$MOORDYN_GIT" "${MOORDYN_TAG:-v2.7.1}"
+elif [ -f "$venv/build_time.txt" ]; then
+    cat "$venv/build_time.txt"
 fi
-[ -f "$venv/build_time.txt" ] && cat "$venv/build_time.txt"
 echo "load average before the runs: $(cut -d' ' -f1-3 /proc/loadavg)"
 # shellcheck disable=SC2086
 "$venv/bin/python" "$here/moordyn_case.py" --ohl "$ohl" --segments $segments --reps "${REPS:-3}" \
