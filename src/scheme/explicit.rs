@@ -117,7 +117,7 @@ pub struct Instability {
 
 /// Whether the passes compiled for AVX2 may run here: the processor reports AVX2, and the environment
 /// variable `OHL_NO_AVX2` is not set (to measure or compare the baseline copy).
-fn avx2_available() -> bool {
+pub(crate) fn avx2_available() -> bool {
     #[cfg(target_arch = "x86_64")]
     {
         std::is_x86_feature_detected!("avx2") && std::env::var_os("OHL_NO_AVX2").is_none()
