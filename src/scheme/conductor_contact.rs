@@ -16,7 +16,7 @@
 //! folds back on itself it can miss a nearer segment (module doc of [`crate::line::contact`]).
 
 use super::explicit::Explicit;
-use crate::element::pair::closest_points;
+use crate::element::pair::point_segment;
 use crate::line::contact::ConductorContact;
 
 /// The first contact of a run.
@@ -146,11 +146,9 @@ impl ContactState {
                     let (p0, p1) = (wf.position(i), wf.position(i + 1));
                     let x = [0, 1, 2].map(|c| p0[c] + s * (p1[c] - p0[c]));
                     // The nearest point of segment j to x: the pair element's closest points with x as a
-                    // segment of zero length.
-                    let seg = |j: usize| -> (f64, f64) {
-                        let (d2, _, u) = closest_points(x, x, wt.position(j), wt.position(j + 1));
-                        (d2, u)
-                    };
+                    // segment of zero length (`point_segment`: the same bits, without the zero segment's
+                    // arithmetic).
+                    let seg = |j: usize| -> (f64, f64) { point_segment(x, wt.position(j), wt.position(j + 1)) };
                     // Walk to the nearest segment from the last level's.
                     let mut j = (*hint).min(st - 1);
                     let mut best = seg(j);
