@@ -195,8 +195,7 @@ fn piece(
     a1: [f64; 3],
     b0: [f64; 3],
     db: [f64; 3],
-    u_lo: f64,
-    u_hi: f64,
+    [u_lo, u_hi]: [f64; 2],
     tot: &mut [f64; 3],
     mom: &mut [f64; 3],
 ) {
@@ -260,7 +259,7 @@ fn pair_force_lanes(
     let db = sub(b1, b0);
     let mut tot = [0.0; 3];
     let mut mom = [0.0; 3];
-    let mut piece = |u_lo: f64, u_hi: f64| piece(a0, a1, b0, db, u_lo, u_hi, &mut tot, &mut mom);
+    let mut piece = |u_lo: f64, u_hi: f64| piece(a0, a1, b0, db, [u_lo, u_hi], &mut tot, &mut mom);
     match shared {
         Some(end) => {
             // The rest of the pair must stay clear of A: B folding back along A overlaps it.
