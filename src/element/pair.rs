@@ -48,9 +48,57 @@ pub fn closest_points(p0: [f64; 3], p1: [f64; 3], q0: [f64; 3], q1: [f64; 3]) ->
     (dot(g, g), s, u)
 }
 
+/// The nearest point of the segment `q0 q1` to the point `x` [m]: `(distance^2 [m^2], u)` with the point
+/// `q0 + u (q1 - q0)`; for a finite `x` the same bits as [`closest_points`]`(x, x, q0, q1)` (its first
+/// segment of zero length: `d1 = x - x = 0`, `a = 0`, so `s = 0` and `u = clamp(f / e)`, or 0 for a point
+/// `q0 = q1`; its `p = x + 0 * 0` differs from `x` at most in the sign of a zero, which the square
+/// removes). A non-finite `x` is passed to [`closest_points`] itself.
+#[inline(always)]
+pub fn point_segment(x: [f64; 3], q0: [f64; 3], q1: [f64; 3]) -> (f64, f64) {
+    if !(x[0].is_finite() && x[1].is_finite() && x[2].is_finite()) {
+        let (d2, _, u) = closest_points(x, x, q0, q1);
+        return (d2, u);
+    }
+    let d2 = [q1[0] - q0[0], q1[1] - q0[1], q1[2] - q0[2]];
+    let r = [x[0] - q0[0], x[1] - q0[1], x[2] - q0[2]];
+    let e = d2[0] * d2[0] + d2[1] * d2[1] + d2[2] * d2[2];
+    let f = d2[0] * r[0] + d2[1] * r[1] + d2[2] * r[2];
+    let u = if e <= 0.0 { 0.0 } else { (f / e).clamp(0.0, 1.0) };
+    let g = [x[0] - (q0[0] + u * d2[0]), x[1] - (q0[1] + u * d2[1]), x[2] - (q0[2] + u * d2[2])];
+    (g[0] * g[0] + g[1] * g[1] + g[2] * g[2], u)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+    /// The point version gives the bits of the segment version with a zero-length first segment, over
+    /// pseudo-random points and segments (near, far, at coordinates up to 1e5 m, degenerate segments,
+    /// zeros of either sign, infinities and NaN).
+    #[test]
+    fn point_segment_is_closest_points_of_a_point() {
+        let mut state = 0x9e37_79b9_7f4a_7c15_u64;
+        let mut rnd = move || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
+        };
+        let specials = [0.0, -0.0, f64::INFINITY, f64::NEG_INFINITY, f64::NAN];
+        for case in 0..50000 {
+            let scale = [1e-3, 1.0, 30.0, 1e5][case % 4];
+            let mut pt = || [rnd() * scale, rnd() * scale, rnd() * scale];
+            let (mut x, q0, mut q1) = (pt(), pt(), pt());
+            match (case / 4) % 5 {
+                0 => q1 = q0,
+                1 => x = [0, 1, 2].map(|k| q0[k] + 0.5 * (q1[k] - q0[k])),
+                2 => x[case % 3] = specials[(case / 20) % specials.len()],
+                _ => {}
+            }
+            let (d2, _, u) = closest_points(x, x, q0, q1);
+            let (e2, v) = point_segment(x, q0, q1);
+            assert_eq!((e2.to_bits(), v.to_bits()), (d2.to_bits(), u.to_bits()), "case {case}: {x:?} {q0:?} {q1:?}");
+        }
+    }
 
     /// Brute force over a 201 x 201 grid of (s, u): the exact minimum is at most the grid's, and the grid's
     /// exceeds it by at most the distance moved by half a grid step on each segment (|d1| + |d2|) / 400.

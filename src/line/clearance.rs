@@ -66,6 +66,20 @@ pub struct Scratch {
     last: Option<(usize, usize)>,
     /// bounding box of each segment of `b` ([`segment_box`])
     boxes: Vec<[f64; 6]>,
+    /// the intact segments of `b` in `order`, with their `lo`, `hi` and box side by side
+    cand: Vec<Candidate>,
+    /// their `lo` in that order (the windows' keys)
+    cand_lo: Vec<f64>,
+}
+
+/// A segment of `b` in the sorted order of [`least_distance`]: its index, the interval of its projection
+/// and its bounding box, read together in the window.
+#[derive(Clone, Copy, Debug, Default)]
+struct Candidate {
+    j: usize,
+    lo: f64,
+    hi: f64,
+    bx: [f64; 6],
 }
 
 /// The least distance between the intact segments of conductors `a` and `b`; `None` if either has none.
@@ -77,7 +91,7 @@ pub fn least_distance(a: &Wire, b: &Wire, scratch: &mut Scratch) -> Option<Close
     let hn = (h[0] * h[0] + h[1] * h[1]).sqrt();
     let e = if hn > 0.0 { [h[0] / hn, h[1] / hn] } else { [0.0, 1.0] };
     let proj = |w: &Wire, i: usize| e[0] * w.x[0][i] + e[1] * w.x[1][i];
-    let Scratch { order, lo, hi, last, boxes } = scratch;
+    let Scratch { order, lo, hi, last, boxes, cand, cand_lo } = scratch;
     lo.clear();
     hi.clear();
     boxes.clear();
@@ -108,6 +122,10 @@ pub fn least_distance(a: &Wire, b: &Wire, scratch: &mut Scratch) -> Option<Close
     if order.is_empty() || a.intact.iter().all(|&x| x <= 0.0) {
         return None;
     }
+    cand.clear();
+    cand.extend(order.iter().map(|&j| Candidate { j, lo: lo[j], hi: hi[j], bx: boxes[j] }));
+    cand_lo.clear();
+    cand_lo.extend(cand.iter().map(|c| c.lo));
     // Upper bound: the distance between a few corresponding nodes.
     let mut best2 = f64::INFINITY;
     let mut found: Option<Closest> = None;
@@ -149,19 +167,20 @@ pub fn least_distance(a: &Wire, b: &Wire, scratch: &mut Scratch) -> Option<Close
         // (`lo` is sorted along `order`, so each predicate holds on a prefix: its partition point is
         // unique): a few steps where `a` runs along the chord, a binary search beyond.
         let (below, above) = (alo - best - ext_b, ahi + best);
-        let first = walk_partition(order, |j| lo[j] < below, &mut first_at, sorted);
-        let last = walk_partition(order, |j| lo[j] <= above, &mut last_at, sorted);
+        let first = walk_partition(cand_lo, |v| v < below, &mut first_at, sorted);
+        let last = walk_partition(cand_lo, |v| v <= above, &mut last_at, sorted);
         let (p0, p1) = (a.position(i), a.position(i + 1));
         let p_box = segment_box(p0, p1);
-        for &j in &order[first..last.max(first)] {
-            if lo[j] > ahi + best || hi[j] < alo - best {
+        for c in &cand[first..last.max(first)] {
+            if c.lo > ahi + best || c.hi < alo - best {
                 continue;
             }
             // A pair whose computed distance cannot be below the best so far would not be taken: passed
             // over without computing it.
-            if found.is_some() && box_gap2(&p_box, &boxes[j], slack) > best2 {
+            if found.is_some() && box_gap2(&p_box, &c.bx, slack) > best2 {
                 continue;
             }
+            let j = c.j;
             let (q0, q1) = (b.position(j), b.position(j + 1));
             let (d2, s, u) = closest_points(p0, p1, q0, q1);
             if found.is_none() || d2 < best2 {
@@ -200,9 +219,9 @@ fn box_gap2(p: &[f64; 6], q: &[f64; 6], slack: f64) -> f64 {
         let (plo, phi, qlo, qhi) = (p[2 * k], p[2 * k + 1], q[2 * k], q[2 * k + 1]);
         let (after, before) = (qlo - phi, plo - qhi);
         let gap = if after > before { after } else { before } - slack;
-        if gap > 0.0 {
-            g2 += gap * gap;
-        }
+        // Branch-free: a gap not above zero (or NaN) adds +0, which leaves the sum (>= +0) unchanged.
+        let gap = if gap > 0.0 { gap } else { 0.0 };
+        g2 += gap * gap;
     }
     g2 * (1.0 - 1.0e-9)
 }
@@ -217,37 +236,37 @@ fn segment_box(p0: [f64; 3], p1: [f64; 3]) -> [f64; 6] {
     b
 }
 
-/// `order.partition_point(|&j| pred(j))` for a predicate that holds on a prefix of `order` (when
-/// `sorted`): by walking from the previous answer `at` when the answer is within a few places of it, by
-/// binary search otherwise (and always if not `sorted`); `at` becomes the answer.
+/// `keys.partition_point(|&v| pred(v))` for a predicate that holds on a prefix of `keys` (when `sorted`):
+/// by walking from the previous answer `at` when the answer is within a few places of it, by binary
+/// search otherwise (and always if not `sorted`); `at` becomes the answer.
 #[inline]
-fn walk_partition(order: &[usize], pred: impl Fn(usize) -> bool, at: &mut usize, sorted: bool) -> usize {
+fn walk_partition(keys: &[f64], pred: impl Fn(f64) -> bool, at: &mut usize, sorted: bool) -> usize {
     const STEPS: usize = 8;
-    let n = order.len();
+    let n = keys.len();
     let mut k = (*at).min(n);
     if sorted {
-        if k < n && pred(order[k]) {
+        if k < n && pred(keys[k]) {
             // forwards: the answer is after k
             let stop = (k + STEPS).min(n);
             k += 1;
-            while k < stop && pred(order[k]) {
+            while k < stop && pred(keys[k]) {
                 k += 1;
             }
-            if k < n && k == stop && pred(order[k]) {
-                k = order.partition_point(|&j| pred(j));
+            if k < n && k == stop && pred(keys[k]) {
+                k = keys.partition_point(|&v| pred(v));
             }
         } else {
             // backwards: the answer is k or before
             let stop = k.saturating_sub(STEPS);
-            while k > stop && !pred(order[k - 1]) {
+            while k > stop && !pred(keys[k - 1]) {
                 k -= 1;
             }
-            if k > 0 && k == stop && !pred(order[k - 1]) {
-                k = order.partition_point(|&j| pred(j));
+            if k > 0 && k == stop && !pred(keys[k - 1]) {
+                k = keys.partition_point(|&v| pred(v));
             }
         }
     } else {
-        k = order.partition_point(|&j| pred(j));
+        k = keys.partition_point(|&v| pred(v));
     }
     *at = k;
     k
@@ -410,6 +429,232 @@ mod tests {
         Wire::new(c, xs, vec![len / n as f64; n], 1.0)
     }
 
+    /// [`least_distance`] as it was before its candidates were stored side by side and the box bound made
+    /// branch-free (commit 6ea28af), for the bitwise test below.
+    #[derive(Default)]
+    struct ScratchBefore {
+        order: Vec<usize>,
+        lo: Vec<f64>,
+        hi: Vec<f64>,
+        last: Option<(usize, usize)>,
+        boxes: Vec<[f64; 6]>,
+    }
+
+    fn least_distance_before(a: &Wire, b: &Wire, scratch: &mut ScratchBefore) -> Option<Closest> {
+        let (na, nb) = (a.segments(), b.segments());
+        // Horizontal direction of a's chord (x2 if the chord is vertical).
+        let (pa, pz) = (a.position(0), a.position(na));
+        let h = [pz[0] - pa[0], pz[1] - pa[1]];
+        let hn = (h[0] * h[0] + h[1] * h[1]).sqrt();
+        let e = if hn > 0.0 { [h[0] / hn, h[1] / hn] } else { [0.0, 1.0] };
+        let proj = |w: &Wire, i: usize| e[0] * w.x[0][i] + e[1] * w.x[1][i];
+        let ScratchBefore { order, lo, hi, last, boxes } = scratch;
+        lo.clear();
+        hi.clear();
+        boxes.clear();
+        boxes.extend((0..nb).map(|j| segment_box(b.position(j), b.position(j + 1))));
+        let mut ext_b = 0.0_f64;
+        for j in 0..nb {
+            let (p, q) = (proj(b, j), proj(b, j + 1));
+            lo.push(p.min(q));
+            hi.push(p.max(q));
+            ext_b = ext_b.max((p - q).abs());
+        }
+        // The intact segments sorted by `lo`: insertion sort from the last order (nearly sorted after one
+        // step: linear time), rebuilt when the segments changed (a break).
+        let intact = (0..nb).filter(|&j| b.intact[j] > 0.0).count();
+        if order.len() != intact || order.iter().any(|&j| j >= nb || b.intact[j] <= 0.0) {
+            order.clear();
+            order.extend((0..nb).filter(|&j| b.intact[j] > 0.0));
+        }
+        for i in 1..order.len() {
+            let (v, key) = (order[i], lo[order[i]]);
+            let mut k = i;
+            while k > 0 && lo[order[k - 1]].total_cmp(&key).is_gt() {
+                order[k] = order[k - 1];
+                k -= 1;
+            }
+            order[k] = v;
+        }
+        if order.is_empty() || a.intact.iter().all(|&x| x <= 0.0) {
+            return None;
+        }
+        // Upper bound: the distance between a few corresponding nodes.
+        let mut best2 = f64::INFINITY;
+        let mut found: Option<Closest> = None;
+        let dist2 = |p: [f64; 3], q: [f64; 3]| (p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2) + (p[2] - q[2]).powi(2);
+        // Only points of the polylines may bound: nodes on an intact segment, and the last closest pair if
+        // both its segments are still intact (a chord across a break is not part of the conductor).
+        let on_intact =
+            |w: &Wire, i: usize| (i > 0 && w.intact[i - 1] > 0.0) || (i < w.segments() && w.intact[i] > 0.0);
+        for k in 0..=8 {
+            let (i, j) = (k * na / 8, k * nb / 8);
+            if on_intact(a, i) && on_intact(b, j) {
+                best2 = best2.min(dist2(a.position(i), b.position(j)));
+            }
+        }
+        if let Some((i, j)) = *last
+            && i < na
+            && j < nb
+            && a.intact[i] > 0.0
+            && b.intact[j] > 0.0
+        {
+            let (d2, _, _) = closest_points(a.position(i), a.position(i + 1), b.position(j), b.position(j + 1));
+            best2 = best2.min(d2);
+        }
+        // Slightly above the bound so that the pair that attains it is visited.
+        let mut best = best2.sqrt() * (1.0 + 1e-12) + 1e-300;
+        // Where the two windows of `order` started for the last segment of `a`; `lo` without a NaN (else
+        // the windows are found by binary search, as `partition_point` did).
+        let (mut first_at, mut last_at) = (0, 0);
+        let sorted = !lo.iter().any(|v| v.is_nan());
+        // The box bound's margin ([`box_gap2`]), from the largest coordinate magnitude of both conductors.
+        let largest = |w: &Wire| w.x.iter().flatten().fold(0.0_f64, |m, &v| if v.abs() > m { v.abs() } else { m });
+        let slack = 1.0e-9 * (1.0 + largest(a).max(largest(b)));
+        for i in 0..na {
+            if a.intact[i] <= 0.0 {
+                continue;
+            }
+            let (p, q) = (proj(a, i), proj(a, i + 1));
+            let (alo, ahi) = (p.min(q), p.max(q));
+            // The same indices as `order.partition_point`, found by walking from the previous segment's
+            // (`lo` is sorted along `order`, so each predicate holds on a prefix: its partition point is
+            // unique): a few steps where `a` runs along the chord, a binary search beyond.
+            let (below, above) = (alo - best - ext_b, ahi + best);
+            let first = walk_partition_before(order, |j| lo[j] < below, &mut first_at, sorted);
+            let last = walk_partition_before(order, |j| lo[j] <= above, &mut last_at, sorted);
+            let (p0, p1) = (a.position(i), a.position(i + 1));
+            let p_box = segment_box(p0, p1);
+            for &j in &order[first..last.max(first)] {
+                if lo[j] > ahi + best || hi[j] < alo - best {
+                    continue;
+                }
+                // A pair whose computed distance cannot be below the best so far would not be taken: passed
+                // over without computing it.
+                if found.is_some() && box_gap2_before(&p_box, &boxes[j], slack) > best2 {
+                    continue;
+                }
+                let (q0, q1) = (b.position(j), b.position(j + 1));
+                let (d2, s, u) = closest_points(p0, p1, q0, q1);
+                if found.is_none() || d2 < best2 {
+                    best2 = d2;
+                    best = d2.sqrt();
+                    let at = |x: [f64; 3], y: [f64; 3], f: f64| [0, 1, 2].map(|k| x[k] + f * (y[k] - x[k]));
+                    found = Some(Closest {
+                        distance_m: best,
+                        segment_a: i,
+                        fraction_a: s,
+                        segment_b: j,
+                        fraction_b: u,
+                        point_a_m: at(p0, p1, s),
+                        point_b_m: at(q0, q1, u),
+                    });
+                }
+            }
+        }
+        *last = found.map(|c| (c.segment_a, c.segment_b));
+        found
+    }
+
+    #[inline]
+    fn box_gap2_before(p: &[f64; 6], q: &[f64; 6], slack: f64) -> f64 {
+        let mut g2 = 0.0;
+        for k in 0..3 {
+            let (plo, phi, qlo, qhi) = (p[2 * k], p[2 * k + 1], q[2 * k], q[2 * k + 1]);
+            let (after, before) = (qlo - phi, plo - qhi);
+            let gap = if after > before { after } else { before } - slack;
+            if gap > 0.0 {
+                g2 += gap * gap;
+            }
+        }
+        g2 * (1.0 - 1.0e-9)
+    }
+
+    #[inline]
+    fn walk_partition_before(order: &[usize], pred: impl Fn(usize) -> bool, at: &mut usize, sorted: bool) -> usize {
+        const STEPS: usize = 8;
+        let n = order.len();
+        let mut k = (*at).min(n);
+        if sorted {
+            if k < n && pred(order[k]) {
+                // forwards: the answer is after k
+                let stop = (k + STEPS).min(n);
+                k += 1;
+                while k < stop && pred(order[k]) {
+                    k += 1;
+                }
+                if k < n && k == stop && pred(order[k]) {
+                    k = order.partition_point(|&j| pred(j));
+                }
+            } else {
+                // backwards: the answer is k or before
+                let stop = k.saturating_sub(STEPS);
+                while k > stop && !pred(order[k - 1]) {
+                    k -= 1;
+                }
+                if k > 0 && k == stop && !pred(order[k - 1]) {
+                    k = order.partition_point(|&j| pred(j));
+                }
+            }
+        } else {
+            k = order.partition_point(|&j| pred(j));
+        }
+        *at = k;
+        k
+    }
+
+    /// The pruned search gives the bits of the one it replaced (the same pairs computed in the same
+    /// order): two conductors of 30 to 130 segments, parallel, crossing, sagging and swinging over 300
+    /// levels with the scratch kept, segments broken on the way, at coordinates up to 1e4 m.
+    #[test]
+    fn least_distance_is_bitwise_the_previous_search() {
+        let mut state = 0x9e37_79b9_7f4a_7c15_u64;
+        let mut rnd = move || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
+        };
+        let mut compared = 0;
+        for case in 0..24 {
+            let (na, nb) = (30 + 17 * (case % 6), 30 + 23 * (case % 5));
+            let offset = [1e-3, 0.5, 7.0, 1e4][case % 4];
+            let mut a = straight(0.0, 10.0, na, 400.0, 0.0);
+            let mut b = straight(offset, 10.0 + 0.3 * offset, nb, 400.0, 3.0 * rnd());
+            let (mut new, mut before) = (Scratch::default(), ScratchBefore::default());
+            for level in 0..300 {
+                let t = level as f64 * 0.01;
+                for (w, n, amp) in [(&mut a, na, 1.0), (&mut b, nb, 1.7)] {
+                    for i in 0..=n {
+                        let s = i as f64 / n as f64;
+                        let bump = 4.0 * s * (1.0 - s);
+                        w.x[0][i] += amp * 0.02 * bump * (3.0 * t + s).sin() + 1e-4 * rnd();
+                        w.x[2][i] -= amp * 0.01 * bump * (2.0 * t).cos() + 1e-4 * rnd();
+                        if case % 3 == 2 {
+                            // crossing: b turns across a
+                            w.x[1][i] += 0.05 * amp * (s - 0.5) * (t + s).sin();
+                        }
+                    }
+                }
+                if level == 150 && case % 2 == 1 {
+                    b.break_segment(nb / 3);
+                    a.break_segment(na / 2);
+                }
+                let got = least_distance(&a, &b, &mut new);
+                let want = least_distance_before(&a, &b, &mut before);
+                let bits = |c: Option<Closest>| {
+                    c.map(|c| {
+                        let f = [c.distance_m, c.fraction_a, c.fraction_b].map(f64::to_bits);
+                        (f, c.segment_a, c.segment_b, c.point_a_m.map(f64::to_bits), c.point_b_m.map(f64::to_bits))
+                    })
+                };
+                assert_eq!(bits(got), bits(want), "case {case}, level {level}");
+                compared += 1;
+            }
+        }
+        assert_eq!(compared, 24 * 300);
+    }
+
     /// Every pair of segments, for comparison.
     fn brute(a: &Wire, b: &Wire) -> f64 {
         let mut best = f64::INFINITY;
@@ -476,28 +721,21 @@ mod tests {
     }
 
     /// The walk finds `partition_point`'s index from any previous answer, over sorted keys with ties and
-    /// for thresholds below, inside and above them (and by binary search where the keys hold a NaN).
+    /// for thresholds below, inside and above them (and by binary search where not `sorted`).
     #[test]
     fn walk_partition_is_partition_point() {
-        let lo = [-3.0, -1.0, -1.0, 0.0, 0.5, 2.0, 2.0, 2.0, 7.0, 9.0, 9.5, 10.0, 11.0, 30.0, 31.0, 40.0, 41.0];
-        // `order` lists the keys sorted; the keys themselves are stored out of order
-        let perm: Vec<usize> = (0..lo.len()).map(|i| (i * 7) % lo.len()).collect();
-        let mut keys = vec![0.0; lo.len()];
-        for (k, &p) in perm.iter().enumerate() {
-            keys[p] = lo[k];
-        }
-        let order = perm;
+        let keys = [-3.0, -1.0, -1.0, 0.0, 0.5, 2.0, 2.0, 2.0, 7.0, 9.0, 9.5, 10.0, 11.0, 30.0, 31.0, 40.0, 41.0];
         for x in [-10.0, -3.0, -1.0, 0.25, 2.0, 8.0, 10.0, 10.5, 35.0, 41.0, 100.0] {
-            for at in 0..=lo.len() + 2 {
-                let want = order.partition_point(|&j| keys[j] < x);
+            for at in 0..=keys.len() + 2 {
+                let want = keys.partition_point(|&v| v < x);
                 let mut a = at;
-                assert_eq!(walk_partition(&order, |j| keys[j] < x, &mut a, true), want, "{x} from {at}");
+                assert_eq!(walk_partition(&keys, |v| v < x, &mut a, true), want, "{x} from {at}");
                 assert_eq!(a, want);
-                let want = order.partition_point(|&j| keys[j] <= x);
+                let want = keys.partition_point(|&v| v <= x);
                 let mut a = at;
-                assert_eq!(walk_partition(&order, |j| keys[j] <= x, &mut a, false), want);
+                assert_eq!(walk_partition(&keys, |v| v <= x, &mut a, false), want);
                 let mut a = at;
-                assert_eq!(walk_partition(&order, |j| keys[j] <= x, &mut a, true), want, "{x} from {at}");
+                assert_eq!(walk_partition(&keys, |v| v <= x, &mut a, true), want, "{x} from {at}");
             }
         }
     }

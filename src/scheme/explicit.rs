@@ -156,6 +156,13 @@ fn detected_isa() -> Isa {
     }
 }
 
+/// Whether code compiled for AVX2 may run here (the AVX2 or AVX-512 copy is chosen, [`detected_isa`]): the
+/// processor reports AVX2 and the environment variable `OHL_NO_AVX2` is not set (to measure or compare
+/// the baseline copy). Used by the elements' own AVX2 copies (pair forces, contact walk).
+pub(crate) fn avx2_available() -> bool {
+    detected_isa() >= Isa::Avx2
+}
+
 /// The instruction set the kernel's passes run with on this machine: `"avx512"` (the AVX-512 copies),
 /// `"avx2"` (the AVX2 copies) or `"baseline"` (x86-64 SSE2, or the target's baseline elsewhere); the
 /// environment variables `OHL_NO_AVX512` and `OHL_NO_AVX2` select a narrower copy.
@@ -594,7 +601,7 @@ impl Explicit {
         out.clear();
         for &i in &self.supports {
             let f = if self.wire.free[i] <= 0.0 {
-                [0, 1, 2].map(|k| self.node_force(k, i))
+                self.node_force3(i)
             } else if let Some(&(_, p)) = self.point_force.iter().find(|(n, _)| *n == i) {
                 // A suspension support: the string's pull on its crossarm, minus its force on the clamp.
                 [-p[0], -p[1], -p[2]]
@@ -1146,6 +1153,20 @@ impl Explicit {
         f
     }
 
+    /// [`Explicit::node_force`] of the three components at once: one scan of the point forces, each
+    /// component summed in the same order (the same bits).
+    fn node_force3(&self, i: usize) -> [f64; 3] {
+        let mut f = [0, 1, 2].map(|k| self.node_force_own(k, i));
+        for &(node, p) in self.point_force.iter().chain(&self.external_force) {
+            if node == i {
+                for k in 0..3 {
+                    f[k] += p[k];
+                }
+            }
+        }
+        f
+    }
+
     /// [`Explicit::node_force`] without the point forces (strings, external forces): the segments'
     /// tension and loads, gravity and the prescribed nodal force, summed in that order.
     #[inline(always)]
@@ -1391,6 +1412,31 @@ mod tests {
                 [d.kinetic_j, d.elastic_j, d.potential_j].map(f64::to_bits),
                 "{name}"
             );
+        }
+    }
+
+    /// The three components at once ([`Explicit::node_force3`], the supports' forces) are the bits of
+    /// [`Explicit::node_force`] per component, at every node of the option cases after 50 steps, with
+    /// point forces on a support node (twice), an inner node and the last node.
+    #[test]
+    fn node_force3_is_node_force_per_component() {
+        for (name, mut s) in option_cases() {
+            let dt = s.params.dt_s;
+            for _ in 0..50 {
+                s.step(dt).unwrap();
+            }
+            s.evaluate_forces();
+            let last = s.wire.nodes() - 1;
+            s.external_force.extend([
+                (0, [1.5, -2.25, 3.125]),
+                (7, [1e-3, 2e4, -5.0]),
+                (0, [-0.1, 0.3, 7.0]),
+                (last, [2.0; 3]),
+            ]);
+            for i in 0..=last {
+                let want = [0, 1, 2].map(|k| s.node_force(k, i).to_bits());
+                assert_eq!(s.node_force3(i).map(f64::to_bits), want, "{name}: node {i}");
+            }
         }
     }
 

@@ -11,5 +11,6 @@ pub mod line;
 pub mod smoothing;
 
 pub use contact::Ground;
+pub(crate) use explicit::avx2_available;
 pub use explicit::{Diagnostics, Explicit, Instability, InstabilityReason, Loads, StepParams, WindGate, WindLoad};
 pub use line::{LineError, LineExplicit, LineInstability};

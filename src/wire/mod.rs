@@ -374,8 +374,9 @@ impl Wire {
             return;
         }
         let (a, u0) = (self.thermal_expansion_per_k, self.reference_temperature_k);
-        for j in 0..self.segments() {
-            self.rest_length[j] = self.reference_length[j] * (1.0 + a * (self.temperature_k[j] - u0));
+        // Zipped (no index checks: the compiler may take two segments at once, each the same operations).
+        for ((l0, &l), &u) in self.rest_length.iter_mut().zip(&self.reference_length).zip(&self.temperature_k) {
+            *l0 = l * (1.0 + a * (u - u0));
         }
     }
 }
@@ -383,6 +384,28 @@ impl Wire {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The zipped loop of `update_rest_lengths` gives the bits of the indexed formula
+    /// `L0_j = L_j (1 + a (u_j - u_0))` over pseudo-random temperatures and lengths.
+    #[test]
+    fn rest_lengths_are_the_indexed_formula() {
+        let conductor =
+            Conductor { axial_stiffness_n: 1.0, internal_friction_n_s: 0.0, law: tension::LawKind::TensionOnly };
+        let n = 37;
+        let x = [vec![0.0; n + 1], (0..=n).map(|i| i as f64 * 8.0).collect(), vec![0.0; n + 1]];
+        let mut w = Wire::new(conductor, x, (0..n).map(|j| 8.0 + 1e-3 * (j as f64).sin()).collect(), 1.0);
+        w.thermal_expansion_per_k = 1.93e-5;
+        for j in 0..n {
+            w.temperature_k[j] = 288.15 + 90.0 * (0.7 * j as f64).cos();
+        }
+        w.update_rest_lengths();
+        let (a, u0) = (w.thermal_expansion_per_k, w.reference_temperature_k);
+        for j in 0..n {
+            let want = w.reference_length[j] * (1.0 + a * (w.temperature_k[j] - u0));
+            assert_eq!(w.rest_length[j].to_bits(), want.to_bits(), "segment {j}");
+        }
+        assert!(w.rest_length[0] != w.reference_length[0]);
+    }
 
     #[test]
     fn a_radial_shell_replaces_the_previous_one_and_sheds_to_the_mass_without_it() {
