@@ -24,7 +24,7 @@ pub struct BenchArgs {
     /// an earlier kernel CSV to draw dashed beside this one
     #[arg(long)]
     baseline: Option<PathBuf>,
-    /// repetitions per measurement (the fastest counts)
+    /// repetitions per measurement (the median counts, CPU time of the thread)
     #[arg(long, default_value_t = 7, allow_negative_numbers = true)]
     reps: usize,
     /// node-steps per repetition
