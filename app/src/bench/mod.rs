@@ -560,7 +560,7 @@ pub fn plot_throughput(
     let chart = Chart {
         title: "Explicit step, one thread".into(),
         x_label: "segments N [-]".into(),
-        y_label: "throughput [node-steps/s]".into(),
+        y_label: "throughput [node-steps per CPU second]".into(),
         series,
         log_x: true,
         log_y: true,
