@@ -40,8 +40,11 @@
 //! - a line (`[line]`, [`crate::run::line::LineWorkEstimate`]), [`RUN_THROUGHPUT_LINE`] = 1e7
 //!   node-steps/s: cases e-g and k (links, towers, clearances every level) ran at 1.1e7 to 3.9e7;
 //!   with a short circuit (`[short_circuit]`: the pair forces of every two conductors, and contact),
-//!   [`RUN_THROUGHPUT_SHORT_CIRCUIT`] = 1e6 node-steps/s: cases h-l ran at 2.6e5 to 4e6 (the pair
-//!   forces grow as N^2, not N: a fine grid runs slower than this).
+//!   [`RUN_THROUGHPUT_SHORT_CIRCUIT`] = 1e6 node-steps/s: cases h-l as shipped run at 1.2e6 (h) to
+//!   5.5e6 (j) since the pair forces' lanes of issue 27 (2.6e5 to 4e6 before, case h at 160 segments
+//!   at 2.6e5). The pair forces grow as N^2, not N (`ohl bench`: case j's cost 41, 105, 338 us per
+//!   step at 50, 100, 200 segments per phase), so a fine grid runs slower than this, and a short fault
+//!   in a long run faster.
 //!
 //! The explicit kernel alone runs faster: [`THROUGHPUT_NODE_STEPS_PER_S`] = 1.5e8 node-steps/s on one
 //! core for the 3D configurations with wind or internal friction at N >= 200 (`figures/bench/README.md`:
