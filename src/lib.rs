@@ -47,3 +47,6 @@ pub mod statics;
 pub mod thermal;
 pub mod verify;
 pub mod wire;
+
+#[cfg(test)]
+mod test_rng;

@@ -450,13 +450,7 @@ mod tests {
     /// quarter sharing a node (graded pieces), a quarter close (up to 64 pieces), a quarter collinear.
     #[test]
     fn lanes_are_bitwise_the_point_by_point_loop() {
-        let mut state = 0x2545_f491_4f6c_dd1d_u64;
-        let mut rnd = move || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            (state >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
-        };
+        let mut rnd = crate::test_rng::symmetric(0x2545_f491_4f6c_dd1d_u64);
         let bits = |r: &Result<PairForce, EmForceError>| match r {
             Ok(f) => Ok([f.total_n, f.at_b0_n, f.at_b1_n].map(|v| v.map(f64::to_bits))),
             Err(e) => Err(*e),
@@ -503,13 +497,7 @@ mod tests {
     /// are refused.
     #[test]
     fn random_pairs_give_finite_forces_or_typed_errors() {
-        let mut state = 0x9e37_79b9_7f4a_7c15_u64;
-        let mut rnd = || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            (state >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
-        };
+        let mut rnd = crate::test_rng::symmetric(0x9e37_79b9_7f4a_7c15_u64);
         let (mut ok, mut refused) = (0, 0);
         for case in 0..3000 {
             let mut pt = || [rnd(), rnd(), rnd()];

@@ -76,13 +76,7 @@ mod tests {
     /// zeros of either sign, infinities and NaN).
     #[test]
     fn point_segment_is_closest_points_of_a_point() {
-        let mut state = 0x9e37_79b9_7f4a_7c15_u64;
-        let mut rnd = move || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            (state >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
-        };
+        let mut rnd = crate::test_rng::symmetric(0x9e37_79b9_7f4a_7c15_u64);
         let specials = [0.0, -0.0, f64::INFINITY, f64::NEG_INFINITY, f64::NAN];
         for case in 0..50000 {
             let scale = [1e-3, 1.0, 30.0, 1e5][case % 4];
@@ -104,13 +98,7 @@ mod tests {
     /// exceeds it by at most the distance moved by half a grid step on each segment (|d1| + |d2|) / 400.
     #[test]
     fn agrees_with_brute_force_on_pseudo_random_segments() {
-        let mut state = 0x2545_f491_4f6c_dd1d_u64;
-        let mut rnd = || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            (state >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
-        };
+        let mut rnd = crate::test_rng::symmetric(0x2545_f491_4f6c_dd1d_u64);
         for case in 0..300 {
             let mut pt = || [rnd(), rnd(), rnd()];
             let (p0, p1, q0, mut q1) = (pt(), pt(), pt(), pt());

@@ -608,13 +608,7 @@ mod tests {
     /// levels with the scratch kept, segments broken on the way, at coordinates up to 1e4 m.
     #[test]
     fn least_distance_is_bitwise_the_previous_search() {
-        let mut state = 0x9e37_79b9_7f4a_7c15_u64;
-        let mut rnd = move || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            (state >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
-        };
+        let mut rnd = crate::test_rng::symmetric(0x9e37_79b9_7f4a_7c15_u64);
         let mut compared = 0;
         for case in 0..24 {
             let (na, nb) = (30 + 17 * (case % 6), 30 + 23 * (case % 5));
@@ -696,13 +690,7 @@ mod tests {
     /// it for segments apart along one axis.
     #[test]
     fn box_gap_is_below_the_computed_distance() {
-        let mut state = 0x9e37_79b9_7f4a_7c15_u64;
-        let mut rnd = move || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            (state >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut rnd = crate::test_rng::uniform(0x9e37_79b9_7f4a_7c15_u64);
         for n in 0..20000 {
             let scale = [1.0, 1e3, 1e5][n % 3];
             let spread = [1e-6, 1.0, 30.0][(n / 3) % 3];

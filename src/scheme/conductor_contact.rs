@@ -319,13 +319,7 @@ mod tests {
     /// an infinite or NaN coordinate in some), points near and far (and non-finite), every hint.
     #[test]
     fn nearest_segment_is_the_walk_bit_for_bit() {
-        let mut state = 0x2545_f491_4f6c_dd1d_u64;
-        let mut rnd = move || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            (state >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
-        };
+        let mut rnd = crate::test_rng::symmetric(0x2545_f491_4f6c_dd1d_u64);
         let c = Conductor { axial_stiffness_n: 1e6, internal_friction_n_s: 0.0, law: LawKind::TensionOnly };
         let mut compared = 0;
         for case in 0..400 {
