@@ -211,7 +211,9 @@ pub fn run_case(path: &Path, out: &Path, converge: bool) -> Result<CaseOutcome, 
     }
     let dir = out.join(&name);
     let ground = plan.ground.clone();
+    let start = std::time::Instant::now();
     let o = run(plan, &RunOptions { out_dir: Some(dir.clone()), record: false }).map_err(Box::new)?;
+    let wall_time_s = start.elapsed().as_secs_f64();
     let residual = residual_loads(&o.solver);
     let ts = read_columns(&dir.join("timeseries.csv"))?;
     let t = ts.get("t_s").cloned().unwrap_or_default();
@@ -248,7 +250,9 @@ pub fn run_case(path: &Path, out: &Path, converge: bool) -> Result<CaseOutcome, 
         .collect();
     let mut jumps_converged = vec![None; n_span];
     if converge {
-        let qs = converge_case(path, &dir)?;
+        // The study's first level is this run (the case as written): not run again.
+        let first = crate::converge::FirstRun { summary: o.summary.clone(), wall_time_s };
+        let qs = converge_case(path, &dir, Some(first))?;
         let find = |p: &str| qs.iter().find(|q| q.path == p).map(Converged::of);
         for s in &mut supports {
             s.peak_converged = find(&format!("supports[{}].peaks.components[1].value_n", s.support));
@@ -292,8 +296,13 @@ pub fn run_case(path: &Path, out: &Path, converge: bool) -> Result<CaseOutcome, 
 
 /// The grid study of a case: the case as written and on segments per span times 2 and 4 (the step at its
 /// Courant number), no files written; every summary value paired across the levels and estimated
-/// ([`crate::converge::analyse`], rtol 1 %); `dir/convergence.json` written.
-pub fn converge_case(path: &Path, dir: &Path) -> Result<Vec<crate::converge::Quantity>, CaseError> {
+/// ([`crate::converge::analyse`], rtol 1 %); `dir/convergence.json` written. `first`: the case as written
+/// already run (its summary and wall time), the study's first level, which is then not run again.
+pub fn converge_case(
+    path: &Path,
+    dir: &Path,
+    first: Option<crate::converge::FirstRun>,
+) -> Result<Vec<crate::converge::Quantity>, CaseError> {
     use crate::converge::{self, Options, Refine, report};
     let o = Options {
         refine: Refine::Grid,
@@ -311,7 +320,7 @@ pub fn converge_case(path: &Path, dir: &Path) -> Result<Vec<crate::converge::Qua
     };
     let sc = scenario::load(path)?;
     let planned = converge::plan_scenario(&sc, &file, None, &o).map_err(study)?;
-    let (runs, finest) = converge::run(path, planned, |_, _| {}).map_err(study)?;
+    let (runs, finest) = converge::run_with_first(path, planned, first, |_, _| {}).map_err(study)?;
     let quantities = converge::analyse(&runs, o.rtol);
     report::write_json(dir, &report::Study::new(&file, &finest.name, &o, &runs, &quantities))
         .map_err(|e| CaseError::Io(format!("{}: {e}", dir.join("convergence.json").display())))?;

@@ -150,6 +150,73 @@ fn cases_converge_gives_the_table_its_grid_study() {
     let _ = std::fs::remove_dir_all(&out);
 }
 
+/// `ohl cases --converge` runs the case as written once: its run gives the written files and is the
+/// study's first level (`converge::run_with_first`). On case (b) cut to 2 s: the files written are those
+/// of the case without `--converge`, and `convergence.json` (its quantities and levels) is the one of the
+/// study that runs its first level itself, but for the fields that time the machine.
+#[test]
+fn cases_converge_runs_the_case_as_written_once_with_the_same_table_and_files() {
+    let repo = Path::new(env!("CARGO_MANIFEST_DIR")).parent().unwrap().to_path_buf();
+    let root: PathBuf = std::env::temp_dir().join(format!("ohl-cases-converge-once-{}", std::process::id()));
+    let text = std::fs::read_to_string(repo.join("cases/b_ice_shedding.toml")).unwrap();
+    let short = text
+        .replace("end_time_s = 40.0", "end_time_s = 2.0")
+        .replace("snapshot_times_s = [1.0, 2.0, 3.0, 4.0, 6.0]", "snapshot_times_s = [1.0]");
+    assert_ne!(short, text);
+    std::fs::create_dir_all(&root).unwrap();
+    let file = root.join("b_ice_shedding.toml");
+    std::fs::write(&file, short).unwrap();
+    let (with, without, alone) = (root.join("with"), root.join("without"), root.join("alone"));
+    let c = run_case(&file, &with, true).unwrap();
+    let plain = run_case(&file, &without, false).unwrap();
+    std::fs::create_dir_all(&alone).unwrap();
+    let qs = ohl_app::cases::converge_case(&file, &alone, None).unwrap();
+    // The written files: the same bytes (summary.json but for its timings).
+    let (a, b) = (with.join("b_ice_shedding"), without.join("b_ice_shedding"));
+    for f in ["timeseries.csv", "snapshots.csv"] {
+        assert!(std::fs::read(a.join(f)).unwrap() == std::fs::read(b.join(f)).unwrap(), "{f} differs");
+    }
+    const MACHINE: [&str; 4] = ["wall_time_s", "node_steps_per_second", "cpu_time_s", "cpu_node_steps_per_second"];
+    fn strip(v: &serde_json::Value) -> serde_json::Value {
+        match v {
+            serde_json::Value::Object(m) => serde_json::Value::Object(
+                m.iter().filter(|(k, _)| !MACHINE.contains(&k.as_str())).map(|(k, v)| (k.clone(), strip(v))).collect(),
+            ),
+            serde_json::Value::Array(a) => serde_json::Value::Array(
+                a.iter().filter(|q| !MACHINE.iter().any(|m| q["path"] == *m)).map(strip).collect(),
+            ),
+            v => v.clone(),
+        }
+    }
+    let json = |p: &Path| -> serde_json::Value { serde_json::from_str(&std::fs::read_to_string(p).unwrap()).unwrap() };
+    assert_eq!(strip(&json(&a.join("summary.json"))), strip(&json(&b.join("summary.json"))));
+    // The table: the run's columns as without the study, the study's as the study alone gives them.
+    assert_eq!(c.supports.len(), plain.supports.len());
+    for (s, p) in c.supports.iter().zip(&plain.supports) {
+        let bits = |r: &ohl_app::cases::SupportRow| {
+            [r.initial_n, r.peak_n, r.peak_time_s, r.residual_n, r.residual_vertical_n].map(f64::to_bits)
+        };
+        assert_eq!(bits(s), bits(p));
+        let q = qs.iter().find(|q| q.path == format!("supports[{}].peaks.components[1].value_n", s.support)).unwrap();
+        let conv = s.peak_converged.as_ref().unwrap();
+        assert_eq!(
+            conv.extrapolate.map(f64::to_bits),
+            q.estimate.as_ref().and_then(|e| e.extrapolate).map(f64::to_bits)
+        );
+        assert_eq!(conv.verdict, q.verdict);
+    }
+    assert_eq!(
+        c.jumps.iter().map(|j| (j.0.to_bits(), j.1.to_bits())).collect::<Vec<_>>(),
+        plain.jumps.iter().map(|j| (j.0.to_bits(), j.1.to_bits())).collect::<Vec<_>>()
+    );
+    // convergence.json: the same study.
+    let (once, twice) = (json(&a.join("convergence.json")), json(&alone.join("convergence.json")));
+    assert_eq!(strip(&once["quantities"]), strip(&twice["quantities"]));
+    assert_eq!(strip(&once["levels"]), strip(&twice["levels"]));
+    assert_eq!(once["levels"].as_array().unwrap().len(), 3);
+    let _ = std::fs::remove_dir_all(&root);
+}
+
 #[test]
 fn deicing_case_sheds_when_the_deicing_model_says_and_balances_after() {
     let c = case("d_deicing");

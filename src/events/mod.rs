@@ -203,7 +203,7 @@ impl EventState {
     /// the `[thermal]` temperature at `t` (each once per step).
     pub fn before_step(&mut self, solver: &mut Explicit, t: f64) {
         if let Some(h) = &mut self.heating {
-            h.apply(solver.wire_mut(), t);
+            h.apply(solver, t);
         }
         if let Some(g) = &self.gust {
             solver.loads_mut().wind_scale = g.scale(t);

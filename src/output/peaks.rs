@@ -22,10 +22,28 @@
 //!   twice a period, whatever its mean. A level where `d_k` is exactly zero is not a side: the crossing is taken from the last level with a
 //!   sign. An oscillation about another position (a sagging span's vertical motion) never crosses the
 //!   chord point and has no period.
+//!
+//! What is not computed at a level, for the same peaks bit for bit:
+//!
+//! - a span's largest tension `max_j |T_j t_j|` ([`crate::scheme::Explicit::max_tension_in`], a pass over
+//!   the span's segments) where it cannot raise a peak: under the tension-only law every `T_j >= 0`, the
+//!   tangent `t_j = d_j (1 / |d_j|)` is a unit vector to a few roundings and so `|T_j t_j|` as formed
+//!   (the products, squares, sum and square root) is `T_j` within about `10 eps` (a segment shorter than
+//!   its rest length, the only one whose tangent may be far from unit in the underflow range, has `T_j =
+//!   0`); so the span's largest is at most the wire's largest tension (the kernel's,
+//!   [`crate::scheme::Explicit::max_tension_n`]) times `1 + 1e-12`. Where that bound lies below the span's
+//!   peak in every set the level updates, the span's value could not pass the peak (a peak is replaced
+//!   only by a larger value) and it is not formed. A NaN bound, the linear law (whose tensions may be
+//!   negative) and tensions from `1e150` N (squares near overflow) always form it;
+//! - the run's peaks where they are the last phase's: when the run's peaks begin at the level where the
+//!   phase's began (`peaks_from_s` at an event, or 0 without events), both sets see the same levels and
+//!   perform the same operations on the same values, so the phase's set stands for both until the next
+//!   phase begins, when the run's set goes on from a copy of it ([`Peaks::run`]).
 
 use serde::Serialize;
 
 use super::probe::ProbePoint;
+use crate::element::tension::LawKind;
 use crate::observer::{Control, Level, Observer, OutputError};
 use crate::scheme::Ground;
 
@@ -292,15 +310,23 @@ pub struct Peaks {
     supports: usize,
     spans: Vec<(usize, usize)>,
     ground: Option<Ground>,
-    /// the run's peaks from `from_s` on
-    pub run: PeakSet,
+    /// the run's peaks from `from_s` on, unless `run_is_phase` ([`Peaks::run`])
+    run: PeakSet,
     /// every phase's peaks
     pub phases: Vec<Phase>,
     current: Current,
+    /// whether the last phase's peaks have been updated since the phase began
+    phase_updated: bool,
+    /// whether the run's peaks have begun (a level at or after `from_s` was observed)
+    run_started: bool,
+    /// whether the run's peaks are those of the last phase: both began empty at the same level and have
+    /// seen the same levels since, so their updates are the same operations on the same values and one
+    /// set is updated for both (`run` is stale then; it is the phase's until the next phase begins)
+    run_is_phase: bool,
 }
 
 /// The tracked values at one time level.
-#[derive(Default)]
+#[derive(Clone, Default)]
 struct Current {
     t: f64,
     tau: f64,
@@ -320,6 +346,14 @@ struct Current {
 
 /// A crossing counts once the displacement passes this fraction of the wire's chord (module docs).
 const CROSSING_BAND: f64 = 1e-9;
+
+/// The relative margin of a span's largest tension over the wire's (module docs): far above the few
+/// roundings (about `10 eps = 2.2e-15`) between a segment's tension `T` and `|T t|` as formed.
+const SPAN_BOUND: f64 = 1e-12;
+
+/// The wire's largest tension below which the span bound is used [N]: the squares of the forces stay
+/// far from overflow (`(1e150)^2 = 1e300`), so a span's largest is never an infinity from them.
+const SPAN_BOUND_BELOW_N: f64 = 1e150;
 
 impl Peaks {
     /// Track `probes` (the mid-span probe first), `supports` supports and the `spans` of a section (first
@@ -343,6 +377,18 @@ impl Peaks {
             spans,
             ground,
             current: Current { disp: vec![[0.0; 3]; n], spans: Vec::with_capacity(k), ..Default::default() },
+            phase_updated: false,
+            run_started: false,
+            run_is_phase: false,
+        }
+    }
+
+    /// The run's peaks from `from_s` on.
+    pub fn run(&self) -> &PeakSet {
+        if self.run_is_phase {
+            &self.phases.last().expect("the first phase exists from the start").peaks
+        } else {
+            &self.run
         }
     }
 
@@ -375,20 +421,43 @@ impl Observer for Peaks {
         }
         c.tension = s.max_tension_n();
         c.spans.clear();
-        for &(first, last) in &self.spans {
-            let clearance = self.ground.as_ref().map(|g| g.least_clearance_m(&w.x, first..=last));
-            c.spans.push((s.max_tension_in(first..last), clearance));
-        }
         let phase = self.phases.last_mut().expect("the first phase exists from the start");
-        phase.peaks.update(c);
-        if c.t >= self.from_s - super::clock::LANDING * s.params().dt_s {
-            self.run.update(c);
+        let run_level = c.t >= self.from_s - super::clock::LANDING * s.params().dt_s;
+        // A span's largest `|T t|` is at most the wire's largest tension `T_max` (the kernel's, every
+        // segment) times `1 + SPAN_BOUND` (module docs): below every peak it could raise, it is not formed.
+        let bounded = w.law == LawKind::TensionOnly && c.tension < SPAN_BOUND_BELOW_N;
+        let bound = c.tension * (1.0 + SPAN_BOUND);
+        for (k, &(first, last)) in self.spans.iter().enumerate() {
+            let clearance = self.ground.as_ref().map(|g| g.least_clearance_m(&w.x, first..=last));
+            let mut least_peak = phase.peaks.spans[k].max_tension.value_n;
+            if run_level && !self.run_is_phase {
+                least_peak = least_peak.min(self.run.spans[k].max_tension.value_n);
+            }
+            let tension = if bounded && bound < least_peak { f64::NEG_INFINITY } else { s.max_tension_in(first..last) };
+            c.spans.push((tension, clearance));
         }
+        if !self.run_is_phase && run_level {
+            if !self.run_started && !self.phase_updated {
+                // The run's peaks begin at this level, as the phase's did: from here on they are the
+                // phase's (until the next phase begins, `event`).
+                self.run_is_phase = true;
+            } else {
+                self.run.update(c);
+            }
+            self.run_started = true;
+        }
+        phase.peaks.update(c);
+        self.phase_updated = true;
         Ok(Control::Continue)
     }
 
     fn event(&mut self, t_s: f64, what: &str) {
         let last = self.phases.last_mut().expect("the first phase exists from the start");
+        if self.run_is_phase {
+            // The phase ends or starts afresh: the run's peaks go on from its values.
+            self.run.clone_from(&last.peaks);
+            self.run_is_phase = false;
+        }
         if last.start_s == t_s && last.started_by != "start" {
             last.started_by = format!("{}; {what}", last.started_by);
             return;
@@ -400,6 +469,7 @@ impl Observer for Peaks {
         } else {
             self.phases.push(Phase { start_s: t_s, started_by: what.to_string(), peaks });
         }
+        self.phase_updated = false;
     }
 }
 
@@ -465,6 +535,59 @@ mod tests {
         }
         assert_eq!(c.count(), 1);
         assert_eq!(c.first, Some((3.5, false)));
+    }
+
+    /// The run's peaks ([`Peaks::run`]) are those of a set updated at every level from `from_s` on with
+    /// every value formed, whether they are kept apart or shared with the last phase (from an event at
+    /// `from_s`, from the first level, from a later event, across several events), the crossings' and
+    /// origins' state too; the phases' peaks likewise, though the spans' largest tensions are left out
+    /// where the wire's bounds them below the peaks.
+    #[test]
+    fn run_peaks_shared_with_a_phase_are_the_separately_updated_ones() {
+        use crate::scheme::configs::Config;
+        let mut skipped = 0;
+        // (from_s, event levels)
+        for (from_s, events) in [
+            (0.0, vec![]),
+            (0.0, vec![0, 90]),
+            (0.0, vec![0, 200]),
+            (60.0, vec![60, 130]),
+            (45.0, vec![60]),
+            (60.0, vec![30, 60, 61]),
+        ] {
+            let mut s = Config::Wind3d.solver(40);
+            let dt = s.params().dt_s;
+            let from_s = from_s * dt;
+            let probes = vec![ProbePoint::new("mid", 0.5, s.wire()), ProbePoint::new("q", 0.25, s.wire())];
+            let supports = s.wire().supports().len();
+            let mut peaks = Peaks::new(from_s, probes, supports, vec![(0, 20), (20, 40)], None);
+            let mut reference = PeakSet::sized(2, supports, 2);
+            let mut phase = PeakSet::sized(2, supports, 2);
+            for n in 0..400 {
+                let t = s.time_s();
+                if events.contains(&n) {
+                    peaks.event(t, "event");
+                    phase = PeakSet::sized(2, supports, 2);
+                    // less wind at each event: the tension falls below the phase's peak
+                    s.loads_mut().wind_scale = 1.0 - 0.004 * n as f64;
+                }
+                s.evaluate_forces();
+                peaks.observe(&Level { solver: &s, t_s: t, tau_per_s: 1.0 }).unwrap();
+                // Every value formed, the spans' largest tensions too.
+                let mut all = peaks.current.clone();
+                skipped += all.spans.iter().filter(|p| p.0 == f64::NEG_INFINITY).count();
+                all.spans = vec![(s.max_tension_in(0..20), None), (s.max_tension_in(20..40), None)];
+                if t >= from_s - crate::output::clock::LANDING * dt {
+                    reference.update(&all);
+                }
+                phase.update(&all);
+                assert_eq!(peaks.run(), &reference, "from {from_s}, events {events:?}, level {n}");
+                assert_eq!(&peaks.phases.last().unwrap().peaks, &phase, "from {from_s}, events {events:?}, level {n}");
+                s.step(dt).unwrap();
+            }
+            assert_eq!(peaks.phases.len(), 1 + events.iter().filter(|&&n| n > 0).count());
+        }
+        assert!(skipped > 0, "no span's largest tension was left out");
     }
 
     /// The rise and fall count from the stretch's first level, whatever the displacement was before it.

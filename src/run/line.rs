@@ -610,7 +610,7 @@ pub fn run_line_observed<'o>(
         conductors: (0..n)
             .map(|c| {
                 let s = &line.conductors()[c];
-                let run = &outputs[c].peaks.run;
+                let run = outputs[c].peaks.run();
                 ConductorSummary {
                     name: names[c].clone(),
                     role: match line.roles()[c] {

@@ -188,7 +188,7 @@ pub fn run_observed<'o>(
     let mut forces = Vec::new();
     solver.support_forces(&mut forces);
     let n = solver.wire().segments();
-    let run_peaks = &peaks.run;
+    let run_peaks = peaks.run();
     // The peaks the start-up check looks at, with their values at the end.
     let start_up_peaks: Vec<(String, f64, f64, f64)> = std::iter::once((
         "max_tension".to_string(),

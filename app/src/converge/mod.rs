@@ -252,6 +252,27 @@ pub struct LevelRun {
 pub fn run(
     path: &Path,
     planned: Vec<Planned>,
+    before: impl FnMut(usize, &Planned),
+) -> Result<(Vec<LevelRun>, ohl::output::Summary), StudyError> {
+    run_with_first(path, planned, None, before)
+}
+
+/// The first level already run: its summary and its wall time [s] (build, run and files).
+pub struct FirstRun {
+    /// the summary of the run of the first level's plan
+    pub summary: ohl::output::Summary,
+    /// its wall time [s]
+    pub wall_time_s: f64,
+}
+
+/// [`run`], the first level's run given by `first` when the caller has run that level's plan already (`ohl
+/// cases --converge` runs the case as written for its files and its table, which is the study's first
+/// level): its summary is taken instead of running the same plan again, which would give the same
+/// summary (a run is deterministic, bit for bit) but for its timings.
+pub fn run_with_first(
+    path: &Path,
+    planned: Vec<Planned>,
+    mut first: Option<FirstRun>,
     mut before: impl FnMut(usize, &Planned),
 ) -> Result<(Vec<LevelRun>, ohl::output::Summary), StudyError> {
     let file = path.display().to_string();
@@ -262,18 +283,23 @@ pub fn run(
         let label = p.level.label();
         let opts = RunOptions { out_dir: p.out_dir.clone(), record: false };
         let dir = p.out_dir.as_ref().map_or("(no files written)".to_string(), |d| d.display().to_string());
-        let start = Instant::now();
-        let outcome = run_observed(p.plan, &opts, &mut []).map_err(|e| match e {
-            RunError::Unstable { instability, .. } => StudyError::Unstable {
-                file: file.clone(),
-                label: label.clone(),
-                message: instability.to_string(),
-                dir: dir.clone(),
-            },
-            e => StudyError::Run { file: file.clone(), label: label.clone(), message: e.to_string() },
-        })?;
-        let wall = start.elapsed().as_secs_f64();
-        let s = &outcome.summary;
+        let (summary, wall) = match first.take() {
+            Some(f) => (f.summary, f.wall_time_s),
+            None => {
+                let start = Instant::now();
+                let outcome = run_observed(p.plan, &opts, &mut []).map_err(|e| match e {
+                    RunError::Unstable { instability, .. } => StudyError::Unstable {
+                        file: file.clone(),
+                        label: label.clone(),
+                        message: instability.to_string(),
+                        dir: dir.clone(),
+                    },
+                    e => StudyError::Run { file: file.clone(), label: label.clone(), message: e.to_string() },
+                })?;
+                (outcome.summary, start.elapsed().as_secs_f64())
+            }
+        };
+        let s = &summary;
         let value = serde_json::to_value(s).map_err(|e| StudyError::Run {
             file: file.clone(),
             label: label.clone(),
@@ -292,7 +318,7 @@ pub fn run(
             phases: s.phases.len(),
             scalars: flatten::scalars(&value),
         });
-        last = Some(outcome.summary);
+        last = Some(summary);
     }
     Ok((runs, last.expect("at least three levels")))
 }
