@@ -4,10 +4,19 @@
 //! ([`super::Primitives`], measured in the kernel's instruction set):
 //!
 //! ```text
-//! cycles per node-step  c = max( (mul + cmp) c_mul,  add c_add,  div c_div + sqrt c_sqrt,
-//!                                loads c_load,  stores c_store )
-//! limit = clock / c,     fraction of the limit = measured node-steps/s / limit
+//! cycles of a set of operations  c(o) = max( (mul + cmp) c_mul,  add c_add,  div c_div + sqrt c_sqrt,
+//!                                           loads c_load,  stores c_store )
+//! limit of the core    = clock / c(segment + node)        (every unit busy all the time)
+//! bound of the passes  = clock / (c(segment) + c(node))   (each pass saturates its own busiest unit)
+//! fraction of the limit = measured node-steps/s / limit of the core
 //! ```
+//!
+//! The limit of the core is what the issue's goal is measured against. The bound of the passes is how
+//! far the kernel's structure lets it go: the segment pass and the node pass are separate loops, so the
+//! divider, busy in the segment pass, idles through the node pass, whose multiplications and additions
+//! cannot fill the segment pass's idle pipes. Between the two lies the cost of running the passes one
+//! after the other; below the bound, everything else (latency chains longer than the scheduler can
+//! cover, the caches, loop overhead, the front end).
 //!
 //! `c_mul`, `c_add`, `c_div`, `c_sqrt` [cycles per double] are measured throughputs (independent
 //! operations, data in L1); comparisons and `max` are taken on the multiply pipes, as AMD family 19h
@@ -24,11 +33,22 @@
 //! `src/element/aero.rs`), tabulated and derived in `figures/bench/README.md` ("Compute limit on this
 //! processor"):
 //!
-//! | config | mul + cmp | add | div | sqrt | loads | stores |
-//! |---|---|---|---|---|---|---|
-//! | plane_weight | 32 + 3 | 27 | 1 | 1 | 30 | 12 |
-//! | wind_3d | 64 + 4 | 44 | 2 | 2 | 42 | 16 |
-//! | kv_smoothing_3d | 68 + 4 | 54 | 2 | 2 | 67 | 22 |
+//! | config | pass | mul + cmp | add | div | sqrt | loads | stores |
+//! |---|---|---|---|---|---|---|---|
+//! | plane_weight | segment | 16 + 2 | 7 | 1 | 1 | 9 | 6 |
+//! | | node | 16 + 1 | 20 | 0 | 0 | 21 | 6 |
+//! | wind_3d | segment | 48 + 3 | 24 | 2 | 2 | 21 | 10 |
+//! | | node | 16 + 1 | 20 | 0 | 0 | 21 | 6 |
+//! | kv_smoothing_3d | segment | 45 + 3 | 25 | 2 | 2 | 29 | 10 |
+//! | | node (with smoothing) | 23 + 1 | 29 | 0 | 0 | 38 | 12 |
+//!
+//! (Totals as in the write-up: plane_weight 35, 27, 1, 1, 30, 12; wind_3d 68, 44, 2, 2, 42, 16;
+//! kv_smoothing_3d 72, 54, 2, 2, 67, 22. The node pass without smoothing: per component the force
+//! `f_hi - f_lo + (e_hi + e_lo) ex` (3 additions, 1 multiplication), `F m^-1 + g` (1, 1),
+//! `v + (kick free) a` (1, 1), `x + dt v` (1, 1); `kick free` (1 multiplication); the speed check
+//! `v.v <= bound^2` (3, 2 and a comparison). With smoothing (3.3): the kick (10, 15), the differences
+//! `intact (v_{i+1} - v_i)` (3, 3), `b free` and per component `v + bf (d_{i+1} - d_i)` (4 multiplications
+//! in all, 6 additions), the drift and the check (6, 5, 1).)
 //!
 //! The two-material law's pass is scalar with the law's branches, and the section and line workloads
 //! add scalar loops over links: no limit of this kind is given for them ([`budget`] is `None`).
@@ -37,9 +57,9 @@ use super::Primitives;
 use super::workload::Workload;
 use ohl::scheme::configs::Config;
 
-/// Operations of one node-step of a kernel configuration, by execution unit (module doc).
+/// Operations of one pass over one node or segment, by execution unit (module doc).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct OpBudget {
+pub struct Ops {
     /// multiplications and comparisons (the multiply pipes)
     pub mul_pipe: u32,
     /// additions and subtractions (the add pipes)
@@ -54,31 +74,61 @@ pub struct OpBudget {
     pub stores: u32,
 }
 
+impl std::ops::Add for Ops {
+    type Output = Ops;
+    fn add(self, o: Ops) -> Ops {
+        Ops {
+            mul_pipe: self.mul_pipe + o.mul_pipe,
+            add: self.add + o.add,
+            div: self.div + o.div,
+            sqrt: self.sqrt + o.sqrt,
+            loads: self.loads + o.loads,
+            stores: self.stores + o.stores,
+        }
+    }
+}
+
+/// Operations of one node-step: the segment pass on one segment and the node pass on one node.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct OpBudget {
+    /// the segment pass (`segment_pass_body`), per segment
+    pub segment: Ops,
+    /// the node pass (`kick_drift`), per node
+    pub node: Ops,
+}
+
+const fn ops(mul_pipe: u32, add: u32, div: u32, sqrt: u32, loads: u32, stores: u32) -> Ops {
+    Ops { mul_pipe, add, div, sqrt, loads, stores }
+}
+
+/// The node pass without smoothing (module doc).
+const NODE: Ops = ops(17, 20, 0, 0, 21, 6);
+
 /// The operations of one node-step of `w` (module doc), or `None` where no vector limit applies.
 pub fn budget(w: Workload) -> Option<OpBudget> {
     match w {
-        Workload::Kernel(Config::PlaneWeight) => {
-            Some(OpBudget { mul_pipe: 35, add: 27, div: 1, sqrt: 1, loads: 30, stores: 12 })
-        }
-        Workload::Kernel(Config::Wind3d) => {
-            Some(OpBudget { mul_pipe: 68, add: 44, div: 2, sqrt: 2, loads: 42, stores: 16 })
-        }
+        Workload::Kernel(Config::PlaneWeight) => Some(OpBudget { segment: ops(18, 7, 1, 1, 9, 6), node: NODE }),
+        Workload::Kernel(Config::Wind3d) => Some(OpBudget { segment: ops(51, 24, 2, 2, 21, 10), node: NODE }),
         Workload::Kernel(Config::ViscousSmoothed) => {
-            Some(OpBudget { mul_pipe: 72, add: 54, div: 2, sqrt: 2, loads: 67, stores: 22 })
+            Some(OpBudget { segment: ops(48, 25, 2, 2, 29, 10), node: ops(24, 29, 0, 0, 38, 12) })
         }
         _ => None,
     }
 }
 
-/// The busiest unit of a node-step and its cycles.
+/// The busiest unit of a node-step and its cycles, for the core and for the two passes.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Limit {
-    /// cycles per node-step of the busiest unit
+    /// cycles per node-step of the busiest unit, all operations together
     pub cycles: f64,
     /// which unit: "multiply pipes", "add pipes", "divider", "loads" or "stores"
     pub unit: &'static str,
-    /// the limit [node-steps/s]: the clock over `cycles`
+    /// the limit of the core [node-steps/s]: the clock over `cycles`
     pub node_steps_per_s: f64,
+    /// cycles per node-step with each pass on its own busiest unit, one pass after the other
+    pub passes_cycles: f64,
+    /// the bound of the passes [node-steps/s]: the clock over `passes_cycles`
+    pub passes_node_steps_per_s: f64,
 }
 
 /// Doubles per vector of the kernel's instruction set (`"avx512"`, `"avx2"` or the baseline's SSE2).
@@ -90,18 +140,30 @@ fn doubles_per_access(isa: &str) -> f64 {
     }
 }
 
-/// The limit of `b` on a core with the measured primitives `p` (module doc).
-pub fn limit(b: &OpBudget, p: &Primitives) -> Limit {
+/// The busiest unit of `o` and its cycles on a core with the primitives `p`.
+fn busiest(o: &Ops, p: &Primitives) -> (&'static str, f64) {
     let w = doubles_per_access(p.isa);
     let units = [
-        ("multiply pipes", b.mul_pipe as f64 * p.mul_cycles),
-        ("add pipes", b.add as f64 * p.add_cycles),
-        ("divider", b.div as f64 * p.div_cycles + b.sqrt as f64 * p.sqrt_cycles),
-        ("loads", b.loads as f64 / (2.0 * w)),
-        ("stores", b.stores as f64 / w),
+        ("multiply pipes", o.mul_pipe as f64 * p.mul_cycles),
+        ("add pipes", o.add as f64 * p.add_cycles),
+        ("divider", o.div as f64 * p.div_cycles + o.sqrt as f64 * p.sqrt_cycles),
+        ("loads", o.loads as f64 / (2.0 * w)),
+        ("stores", o.stores as f64 / w),
     ];
-    let (unit, cycles) = units.into_iter().fold(("", 0.0), |a, u| if u.1 > a.1 { u } else { a });
-    Limit { cycles, unit, node_steps_per_s: p.clock_hz / cycles }
+    units.into_iter().fold(("", 0.0), |a, u| if u.1 > a.1 { u } else { a })
+}
+
+/// The limit of `b` on a core with the measured primitives `p` (module doc).
+pub fn limit(b: &OpBudget, p: &Primitives) -> Limit {
+    let (unit, cycles) = busiest(&(b.segment + b.node), p);
+    let passes_cycles = busiest(&b.segment, p).1 + busiest(&b.node, p).1;
+    Limit {
+        cycles,
+        unit,
+        node_steps_per_s: p.clock_hz / cycles,
+        passes_cycles,
+        passes_node_steps_per_s: p.clock_hz / passes_cycles,
+    }
 }
 
 #[cfg(test)]
@@ -111,7 +173,7 @@ mod tests {
     /// The Zen 4 derivation of `figures/bench/README.md`: 8 doubles per cycle on each pair of pipes
     /// (0.125 cycles per double), a division 1.25 and a square root 2.25 cycles per double, 3.656 GHz:
     /// plane_weight 8.36e8 (multiply pipes, 4.38 cycles), wind_3d 4.30e8 (8.5), kv_smoothing_3d 4.06e8
-    /// (9.0).
+    /// (9.0), from the totals tabulated there.
     #[test]
     fn reproduces_the_zen4_limits_of_the_write_up() {
         let p = Primitives {
@@ -122,16 +184,24 @@ mod tests {
             mul_cycles: 0.125,
             add_cycles: 0.125,
         };
-        for (c, cycles, expect) in [
-            (Config::PlaneWeight, 4.375, 8.36e8),
-            (Config::Wind3d, 8.5, 4.30e8),
-            (Config::ViscousSmoothed, 9.0, 4.06e8),
+        for (c, total, cycles, expect) in [
+            (Config::PlaneWeight, ops(35, 27, 1, 1, 30, 12), 4.375, 8.36e8),
+            (Config::Wind3d, ops(68, 44, 2, 2, 42, 16), 8.5, 4.30e8),
+            (Config::ViscousSmoothed, ops(72, 54, 2, 2, 67, 22), 9.0, 4.06e8),
         ] {
-            let l = limit(&budget(Workload::Kernel(c)).unwrap(), &p);
+            let b = budget(Workload::Kernel(c)).unwrap();
+            assert_eq!(b.segment + b.node, total, "{}: the passes add up to the write-up's totals", c.name());
+            let l = limit(&b, &p);
             assert_eq!((l.unit, l.cycles), ("multiply pipes", cycles), "{}", c.name());
             // The write-up prints 3 digits.
             assert!((l.node_steps_per_s / expect - 1.0).abs() < 1e-3, "{}: {:e}", c.name(), l.node_steps_per_s);
+            // One pass after the other can only be slower than every unit busy at once.
+            assert!(l.passes_cycles >= l.cycles, "{}", c.name());
         }
+        // plane_weight's passes: the segment pass on the divider (1.25 + 2.25), the node pass on the loads
+        // (21 doubles at 8 a cycle; its 20 additions take 2.5).
+        let l = limit(&budget(Workload::Kernel(Config::PlaneWeight)).unwrap(), &p);
+        assert_eq!(l.passes_cycles, 3.5 + 2.625);
         // A slow divider moves the limit there: plane_weight's division and square root.
         let slow = Primitives { div_cycles: 4.0, sqrt_cycles: 6.0, ..p };
         let l = limit(&budget(Workload::Kernel(Config::PlaneWeight)).unwrap(), &slow);

@@ -480,7 +480,7 @@ pub fn machine() -> Machine {
 pub type ThroughputRow = (String, usize, f64);
 
 /// Columns of the kernel CSV.
-pub const KERNEL_HEADER: [&str; 18] = [
+pub const KERNEL_HEADER: [&str; 19] = [
     "label",
     "config",
     "n",
@@ -499,6 +499,7 @@ pub const KERNEL_HEADER: [&str; 18] = [
     "limit_node_steps_per_s",
     "of_limit",
     "limit_unit",
+    "passes_bound_node_steps_per_s",
 ];
 
 /// The compute limit of the workload named `config` on a core with the primitives `p`, and the fraction
@@ -523,9 +524,14 @@ pub fn write_kernel_csv(
     let mut w = csv_writer(path)?;
     w.write_record(KERNEL_HEADER)?;
     for (r, load) in rows {
-        let (lim, frac, unit) = match fraction_of_limit(&r.config, r.node_steps_per_s(), p) {
-            Some((l, f)) => (format!("{:.4e}", l.node_steps_per_s), format!("{f:.4}"), l.unit.to_string()),
-            None => (String::new(), String::new(), String::new()),
+        let (lim, frac, unit, passes) = match fraction_of_limit(&r.config, r.node_steps_per_s(), p) {
+            Some((l, f)) => (
+                format!("{:.4e}", l.node_steps_per_s),
+                format!("{f:.4}"),
+                l.unit.to_string(),
+                format!("{:.4e}", l.passes_node_steps_per_s),
+            ),
+            None => Default::default(),
         };
         w.write_record([
             label.to_string(),
@@ -546,6 +552,7 @@ pub fn write_kernel_csv(
             lim,
             frac,
             unit,
+            passes,
         ])?;
     }
     w.flush()

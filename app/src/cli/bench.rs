@@ -151,11 +151,14 @@ pub fn main(args: BenchArgs) -> ExitCode {
         if let Some(b) = bench::limit::budget(bench::Workload::Kernel(c)) {
             let l = bench::limit::limit(&b, &p);
             out!(
-                "compute limit of {} on this core: {:.3e} node-steps/s ({:.2} cycles per node-step on the {})",
+                "compute limit of {} on this core: {:.3e} node-steps/s ({:.2} cycles per node-step on the {}); \
+                 bound of its two passes one after the other: {:.3e} ({:.2} cycles)",
                 c.name(),
                 l.node_steps_per_s,
                 l.cycles,
-                l.unit
+                l.unit,
+                l.passes_node_steps_per_s,
+                l.passes_cycles
             );
         }
     }
