@@ -11,6 +11,7 @@
 //! valgrind's callgrind) are the load-independent measure; [`run_fixed_steps`] is the entry point they
 //! time.
 
+pub mod limit;
 pub mod workload;
 
 use std::path::{Path, PathBuf};
@@ -261,6 +262,10 @@ pub struct Primitives {
     pub sqrt_cycles: f64,
     /// division of doubles, throughput, in the kernel's instruction set (packed) [cycles]
     pub div_cycles: f64,
+    /// multiplication of doubles, throughput, in the kernel's instruction set (packed) [cycles]
+    pub mul_cycles: f64,
+    /// addition of doubles, throughput, in the kernel's instruction set (packed) [cycles]
+    pub add_cycles: f64,
 }
 
 #[inline(always)]
@@ -310,8 +315,41 @@ macro_rules! isa_copies {
     };
 }
 
+/// Independent accumulators of the multiply and add throughput loops: 8 vectors of 4 (AVX2) or 4 of 8
+/// (AVX-512), more than the pipes' latency (3-4 cycles) times their number (2) in vectors in flight, so
+/// the loop is bound by throughput, not by the dependent chain of each accumulator.
+const LANES: usize = 32;
+
+/// `rounds` times `a *= k` on every accumulator (`out` holds them; `a[0]` is the factor).
+#[inline(always)]
+fn mul_body(a: &[f64], out: &mut [f64]) {
+    let (k, rounds) = (a[0], a.len());
+    let mut acc = [1.0; LANES];
+    for _ in 0..rounds {
+        for x in acc.iter_mut() {
+            *x *= k;
+        }
+    }
+    out[..LANES].copy_from_slice(&acc);
+}
+
+/// `rounds` times `a += k` on every accumulator (as [`mul_body`]).
+#[inline(always)]
+fn add_body(a: &[f64], out: &mut [f64]) {
+    let (k, rounds) = (a[0], a.len());
+    let mut acc = [0.0; LANES];
+    for _ in 0..rounds {
+        for x in acc.iter_mut() {
+            *x += k;
+        }
+    }
+    out[..LANES].copy_from_slice(&acc);
+}
+
 isa_copies!(sqrt_array, sqrt_body);
 isa_copies!(div_array, div_body);
+isa_copies!(mul_lanes, mul_body);
+isa_copies!(add_lanes, add_body);
 
 #[inline(never)]
 fn add_chain(n: usize, y: f64) -> f64 {
@@ -359,8 +397,30 @@ pub fn measure_primitives() -> Primitives {
             div_array(isa, std::hint::black_box(&a), &mut out);
         }
     });
+    // Multiply and add throughput: LANES accumulators, `a.len()` rounds each (the factor 1 + 2^-40 and
+    // the increment 1 keep every value finite and normal).
+    let k = vec![1.0 + f64::EPSILON * 4096.0; 1024];
+    let t_mul = median_of(7, || {
+        for _ in 0..rounds {
+            mul_lanes(isa, std::hint::black_box(&k), &mut out);
+        }
+    });
+    let ones = vec![1.0; k.len()];
+    let t_sum = median_of(7, || {
+        for _ in 0..rounds {
+            add_lanes(isa, std::hint::black_box(&ones), &mut out);
+        }
+    });
+    let per_lane = |t: f64| t * clock_hz / (rounds * k.len() * LANES) as f64;
     std::hint::black_box(&out);
-    Primitives { clock_hz, isa, sqrt_cycles: per(t_sqrt), div_cycles: per(t_div) }
+    Primitives {
+        clock_hz,
+        isa,
+        sqrt_cycles: per(t_sqrt),
+        div_cycles: per(t_div),
+        mul_cycles: per_lane(t_mul),
+        add_cycles: per_lane(t_sum),
+    }
 }
 
 /// Where and when a measurement was taken.
@@ -420,7 +480,7 @@ pub fn machine() -> Machine {
 pub type ThroughputRow = (String, usize, f64);
 
 /// Columns of the kernel CSV.
-pub const KERNEL_HEADER: [&str; 15] = [
+pub const KERNEL_HEADER: [&str; 19] = [
     "label",
     "config",
     "n",
@@ -436,20 +496,43 @@ pub const KERNEL_HEADER: [&str; 15] = [
     "date_utc",
     "git",
     "build",
+    "limit_node_steps_per_s",
+    "of_limit",
+    "limit_unit",
+    "passes_bound_node_steps_per_s",
 ];
 
+/// The compute limit of the workload named `config` on a core with the primitives `p`, and the fraction
+/// of it `node_steps_per_s` reaches ([`limit`]); `None` where no limit applies.
+pub fn fraction_of_limit(config: &str, node_steps_per_s: f64, p: &Primitives) -> Option<(limit::Limit, f64)> {
+    let b = Workload::from_name(config).and_then(limit::budget)?;
+    let l = limit::limit(&b, p);
+    Some((l, node_steps_per_s / l.node_steps_per_s))
+}
+
 /// Write the kernel table to `path` (one row per result, each with the machine description and the
-/// load average measured just before it).
+/// load average measured just before it, and the compute limit from the primitives `p` where one
+/// applies).
 pub fn write_kernel_csv(
     path: &Path,
     label: &str,
     m: &Machine,
     rows: &[(KernelResult, String)],
     build: &str,
+    p: &Primitives,
 ) -> std::io::Result<()> {
     let mut w = csv_writer(path)?;
     w.write_record(KERNEL_HEADER)?;
     for (r, load) in rows {
+        let (lim, frac, unit, passes) = match fraction_of_limit(&r.config, r.node_steps_per_s(), p) {
+            Some((l, f)) => (
+                format!("{:.4e}", l.node_steps_per_s),
+                format!("{f:.4}"),
+                l.unit.to_string(),
+                format!("{:.4e}", l.passes_node_steps_per_s),
+            ),
+            None => Default::default(),
+        };
         w.write_record([
             label.to_string(),
             r.config.clone(),
@@ -466,6 +549,10 @@ pub fn write_kernel_csv(
             m.date.clone(),
             m.git.clone(),
             build.to_string(),
+            lim,
+            frac,
+            unit,
+            passes,
         ])?;
     }
     w.flush()

@@ -2,8 +2,10 @@
 //! repetitions) in the wire workloads of [`ohl_app::bench::workload`] at N = 50, 200, 1000, 5000 and its
 //! section and line workloads at N = 50, 100, 200 segments per span (with each multi-conductor element's
 //! cost per node-step, the difference of a pair), the CPU time of `ohl run` on the weight release at
-//! N = 50, 100, 200, 400, and the measured cost of a square root and a division on this core in the
-//! kernel's instruction set.
+//! N = 50, 100, 200, 400, and the measured cost of a square root, a division, a multiplication and an
+//! addition on this core in the kernel's instruction set, from which it derives the compute limit of the
+//! vectorised configurations on this core and the fraction of it each reaches
+//! ([`ohl_app::bench::limit`]).
 //! Writes `<out>/<label>.csv`, `<out>/<label>_run.csv`, `<out>/<label>_primitives.csv` and the plot
 //! `<out>/throughput.png` / `.svg` (against `--baseline` if given).
 
@@ -137,22 +139,40 @@ pub fn main(args: BenchArgs) -> ExitCode {
 
     let p = bench::measure_primitives();
     out!(
-        "core clock ~{:.2} GHz (dependent adds, CPU time); sqrt {:.2} cycles/double, division {:.2} cycles/double (throughput, {} copy)",
+        "core clock ~{:.2} GHz (dependent adds, CPU time); throughput in cycles per double ({} copy): sqrt {:.3}, division {:.3}, multiplication {:.3}, addition {:.3}",
         p.clock_hz * 1e-9,
+        p.isa,
         p.sqrt_cycles,
         p.div_cycles,
-        p.isa
+        p.mul_cycles,
+        p.add_cycles
     );
+    for c in [Config::PlaneWeight, Config::Wind3d, Config::ViscousSmoothed] {
+        if let Some(b) = bench::limit::budget(bench::Workload::Kernel(c)) {
+            let l = bench::limit::limit(&b, &p);
+            out!(
+                "compute limit of {} on this core: {:.3e} node-steps/s ({:.2} cycles per node-step on the {}); \
+                 bound of its two passes one after the other: {:.3e} ({:.2} cycles)",
+                c.name(),
+                l.node_steps_per_s,
+                l.cycles,
+                l.unit,
+                l.passes_node_steps_per_s,
+                l.passes_cycles
+            );
+        }
+    }
 
     out!(
-        "\n{:<18} {:>6} {:>7} {:>8} {:>14} {:>10} {:>8}  load",
+        "\n{:<18} {:>6} {:>7} {:>8} {:>14} {:>10} {:>8} {:>9}  load",
         "config",
         "N",
         "nodes",
         "steps",
         "node-steps/s",
         "ns/node",
-        "cycles"
+        "cycles",
+        "of limit"
     );
     let mut rows = Vec::new();
     let sized = |ws: &'static [bench::Workload], ns: &'static [usize]| {
@@ -163,15 +183,18 @@ pub fn main(args: BenchArgs) -> ExitCode {
         {
             let load = bench::load_average();
             let r = bench::measure_kernel(c, n, node_steps, reps);
+            let frac = bench::fraction_of_limit(&r.config, r.node_steps_per_s(), &p)
+                .map_or("-".to_string(), |(_, f)| format!("{:.0} %", 100.0 * f));
             out!(
-                "{:<18} {:>6} {:>7} {:>8} {:>14.4e} {:>10.3} {:>8.1}  {load}",
+                "{:<18} {:>6} {:>7} {:>8} {:>14.4e} {:>10.3} {:>8.1} {:>9}  {load}",
                 r.config,
                 r.n,
                 r.nodes,
                 r.steps,
                 r.node_steps_per_s(),
                 r.ns_per_node_step(),
-                r.ns_per_node_step() * 1e-9 * p.clock_hz
+                r.ns_per_node_step() * 1e-9 * p.clock_hz,
+                frac
             );
             rows.push((r, load));
         }
@@ -195,14 +218,22 @@ pub fn main(args: BenchArgs) -> ExitCode {
 
     let mut failed = false;
     let kernel_csv = args.out.join(format!("{}.csv", args.label));
-    if let Err(e) = bench::write_kernel_csv(&kernel_csv, &args.label, &machine, &rows, build) {
+    if let Err(e) = bench::write_kernel_csv(&kernel_csv, &args.label, &machine, &rows, build, &p) {
         err!("error: cannot write {}: {e}", kernel_csv.display());
         failed = true;
     }
     let prim_csv = args.out.join(format!("{}_primitives.csv", args.label));
     let prim = format!(
-        "clock_hz,isa,sqrt_cycles_per_double,div_cycles_per_double,cpu,build,load_1_5_15,date_utc\n{:.4e},{},{:.3},{:.3},{},{build},{},{}\n",
-        p.clock_hz, p.isa, p.sqrt_cycles, p.div_cycles, machine.cpu, machine.load, machine.date
+        "clock_hz,isa,sqrt_cycles_per_double,div_cycles_per_double,mul_cycles_per_double,add_cycles_per_double,cpu,build,load_1_5_15,date_utc\n{:.4e},{},{:.3},{:.3},{:.4},{:.4},{},{build},{},{}\n",
+        p.clock_hz,
+        p.isa,
+        p.sqrt_cycles,
+        p.div_cycles,
+        p.mul_cycles,
+        p.add_cycles,
+        machine.cpu,
+        machine.load,
+        machine.date
     );
     if let Err(e) = std::fs::write(&prim_csv, prim) {
         err!("error: cannot write {}: {e}", prim_csv.display());
