@@ -20,7 +20,10 @@
 //!
 //! `c_mul`, `c_add`, `c_div`, `c_sqrt` [cycles per double] are measured throughputs (independent
 //! operations, data in L1); comparisons and `max` are taken on the multiply pipes, as AMD family 19h
-//! executes them (the Software Optimization Guide for family 19h; LLVM's Znver4 scheduling model).
+//! executes them (the Software Optimization Guide for family 19h; LLVM's Znver4 scheduling model). A
+//! division and a square root also take `o_div`, `o_sqrt` cycles of a multiply pipe per instruction,
+//! measured ([`super::pipes`]): the multiply pipes count `mul + cmp + div o_div + sqrt o_sqrt`
+//! multiplications' worth.
 //! Loads and stores are not measured: a core of AMD family 17h-19h or Intel since Haswell issues two
 //! vector loads and one vector store per cycle, so `c_load = 1 / (2 w)`, `c_store = 1 / w` for `w`
 //! doubles per vector of the instruction set (4 for AVX2 and for AVX-512 on Zen 4, which splits a 512-bit
@@ -144,7 +147,10 @@ fn doubles_per_access(isa: &str) -> f64 {
 fn busiest(o: &Ops, p: &Primitives) -> (&'static str, f64) {
     let w = doubles_per_access(p.isa);
     let units = [
-        ("multiply pipes", o.mul_pipe as f64 * p.mul_cycles),
+        (
+            "multiply pipes",
+            (o.mul_pipe as f64 + o.div as f64 * p.div_mul_cycles + o.sqrt as f64 * p.sqrt_mul_cycles) * p.mul_cycles,
+        ),
         ("add pipes", o.add as f64 * p.add_cycles),
         ("divider", o.div as f64 * p.div_cycles + o.sqrt as f64 * p.sqrt_cycles),
         ("loads", o.loads as f64 / (2.0 * w)),
@@ -183,6 +189,9 @@ mod tests {
             div_cycles: 1.25,
             mul_cycles: 0.125,
             add_cycles: 0.125,
+            // The write-up's derivation takes the divider as a unit of its own.
+            div_mul_cycles: 0.0,
+            sqrt_mul_cycles: 0.0,
         };
         for (c, total, cycles, expect) in [
             (Config::PlaneWeight, ops(35, 27, 1, 1, 30, 12), 4.375, 8.36e8),
@@ -206,6 +215,11 @@ mod tests {
         let slow = Primitives { div_cycles: 4.0, sqrt_cycles: 6.0, ..p };
         let l = limit(&budget(Workload::Kernel(Config::PlaneWeight)).unwrap(), &slow);
         assert_eq!((l.unit, l.cycles), ("divider", 10.0));
+        // A division and a square root taking 2.5 cycles of a multiply pipe each: plane_weight's multiply
+        // pipes count 35 + 2.5 + 2.5 multiplications' worth, 5 cycles.
+        let shared = Primitives { div_mul_cycles: 2.5, sqrt_mul_cycles: 2.5, ..p };
+        let l = limit(&budget(Workload::Kernel(Config::PlaneWeight)).unwrap(), &shared);
+        assert_eq!((l.unit, l.cycles), ("multiply pipes", 5.0));
         assert!(budget(Workload::Kernel(Config::TwoMaterialPlane)).is_none());
         assert!(budget(Workload::SectionStrings).is_none());
     }

@@ -12,6 +12,7 @@
 //! time.
 
 pub mod limit;
+pub mod pipes;
 pub mod workload;
 
 use std::path::{Path, PathBuf};
@@ -266,6 +267,11 @@ pub struct Primitives {
     pub mul_cycles: f64,
     /// addition of doubles, throughput, in the kernel's instruction set (packed) [cycles]
     pub add_cycles: f64,
+    /// multiply-pipe cycles a packed division takes from the multiplications beside it ([`pipes`]; 0
+    /// where not measured) [cycles per instruction]
+    pub div_mul_cycles: f64,
+    /// multiply-pipe cycles a packed square root takes ([`pipes`]; 0 where not measured) [cycles]
+    pub sqrt_mul_cycles: f64,
 }
 
 #[inline(always)]
@@ -361,7 +367,7 @@ fn add_chain(n: usize, y: f64) -> f64 {
 }
 
 /// The median CPU time of `reps` runs of `f` [s].
-fn median_of(reps: usize, mut f: impl FnMut()) -> f64 {
+pub(crate) fn median_of(reps: usize, mut f: impl FnMut()) -> f64 {
     median(
         (0..reps)
             .map(|_| {
@@ -413,7 +419,13 @@ pub fn measure_primitives() -> Primitives {
     });
     let per_lane = |t: f64| t * clock_hz / (rounds * k.len() * LANES) as f64;
     std::hint::black_box(&out);
+    let (div_mul_cycles, sqrt_mul_cycles) = match pipes::occupancy(clock_hz) {
+        Some((d, s)) if d.is_finite() && s.is_finite() => (d, s),
+        _ => (0.0, 0.0),
+    };
     Primitives {
+        div_mul_cycles,
+        sqrt_mul_cycles,
         clock_hz,
         isa,
         sqrt_cycles: per(t_sqrt),

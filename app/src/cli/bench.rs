@@ -139,13 +139,15 @@ pub fn main(args: BenchArgs) -> ExitCode {
 
     let p = bench::measure_primitives();
     out!(
-        "core clock ~{:.2} GHz (dependent adds, CPU time); throughput in cycles per double ({} copy): sqrt {:.3}, division {:.3}, multiplication {:.3}, addition {:.3}",
+        "core clock ~{:.2} GHz (dependent adds, CPU time); throughput in cycles per double ({} copy): sqrt {:.3}, division {:.3}, multiplication {:.3}, addition {:.3}; multiply-pipe cycles taken by a packed division {:.2}, by a square root {:.2}",
         p.clock_hz * 1e-9,
         p.isa,
         p.sqrt_cycles,
         p.div_cycles,
         p.mul_cycles,
-        p.add_cycles
+        p.add_cycles,
+        p.div_mul_cycles,
+        p.sqrt_mul_cycles
     );
     for c in [Config::PlaneWeight, Config::Wind3d, Config::ViscousSmoothed] {
         if let Some(b) = bench::limit::budget(bench::Workload::Kernel(c)) {
