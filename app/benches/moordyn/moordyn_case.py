@@ -572,14 +572,18 @@ def main():
                row["ratio_at_own_limits"], lim_eq_dtm, row["ratio_at_equal_error_limit"]),
             flush=True,
         )
+        # Written after every N, so that a run stopped before the largest N keeps the rows it has.
+        write_csv(args.csv, rows)
+    print("wrote", args.csv)
 
-    os.makedirs(os.path.dirname(os.path.abspath(args.csv)), exist_ok=True)
-    with open(args.csv, "w", newline="") as f:
+
+def write_csv(path, rows):
+    os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
+    with open(path, "w", newline="") as f:
         wr = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
         wr.writeheader()
         for row in rows:
             wr.writerow({k: ("%.6g" % v if isinstance(v, float) else v) for k, v in row.items()})
-    print("wrote", args.csv)
 
 
 if __name__ == "__main__":
