@@ -6,6 +6,7 @@ mod bad_input;
 mod cases;
 mod closed_pipe;
 mod converge;
+mod dry_run;
 mod examples;
 mod killed_run;
 mod line_cases;

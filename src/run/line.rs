@@ -33,7 +33,8 @@ use crate::output::{Peaks, ProbePoint, Snapshots, Timeseries};
 use crate::scenario::build::Stop;
 use crate::scenario::line::LinePlan;
 use crate::scenario::work::{
-    BUDGET_NODE_STEPS, BUDGET_OUTPUT_BYTES, BYTES_PER_NUMBER, RUN_THROUGHPUT_LINE, RUN_THROUGHPUT_SHORT_CIRCUIT,
+    BUDGET_NODE_STEPS, BUDGET_OUTPUT_BYTES, BYTES_PER_NUMBER, CLEARANCE_MEASURED_SHARE, CLEARANCE_NS_PER_PAIR_NODE,
+    CONTACT_NS_PER_PAIR_NODE, EM_NS_PER_NEAR_PAIR, EM_NS_PER_PAIR_NODE, EM_NS_PER_PAIR_PRODUCT, LINE_NS_PER_NODE_STEP,
 };
 use crate::scheme::{LineExplicit, LineInstability};
 
@@ -235,10 +236,86 @@ pub enum LineRunError {
     },
 }
 
+/// The sizes of a line's elements that set the cost of one of its levels beyond the kernel's node-steps
+/// (the cost model of [`crate::scenario::work`], "A line"): sums over pairs of conductors of their node
+/// counts `n_a + n_b` (and products `n_a n_b`).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct LineElementSizes {
+    /// the contact's pairs ([`crate::line::contact`], evaluated every level): sum of `n_a + n_b` [nodes]
+    pub contact_pair_nodes: f64,
+    /// the clearance tracker's conductor pairs (every two conductors of two different groups, measured
+    /// at some levels, [`crate::line::clearance`]): sum of `n_a + n_b` [nodes]
+    pub clearance_pair_nodes: f64,
+    /// the short circuit's carrier pairs of two phases (by chords, evaluated while current flows,
+    /// [`crate::scheme::electromagnetic`]): sum of `n_a + n_b` [nodes]
+    pub em_pair_nodes: f64,
+    /// the same pairs' sum of `n_a n_b`, times `k0^2 M0 / (k^2 M)` (the chords' `k` segments and refresh
+    /// every `M` steps against the defaults `k0 = 4`, `M0 = 8` that `ohl bench --costs` measures) [nodes^2]
+    pub em_pair_products: f64,
+    /// the near field of two carriers of one phase (segment against segment, every level): the sum over
+    /// the ordered pairs of `n_b min(2 w + 1, n_a)`, `w` the near window [segment pairs]
+    pub em_near_products: f64,
+}
+
+impl LineElementSizes {
+    /// The sizes of `line`'s contact and electromagnetic load (as set on it) and of the clearance
+    /// tracking of `groups` (the conductor groups of [`LinePlan::groups`]).
+    pub fn of(line: &LineExplicit, groups: &[Vec<usize>]) -> LineElementSizes {
+        let nodes = |c: usize| line.conductors()[c].wire().nodes() as f64;
+        let mut z = LineElementSizes::default();
+        if let Some(ct) = line.contact() {
+            z.contact_pair_nodes = ct.spec().pairs.iter().map(|p| nodes(p.a) + nodes(p.b)).sum();
+        }
+        for (g, ga) in groups.iter().enumerate() {
+            for gb in &groups[g + 1..] {
+                for &a in ga {
+                    for &b in gb {
+                        z.clearance_pair_nodes += nodes(a) + nodes(b);
+                    }
+                }
+            }
+        }
+        if let Some(em) = line.electromagnetic() {
+            let (k, m) = (em.numerics.chord_segments as f64, em.numerics.refresh_steps as f64);
+            let chords = 4.0 * 4.0 * 8.0 / (k * k * m);
+            let window = 2.0 * line.em_near_window().unwrap_or(0) as f64 + 1.0;
+            for (i, ca) in em.carriers.iter().enumerate() {
+                for cb in &em.carriers[i + 1..] {
+                    let (na, nb) = (nodes(ca.conductor), nodes(cb.conductor));
+                    if ca.phase != cb.phase {
+                        z.em_pair_nodes += na + nb;
+                        z.em_pair_products += chords * na * nb;
+                    } else if ca.conductor != cb.conductor {
+                        z.em_near_products += nb * window.min(na) + na * window.min(nb);
+                    }
+                }
+            }
+        }
+        z
+    }
+
+    /// CPU time of one level's contact and clearances at the constants of [`crate::scenario::work`] [s].
+    pub fn every_level_s(&self) -> (f64, f64) {
+        (
+            1e-9 * CONTACT_NS_PER_PAIR_NODE * self.contact_pair_nodes,
+            1e-9 * CLEARANCE_MEASURED_SHARE * CLEARANCE_NS_PER_PAIR_NODE * self.clearance_pair_nodes,
+        )
+    }
+
+    /// CPU time of one level's pair forces while current flows [s].
+    pub fn em_level_s(&self) -> f64 {
+        1e-9 * (EM_NS_PER_PAIR_NODE * self.em_pair_nodes
+            + EM_NS_PER_PAIR_PRODUCT * self.em_pair_products
+            + EM_NS_PER_NEAR_PAIR * self.em_near_products)
+    }
+}
+
 /// The work of a line run, estimated before it runs as for one conductor ([`crate::scenario::work`]):
 /// every conductor's nodes at every step of the line, `steps = ceil(T / dt) + 1`; the output is every
 /// conductor's time series and snapshots, the clearances and the towers, at most
-/// [`BYTES_PER_NUMBER`] bytes a number.
+/// [`BYTES_PER_NUMBER`] bytes a number. Its CPU time is the cost model of [`crate::scenario::work`]
+/// ("A line"): the kernel's node-steps, the contact and the clearances every level, the pair forces at
+/// the levels while current flows.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LineWorkEstimate {
     /// conductors of the line (a bundle's sub-conductors each) [-]
@@ -255,9 +332,10 @@ pub struct LineWorkEstimate {
     pub node_steps: f64,
     /// bytes of all the output files (upper bound) [bytes]
     pub output_bytes: f64,
-    /// throughput the time estimate assumes: [`RUN_THROUGHPUT_LINE`], or [`RUN_THROUGHPUT_SHORT_CIRCUIT`]
-    /// with a short circuit ([`crate::scenario::work`]) [node-steps/s]
-    pub throughput_node_steps_per_s: f64,
+    /// levels at which short-circuit current flows (within the horizon) [-]
+    pub current_steps: f64,
+    /// the sizes of the line's contact, clearances and pair forces
+    pub sizes: LineElementSizes,
 }
 
 /// Why a line run is refused before it starts.
@@ -291,6 +369,14 @@ impl LineWorkEstimate {
         }
         let pairs = plan.groups.len() * plan.groups.len().saturating_sub(1) / 2;
         numbers += rows * (1 + pairs + 5 * plan.line.supports().count()) as f64;
+        // The levels in the flow intervals [start, end) up to the horizon: one per step of dt.
+        let current_steps = plan.line.electromagnetic().map_or(0.0, |em| {
+            em.current
+                .intervals_s()
+                .iter()
+                .map(|&(a, b)| ((b.min(horizon) - a.min(horizon)) / dt).ceil().max(0.0))
+                .sum()
+        });
         LineWorkEstimate {
             conductors: plan.line.conductors().len(),
             nodes,
@@ -299,17 +385,26 @@ impl LineWorkEstimate {
             steps,
             node_steps: nodes as f64 * steps,
             output_bytes: BYTES_PER_NUMBER * numbers,
-            throughput_node_steps_per_s: if plan.short_circuit.is_some() {
-                RUN_THROUGHPUT_SHORT_CIRCUIT
-            } else {
-                RUN_THROUGHPUT_LINE
-            },
+            current_steps,
+            sizes: LineElementSizes::of(&plan.line, &plan.groups),
         }
     }
 
-    /// Estimated time on one core at [`LineWorkEstimate::throughput_node_steps_per_s`] [s].
+    /// The estimated CPU time of the run on one core, per element [s]: the kernel's node-steps (with the
+    /// conductors' observers), the contact, the clearances, the pair forces ([`crate::scenario::work`]).
+    pub fn cpu_time_parts_s(&self) -> [f64; 4] {
+        let (contact, clearance) = self.sizes.every_level_s();
+        [
+            1e-9 * LINE_NS_PER_NODE_STEP * self.node_steps,
+            contact * self.steps,
+            clearance * self.steps,
+            self.sizes.em_level_s() * self.current_steps,
+        ]
+    }
+
+    /// Estimated time on one core [s]: the sum of [`LineWorkEstimate::cpu_time_parts_s`].
     pub fn wall_time_s(&self) -> f64 {
-        self.node_steps / self.throughput_node_steps_per_s
+        self.cpu_time_parts_s().iter().sum()
     }
 
     /// `Err` if the run cannot end: its step does not advance the clock at the horizon.

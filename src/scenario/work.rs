@@ -37,14 +37,39 @@
 //!   fixed costs weigh most) ran at 6.4e7 to 1.05e8;
 //! - a section (`[section]`), [`RUN_THROUGHPUT_SECTION`] = 8e7 node-steps/s: the mechanical examples
 //!   and cases a-d (strings, spans, a ground) ran at 8.3e7 to 1.5e8;
-//! - a line (`[line]`, [`crate::run::line::LineWorkEstimate`]), [`RUN_THROUGHPUT_LINE`] = 1e7
-//!   node-steps/s: cases e-g and k (links, towers, clearances every level) ran at 1.1e7 to 3.9e7;
-//!   with a short circuit (`[short_circuit]`: the pair forces of every two conductors, and contact),
-//!   [`RUN_THROUGHPUT_SHORT_CIRCUIT`] = 1e6 node-steps/s: cases h-l as shipped run at 1.2e6 (h) to
-//!   5.5e6 (j) since the pair forces' lanes of issue 27 (2.6e5 to 4e6 before, case h at 160 segments
-//!   at 2.6e5). The pair forces grow as N^2, not N (`ohl bench`: case j's cost 41, 105, 338 us per
-//!   step at 50, 100, 200 segments per phase), so a fine grid runs slower than this, and a short fault
-//!   in a long run faster.
+//! - a line (`[line]`, [`crate::run::line::LineWorkEstimate`]): no single rate fits, since the elements
+//!   a line adds cost more than its kernel and scale differently (whole runs of cases e-l ran at 1.2e6
+//!   to 3.9e7 node-steps per CPU second). Its time is a sum per element, each an amount of work times
+//!   a cost measured by `ohl bench --costs` (below):
+//!
+//!   ```text
+//!   t = node_steps k_node                                         kernel, links, conductors' observers
+//!     + steps k_contact sum_contact_pairs (n_a + n_b)             contact, every level
+//!     + steps s k_clear sum_clearance_pairs (n_a + n_b)           clearances, a share s of the levels
+//!     + current_steps sum_carrier_pairs (k_em1 (n_a + n_b) + k_em2 n_a n_b 128 / (k^2 M))  pair forces
+//!     + current_steps k_near sum_near_pairs (n_b min(2 w + 1, n_a) + n_a min(2 w + 1, n_b))  near field
+//!   ```
+//!
+//!   with `n_a` a conductor's nodes, the contact's pairs those of [`crate::line::contact`] (every two
+//!   phases and a bundle's sub-conductors, set with a short circuit), the clearance pairs every two
+//!   conductors of two different groups, the carrier pairs every two current carriers of different
+//!   phases (by chords of `k` segments refreshed every `M` steps; the defaults 4 and 8 give the factor
+//!   1), the near pairs two carriers of one phase on different conductors (a bundle's sub-conductors, a
+//!   dropper and its busbar: segment against segment within the near window `w`, every level), and
+//!   `current_steps` the levels inside the fault's flow intervals (the pair forces are evaluated only
+//!   while current flows, [`crate::scheme::electromagnetic`]). The constants
+//!   ([`LINE_NS_PER_NODE_STEP`], [`CONTACT_NS_PER_PAIR_NODE`], [`CLEARANCE_NS_PER_PAIR_NODE`],
+//!   [`EM_NS_PER_PAIR_NODE`], [`EM_NS_PER_PAIR_PRODUCT`]) are the medians over N = 50, 100, 200 of
+//!   `ohl bench --costs` on case j's three phases (the differences of a bare line, the line with the
+//!   contact, with the contact and the pair forces, and with the clearances measured every level; the
+//!   pair forces fitted to `k_em1 (n_a + n_b) + k_em2 n_a n_b`), measured on an AMD EPYC Zen 3 (family 25
+//!   model 1) at load 3-5 and rounded; the measurements are in `figures/bench/README.md` (issue 27,
+//!   third round). The clearance tracker measures a pair only when its distance may have become a new
+//!   least ([`crate::line::clearance`]), which cannot be known before the run: cases e, j and l measured
+//!   26 %, 38 % and 51 % of their levels, so [`CLEARANCE_MEASURED_SHARE`] = 0.35. The near field's
+//!   constant [`EM_NS_PER_NEAR_PAIR`] is derived from the chords' (no workload of `ohl bench` has a near
+//!   pair) and checked on case l, whose droppers are near pairs of their busbars. The estimate is within
+//!   a factor 2 of the measured CPU time of cases e, j and l and of a paper case (`app/tests/dry_run.rs`).
 //!
 //! The explicit kernel alone runs faster: [`THROUGHPUT_NODE_STEPS_PER_S`] = 1.5e8 node-steps/s on one
 //! core for the 3D configurations with wind or internal friction at N >= 200 (`figures/bench/README.md`:
@@ -84,12 +109,31 @@ pub const RUN_THROUGHPUT_SPAN: f64 = 6.0e7;
 /// Throughput of whole runs of a section for the time estimate [node-steps/s] (module documentation).
 pub const RUN_THROUGHPUT_SECTION: f64 = 8.0e7;
 
-/// Throughput of whole runs of a line for the time estimate [node-steps/s] (module documentation).
-pub const RUN_THROUGHPUT_LINE: f64 = 1.0e7;
+/// A line's kernel (with its links and the conductors' observers) [CPU ns per node-step] (module
+/// documentation, "a line").
+pub const LINE_NS_PER_NODE_STEP: f64 = 6.2;
 
-/// Throughput of whole runs of a line with a short circuit for the time estimate [node-steps/s]
+/// The contact between conductors, every level [CPU ns per node of a contact pair] (module documentation).
+pub const CONTACT_NS_PER_PAIR_NODE: f64 = 68.0;
+
+/// The clearances, at a measured level [CPU ns per node of a conductor pair] (module documentation).
+pub const CLEARANCE_NS_PER_PAIR_NODE: f64 = 86.0;
+
+/// Share of the levels at which the clearances are measured, assumed [-] (module documentation).
+pub const CLEARANCE_MEASURED_SHARE: f64 = 0.35;
+
+/// The short circuit's pair forces while current flows, per node of a carrier pair [CPU ns] (module
+/// documentation).
+pub const EM_NS_PER_PAIR_NODE: f64 = 27.0;
+
+/// The short circuit's pair forces while current flows, per product `n_a n_b` of a carrier pair [CPU ns]
 /// (module documentation).
-pub const RUN_THROUGHPUT_SHORT_CIRCUIT: f64 = 1.0e6;
+pub const EM_NS_PER_PAIR_PRODUCT: f64 = 2.5;
+
+/// The near field of two carriers of one phase, per segment pair and level [CPU ns]: the force of one
+/// filament on another, which a chord pair costs once per refresh in both directions,
+/// [`EM_NS_PER_PAIR_PRODUCT`] `k0^2 M0 / 2` = 2.5 x 128 / 2 = 160 (module documentation).
+pub const EM_NS_PER_NEAR_PAIR: f64 = 160.0;
 
 /// [`BUDGET_NODE_STEPS`] at [`THROUGHPUT_NODE_STEPS_PER_S`] [s].
 pub const BUDGET_WALL_S: f64 = BUDGET_NODE_STEPS / THROUGHPUT_NODE_STEPS_PER_S;

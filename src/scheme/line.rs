@@ -315,6 +315,12 @@ impl LineExplicit {
         self.em.as_ref().and_then(|e| e.intersection())
     }
 
+    /// The electromagnetic near field's half-width [segments] (two carriers of one phase,
+    /// [`super::electromagnetic`]), if the load is set.
+    pub fn em_near_window(&self) -> Option<usize> {
+        self.em.as_ref().map(|e| e.near_window())
+    }
+
     /// How many times the electromagnetic geometric factors were evaluated (0 without the load).
     pub fn em_refreshes(&self) -> u64 {
         self.em.as_ref().map_or(0, |e| e.refreshes())

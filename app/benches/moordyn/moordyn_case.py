@@ -10,11 +10,15 @@ For each number of segments N this script
      ODE system);
   2. runs `OHL run` on a copy of the case with `segments = N` and `smoothing = 0` (MoorDyn has no velocity
      smoothing), and on the case as written, reading `cpu_time_s` (CPU time of the step loop);
+  2b. runs ohl again at its own largest stable Courant number: the derived Kelvin-Voigt limit
+     sqrt(1 + z^2) - z (src/scheme/courant.rs, computed with the same operations), times --ohl-margin,
+     checked on the whole run with the stability/energy criterion MoorDyn's step is held to, bisected
+     below it if that fails;
   3. writes the problem as a MoorDyn v2 input (figures/bench/README.md: the mapping), finds MoorDyn's
      largest stable step dtM on this grid by bisection on the whole run, and times MoorDyn's step loop
      in-process (time.process_time around one Step call over the run);
   4. measures the mid-span sag error of both against the reference, finds the MoorDyn step that is as
-     accurate as ohl and times it too, and writes one CSV row.
+     accurate as ohl (at Courant 0.5, and at ohl's limit) and times it too, and writes one CSV row.
 
 Usage (run.sh calls it): python moordyn_case.py --ohl BIN --segments 50 100 200 --out DIR --csv FILE
 """
@@ -71,8 +75,10 @@ def check_case():
 # ---------------------------------------------------------------------------------------------------
 # ohl
 # ---------------------------------------------------------------------------------------------------
-def run_ohl(ohl, n, work, tag, smoothing=None, courant=None, end_time_s=None):
-    """`ohl run` on a copy of the case with N segments (and the given smoothing, Courant number, end)."""
+def run_ohl(ohl, n, work, tag, smoothing=None, courant=None, end_time_s=None, may_fail=False):
+    """`ohl run` on a copy of the case with N segments (and the given smoothing, Courant number, end).
+
+    may_fail: return None instead of raising when ohl exits with an error (a stability probe)."""
     text = open(CASE).read()
     subs = [(r"^segments\s*=\s*\S+", "segments = %d" % n)]
     if smoothing is not None:
@@ -87,7 +93,11 @@ def run_ohl(ohl, n, work, tag, smoothing=None, courant=None, end_time_s=None):
     toml = os.path.join(work, "%s_N%d.toml" % (tag, n))
     open(toml, "w").write(text)
     out = os.path.join(work, "%s_N%d" % (tag, n))
-    subprocess.run([ohl, "run", toml, "--out", out, "--quiet"], check=True)
+    done = subprocess.run([ohl, "run", toml, "--out", out, "--quiet"], check=not may_fail,
+                          stdout=subprocess.DEVNULL if may_fail else None,
+                          stderr=subprocess.DEVNULL if may_fail else None)
+    if done.returncode != 0:
+        return None
     summary = json.load(open(os.path.join(out, "summary.json")))
     ts = np.genfromtxt(os.path.join(out, "timeseries.csv"), delimiter=",", names=True)
     return summary, ts
@@ -313,6 +323,61 @@ def stable_dtm(n, work, scheme):
     return lo * ds / c, lo
 
 
+def ohl_courant_limit(n):
+    """ohl's derived stability limit C_max = sqrt(1 + z^2) - z for this chain (src/scheme/courant.rs).
+
+    The same IEEE operations in the same order as validate.rs: c = sqrt(EA / rho0), ds = l / N,
+    z = eta c / (EA ds), C_max = 1 / (sqrt(1 + z^2) + z); so a Courant number of exactly C_max is
+    accepted by ohl's validation (it refuses C > C_max).
+    """
+    c = math.sqrt(EA_N / RHO_KG_PER_M)
+    ds = SPAN_M / n
+    z = ETA_N_S * c / (EA_N * ds)
+    return 1.0 / (math.sqrt(1.0 + z * z) + z)
+
+
+def ohl_stable(ohl, n, courant, work):
+    """The whole ohl release (smoothing 0, T_END_S) at `courant` passes MoorDyn's criterion: it runs to
+    the end, every output row is finite, the mid-span node stays within 0.5 span of the chord vertically
+    and in the vertical plane (x1 = 0), and the energy total_j (sampled every 0.02 s, every row) never
+    exceeds ENERGY_TOL_J. Returns (stable, largest energy [J])."""
+    got = run_ohl(ohl, n, work, "ohl_probe", smoothing=0.0, courant=courant, may_fail=True)
+    if got is None:
+        return False, math.inf
+    summary, ts = got
+    cols = [ts["mid_dx1_m"], ts["mid_dx3_m"], ts["total_j"]]
+    if not all(np.all(np.isfinite(col)) for col in cols) or summary["final_time_s"] < T_END_S - 1e-6:
+        return False, math.inf
+    energy_max = float(np.max(ts["total_j"]))
+    ok = (np.max(np.abs(ts["mid_dx3_m"])) <= 0.5 * SPAN_M and np.max(np.abs(ts["mid_dx1_m"])) <= 1e-6 * SPAN_M
+          and energy_max <= ENERGY_TOL_J)
+    return bool(ok), energy_max
+
+
+def ohl_stable_courant(ohl, n, work, margin):
+    """ohl's largest stable Courant number on the whole run: margin * C_max when that passes
+    ohl_stable, else a bisection between the paper's 0.5 and it (8 halvings), as for MoorDyn's step.
+    Returns (Courant number used, derived C_max, energy max of the check [J])."""
+    c_max = ohl_courant_limit(n)
+    top = margin * c_max
+    ok, energy = ohl_stable(ohl, n, top, work)
+    print("  N=%d ohl Courant %.6f (%.4g x the derived limit %.6f): %s, energy max %.3g J"
+          % (n, top, margin, c_max, "stable" if ok else "unstable", energy), flush=True)
+    if ok:
+        return top, c_max, energy
+    lo, hi = 0.5, top
+    assert ohl_stable(ohl, n, lo, work)[0]
+    for _ in range(8):
+        mid = 0.5 * (lo + hi)
+        ok, _ = ohl_stable(ohl, n, mid, work)
+        print("  N=%d ohl Courant %.4f: %s" % (n, mid, "stable" if ok else "unstable"), flush=True)
+        if ok:
+            lo = mid
+        else:
+            hi = mid
+    return lo, c_max, ohl_stable(ohl, n, lo, work)[1]
+
+
 # Order of accuracy of MoorDyn's explicit schemes (docs/tschemes.rst of MoorDyn)
 ORDER = {"EULER": 1, "HEUN": 2, "RK2": 2, "RK3": 3, "RK4": 4, "AB2": 2, "AB3": 3, "AB4": 4}
 
@@ -326,10 +391,13 @@ def window_error(t, sag, ref_t, ref_sag, t_win):
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--ohl", required=True, help="the ohl binary to compare")
-    ap.add_argument("--segments", type=int, nargs="+", default=[50, 100, 200])
+    ap.add_argument("--segments", type=int, nargs="+", default=[50, 100, 200, 300])
     ap.add_argument("--scheme", default="RK2", help="MoorDyn tScheme (default RK2, MoorDyn's default)")
     ap.add_argument("--margin", type=float, default=1.0,
                     help="dtM = margin * the largest stable dtM found (default 1: the fastest MoorDyn)")
+    ap.add_argument("--ohl-margin", type=float, default=1.0,
+                    help="ohl's Courant number = margin * its derived limit sqrt(1 + z^2) - z, checked on "
+                         "the whole run (default 1: at the limit)")
     ap.add_argument("--reps", type=int, default=3, help="timed repetitions of each run; the fastest counts")
     ap.add_argument("--window-s", type=float, default=8.0,
                     help="window of the trajectory error: the fall, the first peak, a few swings [s]")
@@ -392,6 +460,11 @@ def main():
         ohl_err = window_error(ts["t_s"], -ts["mid_dx3_m"], ref_t, ref_sag, args.window_s)
         ohl_energy_max = float(np.max(ts["total_j"]))
 
+        # ohl at its own largest stable Courant number (checked on the whole run like MoorDyn's step)
+        lim_courant, lim_derived, lim_check_energy = ohl_stable_courant(args.ohl, n, args.out, args.ohl_margin)
+        lim_summary, lim_ts = fastest(tag="ohl_limit", smoothing=0.0, courant=lim_courant)
+        lim_err = window_error(lim_ts["t_s"], -lim_ts["mid_dx3_m"], ref_t, ref_sag, args.window_s)
+
         # MoorDyn: the largest stable step; the recorded run must keep the energy down too
         dtm_max, courant_max = stable_dtm(n, args.out, args.scheme)
         dtm = args.margin * dtm_max
@@ -407,20 +480,28 @@ def main():
         md_per_sim = md_cpu / md["simulated"]
         md_err = window_error(rec["times"], -rec["mid"], ref_t, ref_sag, args.window_s)
 
-        # MoorDyn at ohl's error: a step smaller by (ohl_err / md_err)^(1/order), lowered by 10 % until
-        # its window error is at most ohl's, then timed on the whole run. When MoorDyn is already at
-        # least as accurate its stable step stands.
-        eq_dtm, eq_err, eq = dtm, md_err, md
-        if md_err > ohl_err:
-            eq_dtm = dtm * (ohl_err / md_err) ** (1.0 / ORDER.get(args.scheme.upper(), 1)) * 0.98
-            while True:
-                w = run_moordyn(n, eq_dtm, args.window_s, args.out, args.scheme, record=True)
-                eq_err = window_error(w["times"], -w["mid"], ref_t, ref_sag, args.window_s)
-                if w["ok"] and eq_err <= ohl_err:
-                    break
-                eq_dtm *= 0.9
-            eq = fastest_moordyn(eq_dtm)
-        eq_per_sim = eq["cpu"] / eq["simulated"]
+        # MoorDyn at ohl's error: a step smaller by (target / md_err)^(1/order), lowered by 10 % until
+        # its window error is at most the target, then timed on the whole run. When MoorDyn is already
+        # at least as accurate its stable step stands.
+        def moordyn_at_error(target):
+            eq_dtm, eq_err, eq = dtm, md_err, md
+            if md_err > target:
+                eq_dtm = dtm * (target / md_err) ** (1.0 / ORDER.get(args.scheme.upper(), 1)) * 0.98
+                while True:
+                    w = run_moordyn(n, eq_dtm, args.window_s, args.out, args.scheme, record=True)
+                    eq_err = window_error(w["times"], -w["mid"], ref_t, ref_sag, args.window_s)
+                    if w["ok"] and eq_err <= target:
+                        break
+                    eq_dtm *= 0.9
+                eq = fastest_moordyn(eq_dtm)
+            return eq_dtm, eq_err, eq["cpu"] / eq["simulated"]
+
+        eq_dtm, eq_err, eq_per_sim = moordyn_at_error(ohl_err)
+        if lim_err == ohl_err:
+            lim_eq_dtm, lim_eq_err, lim_eq_per_sim = eq_dtm, eq_err, eq_per_sim
+        else:
+            lim_eq_dtm, lim_eq_err, lim_eq_per_sim = moordyn_at_error(lim_err)
+        lim_per_sim = lim_summary["cpu_time_s"] / T_END_S
 
         row = {
             "segments": n,
@@ -455,6 +536,20 @@ def main():
             "ohl_fine_window_err_m": ohl_fine_err,
             "ohl_energy_max_j": ohl_energy_max,
             "moordyn_energy_max_j": rec["energy_max"],
+            "ohl_limit_courant_derived": lim_derived,
+            "ohl_limit_courant": lim_summary["courant"],
+            "ohl_limit_dt_s": lim_summary["dt_s"],
+            "ohl_limit_steps": lim_summary["steps"],
+            "ohl_limit_cpu_s": lim_summary["cpu_time_s"],
+            "ohl_limit_cpu_s_per_simulated_s": lim_per_sim,
+            "ohl_limit_node_steps_per_cpu_s": lim_summary["steps"] * (n + 1) / lim_summary["cpu_time_s"],
+            "ohl_limit_window_rel_err": lim_err / ref_peak,
+            "ohl_limit_energy_max_j": float(np.max(lim_ts["total_j"])),
+            "ratio_at_own_limits": md_per_sim / lim_per_sim,
+            "moordyn_equal_error_limit_dt_s": lim_eq_dtm,
+            "moordyn_equal_error_limit_window_rel_err": lim_eq_err / ref_peak,
+            "moordyn_equal_error_limit_cpu_s_per_simulated_s": lim_eq_per_sim,
+            "ratio_at_equal_error_limit": lim_eq_per_sim / lim_per_sim,
             "load_avg_1min": os.getloadavg()[0],
             **context,
         }
@@ -469,14 +564,26 @@ def main():
                ohl_fine_err, ohl_energy_max, rec["energy_max"], eq_dtm, row["ratio_at_equal_error"]),
             flush=True,
         )
+        print(
+            "N=%d  ohl at its limit: Courant %.4f (derived %.4f) %.4f s (%.3g node-steps/s)  error %.2e  "
+            "ratio at own limits %.1f  MoorDyn at this error: dt %.3g s, ratio %.1f"
+            % (n, row["ohl_limit_courant"], lim_derived, row["ohl_limit_cpu_s"],
+               row["ohl_limit_node_steps_per_cpu_s"], row["ohl_limit_window_rel_err"],
+               row["ratio_at_own_limits"], lim_eq_dtm, row["ratio_at_equal_error_limit"]),
+            flush=True,
+        )
+        # Written after every N, so that a run stopped before the largest N keeps the rows it has.
+        write_csv(args.csv, rows)
+    print("wrote", args.csv)
 
-    os.makedirs(os.path.dirname(os.path.abspath(args.csv)), exist_ok=True)
-    with open(args.csv, "w", newline="") as f:
+
+def write_csv(path, rows):
+    os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
+    with open(path, "w", newline="") as f:
         wr = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
         wr.writeheader()
         for row in rows:
             wr.writerow({k: ("%.6g" % v if isinstance(v, float) else v) for k, v in row.items()})
-    print("wrote", args.csv)
 
 
 if __name__ == "__main__":

@@ -10,7 +10,7 @@
 #   MOORDYN_TAG  pinned MoorDyn version (default v2.7.1)
 #   VENV         virtual environment with MoorDyn built from source (default /tmp/ohl-moordyn-venv); built
 #                by build_moordyn.sh when it has no moordyn module or REBUILD=1
-#   SEGMENTS     numbers of segments (default "50 100 200")
+#   SEGMENTS     numbers of segments (default "50 100 200 300")
 #   REPS         timed repetitions, the fastest counts (default 3)
 #   SCHEME       MoorDyn's time scheme (tScheme; default RK2, MoorDyn's default)
 #   WORK         scratch directory for inputs and outputs (default /tmp/ohl-moordyn-work)
@@ -23,7 +23,7 @@ ohl=$(realpath "${1:-$root/target/release/ohl}")
 venv=${VENV:-/tmp/ohl-moordyn-venv}
 work=${WORK:-/tmp/ohl-moordyn-work}
 csv=${CSV:-$root/figures/bench/moordyn_ratio.csv}
-segments=${SEGMENTS:-50 100 200}
+segments=${SEGMENTS:-50 100 200 300}
 
 [ -x "$ohl" ] || { echo "run.sh: no ohl binary at $ohl (cargo build --release, or pass its path)" >&2; exit 2; }
 if [ "${REBUILD:-0}" = 1 ] || ! (cd / && "$venv/bin/python" -c 'import moordyn' 2>/dev/null); then

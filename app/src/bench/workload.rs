@@ -15,11 +15,21 @@
 //!   for 10 s (the longest the scenario allows, longer than any timed episode), and the same line
 //!   without the short circuit;
 //!
+//! Two more workloads are not in the throughput tables but time the elements of the `--dry-run` cost
+//! model of a line ([`ohl::scenario::work`], `ohl bench --costs`), on case j's three phases as well:
+//!
+//! - `short_circuit_contact`: the short circuit set but its current starting at 900 s, after every timed
+//!   episode: the contact between the phases ([`ohl::scheme::conductor_contact`], set with a short
+//!   circuit) acts at every level, the pair forces never;
+//! - `line_clearances`: the bare line with the clearance tracker ([`ohl::line::clearance`]) measuring
+//!   every pair of phases at every level, as `ohl run` does at a level where a new least is possible.
+//!
 //! Interphase spacers are links of the library's model ([`ohl::line::LinkKind::InterphaseSpacer`]) that
 //! the line scenarios do not offer, so no committed case has one; they are not timed here.
 //!
 //! The difference of a pair's times per node-step is the element's cost per node-step.
 
+use ohl::line::clearance::ClearanceTracker;
 use ohl::scenario;
 pub use ohl::scheme::configs::Config;
 use ohl::scheme::{Explicit, Ground, LineExplicit};
@@ -43,7 +53,19 @@ pub enum Workload {
         /// with the short circuit
         forces: bool,
     },
+    /// case j's three phases with the short circuit's contact but no current in the timed steps
+    ShortCircuitContact,
+    /// case j's bare three phases with their clearances measured every level
+    LineClearances,
 }
+
+/// The workloads of `ohl bench --costs`, in the order they are subtracted.
+pub const COSTS: [Workload; 4] = [
+    Workload::ShortCircuit { forces: false },
+    Workload::ShortCircuitContact,
+    Workload::ShortCircuit { forces: true },
+    Workload::LineClearances,
+];
 
 /// The workloads with `N` the segments of one wire, in table order.
 pub const WIRE: [Workload; 5] = [
@@ -74,12 +96,14 @@ impl Workload {
             Workload::Bundle { spacers: false } => "bundle_bare",
             Workload::ShortCircuit { forces: true } => "short_circuit",
             Workload::ShortCircuit { forces: false } => "short_circuit_bare",
+            Workload::ShortCircuitContact => "short_circuit_contact",
+            Workload::LineClearances => "line_clearances",
         }
     }
 
     /// Parse a name given by [`Workload::name`].
     pub fn from_name(s: &str) -> Option<Workload> {
-        WIRE.into_iter().chain(LINE).find(|w| w.name() == s)
+        WIRE.into_iter().chain(LINE).chain(COSTS).find(|w| w.name() == s)
     }
 
     /// The solver of this workload at `n` segments (per span for a section or line), at `t = 0`.
@@ -109,18 +133,28 @@ impl Workload {
                 });
                 Solver::Line(line(&t, self.name()))
             }
-            Workload::ShortCircuit { forces } => {
+            Workload::ShortCircuit { .. } | Workload::ShortCircuitContact | Workload::LineClearances => {
                 let mut t = case_table(include_str!("../../../cases/j_distribution_reclose.toml"));
                 for_conductors(&mut t, |c| set(c, &["section"], "segments_per_span", n));
-                if forces {
+                let start = match self {
+                    Workload::ShortCircuit { forces: true } => Some(0.0),
+                    Workload::ShortCircuitContact => Some(900.0),
+                    _ => None,
+                };
+                if let Some(start) = start {
                     let sc = t.get_mut("short_circuit").and_then(|s| s.as_table_mut()).expect("case j's fault");
                     sc.remove("reclose");
-                    sc.insert("start_s".into(), toml::Value::Float(0.0));
+                    sc.insert("start_s".into(), toml::Value::Float(start));
                     sc.insert("duration_s".into(), toml::Value::Float(10.0));
                 } else {
                     t.remove("short_circuit");
                 }
-                Solver::Line(line(&t, self.name()))
+                let plan = line_plan(&t, self.name());
+                if self == Workload::LineClearances {
+                    Solver::LineClearances(plan.line, ClearanceTracker::new(plan.groups))
+                } else {
+                    Solver::Line(plan.line)
+                }
             }
         }
     }
@@ -159,9 +193,13 @@ fn for_conductors(t: &mut toml::Table, mut f: impl FnMut(&mut toml::Table)) {
 }
 
 fn line(t: &toml::Table, name: &str) -> LineExplicit {
+    line_plan(t, name).line
+}
+
+fn line_plan(t: &toml::Table, name: &str) -> scenario::line::LinePlan {
     let text = toml::to_string(t).expect("a TOML table serialises");
     let s = scenario::line::parse(&text, name).unwrap_or_else(|e| panic!("{e}"));
-    scenario::line::plan(&s, name).unwrap_or_else(|e| panic!("{e}")).line
+    scenario::line::plan(&s, name).unwrap_or_else(|e| panic!("{e}"))
 }
 
 /// The solver of a workload: one wire or a line.
@@ -172,6 +210,8 @@ pub enum Solver {
     Wire(Explicit),
     /// a line of several conductors
     Line(LineExplicit),
+    /// a line whose clearances are measured after every step
+    LineClearances(LineExplicit, ClearanceTracker),
 }
 
 impl Solver {
@@ -179,7 +219,7 @@ impl Solver {
     pub fn nodes(&self) -> usize {
         match self {
             Solver::Wire(s) => s.wire().nodes(),
-            Solver::Line(l) => l.conductors().iter().map(|c| c.wire().nodes()).sum(),
+            Solver::Line(l) | Solver::LineClearances(l, _) => l.conductors().iter().map(|c| c.wire().nodes()).sum(),
         }
     }
 
@@ -187,7 +227,7 @@ impl Solver {
     pub fn dt_s(&self) -> f64 {
         match self {
             Solver::Wire(s) => s.params().dt_s,
-            Solver::Line(l) => l.params().dt_s,
+            Solver::Line(l) | Solver::LineClearances(l, _) => l.params().dt_s,
         }
     }
 
@@ -197,6 +237,20 @@ impl Solver {
         match self {
             Solver::Wire(s) => s.step(dt).unwrap_or_else(|e| panic!("{what}: {e}")),
             Solver::Line(l) => l.step(dt).unwrap_or_else(|e| panic!("{what}: {e}")),
+            Solver::LineClearances(l, c) => {
+                l.step(dt).unwrap_or_else(|e| panic!("{what}: {e}"));
+                c.observe(&l.wires(), l.time_s());
+            }
+        }
+    }
+
+    /// The line and its element sizes for the cost model (None for one wire): the clearance pairs only
+    /// where the clearances are measured.
+    pub fn line_sizes(&self) -> Option<ohl::run::line::LineElementSizes> {
+        match self {
+            Solver::Wire(_) => None,
+            Solver::Line(l) => Some(ohl::run::line::LineElementSizes::of(l, &[])),
+            Solver::LineClearances(l, c) => Some(ohl::run::line::LineElementSizes::of(l, c.groups())),
         }
     }
 }
@@ -219,6 +273,8 @@ mod tests {
             (Workload::ShortCircuit { forces: true }, 3 * (n + 1)),
             (Workload::ShortCircuit { forces: false }, 3 * (n + 1)),
             (Workload::GroundContact, n + 1),
+            (Workload::ShortCircuitContact, 3 * (n + 1)),
+            (Workload::LineClearances, 3 * (n + 1)),
         ];
         let mut states = Vec::new();
         for (w, nodes) in expected {
@@ -233,12 +289,22 @@ mod tests {
         let wires = |s: &Solver| -> Vec<Vec<f64>> {
             match s {
                 Solver::Wire(w) => vec![w.wire().x[2].clone()],
-                Solver::Line(l) => l.conductors().iter().map(|c| c.wire().x[2].clone()).collect(),
+                Solver::Line(l) | Solver::LineClearances(l, _) => {
+                    l.conductors().iter().map(|c| c.wire().x[2].clone()).collect()
+                }
             }
         };
         assert_ne!(wires(&states[1]), wires(&states[2]), "the spacers change the bundle's motion");
         assert_ne!(wires(&states[3]), wires(&states[4]), "the pair forces change the phases' motion");
         let ground = &wires(&states[5])[0];
         assert!(ground.iter().all(|&x| x >= 0.0), "on the ground at 0 m: {ground:?}");
+        // The cost workloads: the contact and the clearances do not change case j's bare motion before
+        // the phases come near (no contact force, the tracker only reads); the sizes are those counted.
+        assert_eq!(wires(&states[6]), wires(&states[4]), "no current, no contact force yet");
+        assert_eq!(wires(&states[7]), wires(&states[4]), "the clearance tracker only reads");
+        let contact = states[6].line_sizes().unwrap();
+        assert_eq!(contact.contact_pair_nodes, 3.0 * 2.0 * (n + 1) as f64);
+        assert_eq!(contact.em_pair_products, 3.0 * ((n + 1) * (n + 1)) as f64);
+        assert_eq!(states[7].line_sizes().unwrap().clearance_pair_nodes, 3.0 * 2.0 * (n + 1) as f64);
     }
 }

@@ -46,6 +46,11 @@ pub struct BenchArgs {
     /// the committed figure from the committed CSVs
     #[arg(long, value_name = "CSV")]
     replot: Option<PathBuf>,
+    /// measure the constants of the `--dry-run` estimate of a line (case j's three phases at N = 50,
+    /// 100, 200: the kernel, the contact, the pair forces, the clearances), print them beside the
+    /// compiled-in ones and exit; nothing written
+    #[arg(long)]
+    costs: bool,
 }
 
 /// Reads a kernel CSV with its label (the file stem).
@@ -114,6 +119,89 @@ fn fixed(spec: &str) -> ExitCode {
     }
 }
 
+/// `ohl bench --costs`: the constants of the line's cost model ([`ohl::scenario::work`]) on this core,
+/// from the differences of the [`bench::workload::COSTS`] workloads at each N, per step (median CPU
+/// time of the repetitions): kernel = bare / nodes; contact = (contact - bare) / its pair nodes;
+/// clearances = (clearances - bare) / their pair nodes; pair forces = (forces - contact), fitted by least
+/// squares over the N to `k1 (n_a + n_b) + k2 n_a n_b` summed over the carrier pairs.
+fn costs(reps: usize, node_steps: f64) -> ExitCode {
+    use ohl::scenario::work;
+    let machine = bench::machine();
+    out!("ohl bench --costs: {}, load {}, {}, git {}", machine.cpu, machine.load, machine.date, machine.git);
+    out!(
+        "{:>5} {:>6} {:>13} {:>13} {:>13} {:>13} {:>11} {:>11} {:>11} {:>11}",
+        "N",
+        "nodes",
+        "bare [us]",
+        "contact [us]",
+        "forces [us]",
+        "clear. [us]",
+        "kernel ns/n",
+        "contact ns",
+        "clear. ns",
+        "forces [us]"
+    );
+    let (mut kernel, mut contact, mut clear) = (Vec::new(), Vec::new(), Vec::new());
+    let mut em = Vec::new(); // (pair nodes, pair products, us per step)
+    for n in bench::LINE_SIZES {
+        let mut per_step = [0.0; 4];
+        let mut sizes = [Default::default(); 4];
+        let mut nodes = 0;
+        for (k, w) in bench::workload::COSTS.into_iter().enumerate() {
+            let r = bench::measure_kernel(w, n, node_steps, reps);
+            per_step[k] = r.median_s / r.steps as f64;
+            sizes[k] = w.solver(n).line_sizes().expect("a line workload");
+            nodes = r.nodes;
+        }
+        let [bare, with_contact, with_forces, with_clear] = per_step;
+        let k_node = 1e9 * bare / nodes as f64;
+        let k_contact = 1e9 * (with_contact - bare) / sizes[1].contact_pair_nodes;
+        let k_clear = 1e9 * (with_clear - bare) / sizes[3].clearance_pair_nodes;
+        let forces = with_forces - with_contact;
+        out!(
+            "{n:>5} {nodes:>6} {:>13.3} {:>13.3} {:>13.3} {:>13.3} {k_node:>11.3} {k_contact:>11.3} {k_clear:>11.3} {:>11.3}",
+            1e6 * bare,
+            1e6 * with_contact,
+            1e6 * with_forces,
+            1e6 * with_clear,
+            1e6 * forces
+        );
+        kernel.push(k_node);
+        contact.push(k_contact);
+        clear.push(k_clear);
+        em.push((sizes[2].em_pair_nodes, sizes[2].em_pair_products, 1e9 * forces));
+    }
+    // Least squares of y = k1 L + k2 Q over the sizes: the 2 x 2 normal equations.
+    let (mut ll, mut lq, mut qq, mut ly, mut qy) = (0.0, 0.0, 0.0, 0.0, 0.0);
+    for &(l, q, y) in &em {
+        (ll, lq, qq, ly, qy) = (ll + l * l, lq + l * q, qq + q * q, ly + l * y, qy + q * y);
+    }
+    let det = ll * qq - lq * lq;
+    let (k1, k2) = ((ly * qq - qy * lq) / det, (qy * ll - ly * lq) / det);
+    let med = |v: &mut Vec<f64>| {
+        v.sort_by(f64::total_cmp);
+        v[v.len() / 2]
+    };
+    out!("\nconstant                         measured (median over N)   compiled in (ohl::scenario::work)");
+    for (what, measured, compiled) in [
+        ("kernel [ns per node-step]", med(&mut kernel), work::LINE_NS_PER_NODE_STEP),
+        ("contact [ns per pair node]", med(&mut contact), work::CONTACT_NS_PER_PAIR_NODE),
+        ("clearances [ns per pair node]", med(&mut clear), work::CLEARANCE_NS_PER_PAIR_NODE),
+        ("pair forces k1 [ns per pair node]", k1, work::EM_NS_PER_PAIR_NODE),
+        ("pair forces k2 [ns per n_a n_b]", k2, work::EM_NS_PER_PAIR_PRODUCT),
+    ] {
+        out!("{what:<34} {measured:>12.4}   {compiled:>12.4}");
+    }
+    for &(l, q, y) in &em {
+        out!(
+            "  pair forces fit: L = {l}, Q = {q}: measured {:.3} us, fitted {:.3} us",
+            1e-3 * y,
+            1e-3 * (k1 * l + k2 * q)
+        );
+    }
+    ExitCode::SUCCESS
+}
+
 /// Run the benchmark; exit 0 on success, 1 if a file could not be written or a run failed, 2 on bad
 /// arguments.
 pub fn main(args: BenchArgs) -> ExitCode {
@@ -128,6 +216,9 @@ pub fn main(args: BenchArgs) -> ExitCode {
         return ExitCode::from(2);
     }
     let (reps, node_steps) = if args.quick { (3, 2.0e6) } else { (args.reps, args.node_steps) };
+    if args.costs {
+        return costs(reps, node_steps);
+    }
     let machine = bench::machine();
     let build = match (cfg!(target_feature = "avx2"), ohl::scheme::explicit::kernel_instruction_set()) {
         (true, _) => "release, built for avx2",

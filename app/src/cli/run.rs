@@ -33,8 +33,8 @@ pub struct RunArgs {
     /// do not print the summary
     #[arg(long)]
     quiet: bool,
-    /// print the work estimate (steps, node-steps, output rows and bytes, wall time) and exit 0 without
-    /// running
+    /// print the work estimate (steps, node-steps, output rows and bytes, CPU time on one core: for a line
+    /// per element, `ohl::scenario::work`) and exit 0 without running
     #[arg(long)]
     dry_run: bool,
     /// run a scenario above the work budget (2e10 node-steps or 2 GB of output)
@@ -341,7 +341,9 @@ fn heat_case_refusal(path: &std::path::Path) -> Option<String> {
 /// `ohl run` on a line scenario (a file with `[line]`: several conductors, [`ohl::scenario::line`]).
 fn run_line(path: &std::path::Path, out: &std::path::Path, quiet: bool, dry_run: bool, allow_large: bool) -> ExitCode {
     use ohl::run::line::{LineRunError, LineWorkEstimate, run_line};
-    use ohl::scenario::work::{BUDGET_NODE_STEPS, BUDGET_OUTPUT_BYTES};
+    use ohl::scenario::work::{
+        BUDGET_NODE_STEPS, BUDGET_OUTPUT_BYTES, CLEARANCE_MEASURED_SHARE, LINE_NS_PER_NODE_STEP,
+    };
     let file = path.display().to_string();
     let plan = match scenario::read_text(path)
         .and_then(|t| scenario::line::parse(&t, &file))
@@ -368,16 +370,21 @@ fn run_line(path: &std::path::Path, out: &std::path::Path, quiet: bool, dry_run:
         out!("  conductors: {}, nodes: {}, time step: {:.6e} s", work.conductors, work.nodes, work.dt_s);
         out!("  steps: {:.6e}, node-steps: {:.6e} (budget {BUDGET_NODE_STEPS:.1e})", work.steps, work.node_steps);
         out!("  output: at most {:.3e} bytes (budget {BUDGET_OUTPUT_BYTES:.1e})", work.output_bytes);
-        out!(
-            "  wall time: about {:.3e} s at {:.1e} node-steps/s (one core, {})",
-            work.wall_time_s(),
-            work.throughput_node_steps_per_s,
-            if plan.short_circuit.is_some() {
-                "whole runs of a line with a short circuit"
-            } else {
-                "whole runs of a line"
-            }
-        );
+        if plan.short_circuit.is_some() {
+            out!("  steps with short-circuit current: {:.6e}", work.current_steps);
+        }
+        let [kernel, contact, clearances, forces] = work.cpu_time_parts_s();
+        out!("  CPU time: about {:.3e} s on one core (ohl::scenario::work, \"a line\"), of which", work.wall_time_s());
+        out!("    kernel and observers: {kernel:.3e} s ({:.1} ns per node-step)", LINE_NS_PER_NODE_STEP);
+        if work.sizes.contact_pair_nodes > 0.0 {
+            out!("    contact, every step: {contact:.3e} s");
+        }
+        if work.sizes.clearance_pair_nodes > 0.0 {
+            out!("    clearances, {:.0} % of the steps: {clearances:.3e} s", 100.0 * CLEARANCE_MEASURED_SHARE);
+        }
+        if plan.short_circuit.is_some() {
+            out!("    pair forces, the steps with current: {forces:.3e} s");
+        }
         return ExitCode::SUCCESS;
     }
     if !allow_large && let Err(refusal) = work.check() {
