@@ -5,19 +5,21 @@
 //! line, one rate for a single span or section); it must stay within a factor [`FACTOR`] of the run for
 //! cases e (a line, clearances), j (a short circuit with a reclose: contact every level, pair forces
 //! while current flows) and l (a short circuit with droppers) and for a paper case (fig2b, one span), on
-//! shortened copies (the same per-step costs, a test-sized run). Why 2: the model's constants are medians
-//! of `ohl bench --costs` on case j's grid and the clearances' share of measured levels is assumed (0.5;
-//! the cases measure 0.26-0.51), which leaves these four runs at 0.94-1.27 of the measured time on the
-//! development machine (figures/bench/README.md, issue 27 third round), and the CPU time of one run
-//! varied by up to 14 % between repetitions on the shared machine (load 5-9). A factor 2 holds all of
-//! that, and still fails the model this replaced (a fixed 1e6 node-steps/s for a short circuit: 3.5
-//! times the shortened case j's time).
+//! shortened copies (the same per-step costs, a test-sized run). Why 3: the model's constants are medians
+//! of `ohl bench --costs` on case j's grid on one machine (a Zen 3) and the clearances' share of measured
+//! levels is assumed (0.35; the cases measure 0.26-0.51), which leaves these four runs at 0.94-1.27 of the
+//! measured time on that machine (figures/bench/README.md, issue 27 third round); the CPU time of one run
+//! varied by up to 14 % between repetitions on the shared machine (load 5-9); and a machine of another
+//! generation runs the same loops up to about 1.5 times faster (the kernel's wind_3d at N = 5000: 2.30e8
+//! node-steps per CPU second on a Zen 4, 1.50e8 on this Zen 3), which would put case e at about 1.9. A
+//! factor 3 holds all of that, and still fails the model this replaced (a fixed 1e6 node-steps/s for a
+//! short circuit: 3.5 times the shortened case j's time).
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
 /// The largest ratio, either way, between the estimate and the measured CPU time.
-const FACTOR: f64 = 2.0;
+const FACTOR: f64 = 3.0;
 
 fn repo() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).parent().unwrap().to_path_buf()
@@ -67,7 +69,7 @@ fn measured_cpu_s(out: &Path) -> f64 {
 }
 
 #[test]
-fn dry_run_estimates_cpu_time_within_a_factor_of_two() {
+fn dry_run_estimates_cpu_time_within_a_factor_of_three() {
     let dir = std::env::temp_dir().join(format!("ohl-test-dry-run-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).unwrap();
