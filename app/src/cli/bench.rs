@@ -317,13 +317,15 @@ pub fn main(args: BenchArgs) -> ExitCode {
     }
     let prim_csv = args.out.join(format!("{}_primitives.csv", args.label));
     let prim = format!(
-        "clock_hz,isa,sqrt_cycles_per_double,div_cycles_per_double,mul_cycles_per_double,add_cycles_per_double,cpu,build,load_1_5_15,date_utc\n{:.4e},{},{:.3},{:.3},{:.4},{:.4},{},{build},{},{}\n",
+        "clock_hz,isa,sqrt_cycles_per_double,div_cycles_per_double,mul_cycles_per_double,add_cycles_per_double,div_mul_pipe_cycles,sqrt_mul_pipe_cycles,cpu,build,load_1_5_15,date_utc\n{:.4e},{},{:.3},{:.3},{:.4},{:.4},{:.3},{:.3},\"{}\",\"{build}\",{},{}\n",
         p.clock_hz,
         p.isa,
         p.sqrt_cycles,
         p.div_cycles,
         p.mul_cycles,
         p.add_cycles,
+        p.div_mul_cycles,
+        p.sqrt_mul_cycles,
         machine.cpu,
         machine.load,
         machine.date
