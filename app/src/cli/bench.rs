@@ -379,18 +379,12 @@ pub fn main(args: BenchArgs) -> ExitCode {
 
     let current: Vec<bench::ThroughputRow> =
         rows.iter().map(|(r, _)| (r.config.clone(), r.n, r.node_steps_per_s())).collect();
-    let baseline = match &args.baseline {
-        Some(b) => match bench::read_kernel_csv(b) {
-            Ok(rows) => Some((
-                rows,
-                b.file_stem().map(|s| s.to_string_lossy().to_string()).unwrap_or_else(|| "baseline".into()),
-            )),
-            Err(e) => {
-                err!("error: baseline: {e}");
-                return ExitCode::from(2);
-            }
-        },
-        None => None,
+    let baseline = match args.baseline.as_deref().map(labelled_rows).transpose() {
+        Ok(b) => b,
+        Err(e) => {
+            err!("error: baseline: {e}");
+            return ExitCode::from(2);
+        }
     };
     let stem = args.out.join("throughput");
     let base = baseline.as_ref().map(|(r, l)| (r.as_slice(), l.as_str()));
