@@ -16,7 +16,28 @@
 //! taken): for parallel conductors about one segment pair of `b` per segment of `a` is computed.
 
 use crate::element::pair::closest_points;
+use crate::scheme::Explicit;
 use crate::wire::Wire;
+
+/// A conductor as the tracker reads it: its wire. A `&Wire`, or the solver itself, so that a run passes
+/// its conductors (`LineExplicit::conductors`) without collecting their wires into a new vector at every
+/// level.
+pub trait ConductorWire {
+    /// The conductor's wire.
+    fn conductor_wire(&self) -> &Wire;
+}
+
+impl ConductorWire for &Wire {
+    fn conductor_wire(&self) -> &Wire {
+        self
+    }
+}
+
+impl ConductorWire for Explicit {
+    fn conductor_wire(&self) -> &Wire {
+        self.wire()
+    }
+}
 
 /// The closest points of two conductors at one time level.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -346,12 +367,21 @@ impl ClearanceTracker {
     /// when that bound of some pair is not above its least so far, or when `force` (a sample, the end);
     /// otherwise [`ClearanceTracker::current`] keeps the last measurement. The least distances, their
     /// times and places are those of measuring every level (a level skipped cannot hold a smaller one).
-    pub fn observe_bounded(&mut self, wires: &[&Wire], t_s: f64, force: bool) {
+    pub fn observe_bounded<W: ConductorWire>(&mut self, wires: &[W], t_s: f64, force: bool) {
         self.counts.1 += 1;
+        if self.pairs.is_empty() {
+            // No pair to bound (one group: a single phase with its droppers, case k): the displacements
+            // would decide nothing. A forced level measures as below (the counts are the same).
+            if force {
+                self.observe(wires, t_s);
+            }
+            return;
+        }
         let moved = &mut self.moved;
         moved.clear();
         if self.reference.len() == wires.len() {
             moved.extend(wires.iter().zip(&self.reference).map(|(w, r)| {
+                let w = w.conductor_wire();
                 let mut m2 = 0.0_f64;
                 for i in 0..w.nodes() {
                     let d = [w.x[0][i] - r[0][i], w.x[1][i] - r[1][i], w.x[2][i] - r[2][i]];
@@ -375,13 +405,13 @@ impl ClearanceTracker {
     }
 
     /// Measure every pair at time `t_s` [s] for the conductors' wires.
-    pub fn observe(&mut self, wires: &[&Wire], t_s: f64) {
+    pub fn observe<W: ConductorWire>(&mut self, wires: &[W], t_s: f64) {
         self.counts.0 += 1;
         self.reference.resize_with(wires.len(), Default::default);
         for (r, w) in self.reference.iter_mut().zip(wires) {
             for k in 0..3 {
                 r[k].clear();
-                r[k].extend_from_slice(&w.x[k]);
+                r[k].extend_from_slice(&w.conductor_wire().x[k]);
             }
         }
         for (p, &(g, h)) in self.pairs.iter().enumerate() {
@@ -389,7 +419,7 @@ impl ClearanceTracker {
             for &a in &self.groups[g] {
                 for &b in &self.groups[h] {
                     let scratch = self.scratch.entry((a, b)).or_default();
-                    if let Some(c) = least_distance(wires[a], wires[b], scratch)
+                    if let Some(c) = least_distance(wires[a].conductor_wire(), wires[b].conductor_wire(), scratch)
                         && best.is_none_or(|x| c.distance_m < x.closest.distance_m)
                     {
                         best = Some(LeastClearance { conductors: (a, b), closest: c, time_s: t_s });

@@ -442,12 +442,35 @@ struct ConductorOutputs {
 }
 
 impl ConductorOutputs {
+    /// The observers in their order (peaks, settle, series, snapshots), from an array on the stack: no
+    /// allocation (this was a `Vec` built at every level).
     fn each(&mut self) -> impl Iterator<Item = &mut dyn Observer> {
-        let mut v: Vec<&mut dyn Observer> = vec![&mut self.peaks];
-        v.extend(self.settle.as_mut().map(|o| o as &mut dyn Observer));
-        v.extend(self.series.as_mut().map(|o| o as &mut dyn Observer));
-        v.extend(self.snaps.as_mut().map(|o| o as &mut dyn Observer));
-        v.into_iter()
+        let ConductorOutputs { peaks, settle, series, snaps, .. } = self;
+        [
+            Some(peaks as &mut dyn Observer),
+            settle.as_mut().map(|o| o as &mut dyn Observer),
+            series.as_mut().map(|o| o as &mut dyn Observer),
+            snaps.as_mut().map(|o| o as &mut dyn Observer),
+        ]
+        .into_iter()
+        .flatten()
+    }
+
+    /// Every observer's [`Observer::observe`] of the level, in the order of [`ConductorOutputs::each`]
+    /// (each one called, whatever the others answer), called directly rather than through `dyn`: whether
+    /// any of them answered [`Control::Settled`].
+    fn observe(&mut self, level: &Level) -> Result<bool, OutputError> {
+        let mut settled = self.peaks.observe(level)? == Control::Settled;
+        if let Some(o) = self.settle.as_mut() {
+            settled |= o.observe(level)? == Control::Settled;
+        }
+        if let Some(o) = self.series.as_mut() {
+            settled |= o.observe(level)? == Control::Settled;
+        }
+        if let Some(o) = self.snaps.as_mut() {
+            settled |= o.observe(level)? == Control::Settled;
+        }
+        Ok(settled)
     }
 }
 
@@ -501,6 +524,8 @@ pub fn run_line_observed<'o>(
         clearance.pairs().iter().map(|&(a, b)| [plan.group_names[a].clone(), plan.group_names[b].clone()]).collect();
     let towers: Vec<String> = line.supports().map(|s| s.name.clone()).collect();
     let mut resultants: Vec<[f64; 3]> = Vec::with_capacity(towers.len());
+    // Scratch of `support_resultant_into`: a conductor's support reactions, kept between levels.
+    let mut reactions: Vec<(usize, [f64; 3])> = Vec::new();
     let mut files = match out_dir {
         Some(d) => {
             let mut head = vec!["t_s".to_string()];
@@ -575,10 +600,7 @@ pub fn run_line_observed<'o>(
         let mut all_settled = true;
         for c in 0..n {
             let level = Level { solver: &line.conductors()[c], t_s: t, tau_per_s: plan.plans[c].tau(1.0) };
-            let mut settled = false;
-            for o in outputs[c].each() {
-                settled |= o.observe(&level)? == Control::Settled;
-            }
+            let mut settled = outputs[c].observe(&level)?;
             for o in extra.get_mut(c).into_iter().flatten() {
                 settled |= o.observe(&level)? == Control::Settled;
             }
@@ -587,7 +609,7 @@ pub fn run_line_observed<'o>(
         let sampling = files.is_some() || samples.is_some();
         let sample_due = sampling && clock.next_s() <= t + tol;
         let first = line.steps() == 0;
-        clearance.observe_bounded(&line.wires(), t, sample_due || first);
+        clearance.observe_bounded(line.conductors(), t, sample_due || first);
         if first {
             initial_clearance = clearance.current().iter().map(|c| c.map(|c| c.closest.distance_m)).collect();
         }
@@ -600,7 +622,7 @@ pub fn run_line_observed<'o>(
         }
         // Each tower's resultant, once a level: for its peak, and for the sample if one is due.
         resultants.clear();
-        resultants.extend((0..towers.len()).map(|s| line.support_resultant_n(s)));
+        resultants.extend((0..towers.len()).map(|s| line.support_resultant_into(s, &mut reactions)));
         for (s, &f) in resultants.iter().enumerate() {
             let m = (f[0] * f[0] + f[1] * f[1] + f[2] * f[2]).sqrt();
             if m > tower_peak[s].1 {
@@ -661,7 +683,7 @@ pub fn run_line_observed<'o>(
     line.evaluate_forces();
     if failure.is_none() {
         // The final values are measured (the last level may have been skipped by the bound).
-        clearance.observe(&line.wires(), line.time_s());
+        clearance.observe(line.conductors(), line.time_s());
     }
     for c in 0..n {
         let level = Level { solver: &line.conductors()[c], t_s: line.time_s(), tau_per_s: plan.plans[c].tau(1.0) };

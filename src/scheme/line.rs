@@ -493,12 +493,18 @@ impl LineExplicit {
     /// and the reactions of the conductor nodes fixed on it (the load the tower carries from every phase
     /// and earth wire).
     pub fn support_resultant_n(&self, s: usize) -> [f64; 3] {
+        self.support_resultant_into(s, &mut Vec::new())
+    }
+
+    /// [`LineExplicit::support_resultant_n`] with the conductors' reactions gathered into `buf` (any
+    /// contents; left holding the last one's), so that a run that asks at every level reuses one vector:
+    /// the same additions in the same order, the same bits.
+    pub fn support_resultant_into(&self, s: usize, buf: &mut Vec<(usize, [f64; 3])>) -> [f64; 3] {
         assert!(self.fresh, "support_resultant_n needs evaluate_forces at this time level");
         let mut f = self.support_load[s];
-        let mut buf = Vec::new();
         for d in self.dead_ends.iter().filter(|d| d.support == s) {
             let c = &self.conductors[d.node.conductor];
-            c.support_forces(&mut buf);
+            c.support_forces(buf);
             if let Some(&(_, r)) = buf.iter().find(|(i, _)| *i == d.node.node) {
                 for k in 0..3 {
                     f[k] += r[k];
