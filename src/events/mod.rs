@@ -78,10 +78,13 @@ impl EventState {
     /// Apply every event due at or before `t + tol` [s]; returns how many were applied.
     pub fn apply_due(&mut self, solver: &mut Explicit, t: f64, tol: f64) -> usize {
         let mut count = 0;
-        while let Some(e) = self.events.get(self.next).cloned() {
+        // The time is read in place; an event is cloned only when it is applied (this cloned the next
+        // event at every level to compare its time).
+        while let Some(e) = self.events.get(self.next) {
             if e.time_s > t + tol {
                 break;
             }
+            let e = e.clone();
             self.next += 1;
             count += 1;
             let text = self.apply(solver, &e.action, e.time_s, t);
