@@ -1,10 +1,9 @@
 //! The conductor's temperature from its current and the weather during a run (`[thermal]`,
 //! [`crate::scenario::thermal`]): a temperature history computed before the run, interpolated linearly at
 //! every time level and set on every segment, whose stress-free lengths follow by (5.5)
-//! ([`Wire::update_rest_lengths`]).
+//! ([`crate::wire::Wire::update_rest_lengths`]).
 
 use crate::scheme::Explicit;
-use crate::wire::Wire;
 
 /// A temperature history being played onto the wire.
 #[derive(Clone, Debug)]
@@ -56,14 +55,10 @@ impl Heating {
         if self.held == Some((temp.to_bits(), solver.wire_stamp())) {
             return;
         }
-        Self::set(solver.wire_mut(), temp);
+        // The bits of filling the temperatures and `Wire::update_rest_lengths` through `wire_mut`, with the
+        // thermal factor formed once and the solver's viscous flag kept (`Explicit::set_uniform_temperature`).
+        solver.set_uniform_temperature(temp);
         self.held = Some((temp.to_bits(), solver.wire_stamp()));
-    }
-
-    /// Set `temp` [K] on every segment of `wire` and rescale the stress-free lengths.
-    fn set(wire: &mut Wire, temp: f64) {
-        wire.temperature_k.fill(temp);
-        wire.update_rest_lengths();
     }
 }
 
@@ -106,7 +101,10 @@ mod tests {
             a.apply(&mut skip, t);
             held += usize::from(skip.wire_stamp() == stamp);
             let temp = b.temperature_at(t);
-            Heating::set(every.wire_mut(), temp);
+            // The reference sets every level the way `set` did before the factor was hoisted.
+            let w = every.wire_mut();
+            w.temperature_k.fill(temp);
+            w.update_rest_lengths();
             for s in [&mut skip, &mut every] {
                 s.evaluate_forces();
                 s.step(dt).unwrap();

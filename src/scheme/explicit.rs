@@ -513,6 +513,19 @@ impl Explicit {
         &mut self.wire
     }
 
+    /// `wire_mut().set_uniform_temperature(temperature_k)` ([`Wire::set_uniform_temperature`]: every
+    /// segment at `temperature_k` [K], the stress-free lengths rescaled), except that the solver keeps
+    /// whether any segment is viscous: a temperature changes no internal friction, so recomputing that
+    /// flag (a scan of every segment) would give the same answer. Everything else `wire_mut` marks stale
+    /// is marked stale (the forces of the level, `1 / l0`, the wire stamp). For a temperature history
+    /// played at every step (`[thermal]`, [`crate::events::Heating`]).
+    pub fn set_uniform_temperature(&mut self, temperature_k: f64) {
+        self.fresh = false;
+        self.inv_rest_length_fresh = false;
+        self.wire_stamp = next_wire_stamp();
+        self.wire.set_uniform_temperature(temperature_k);
+    }
+
     /// A number that changes at every [`Explicit::wire_mut`] and is never given twice in the process (a
     /// clone keeps it until its own `wire_mut`): while it is the one read after a change, the wire's
     /// segment properties (stress-free and reference lengths, temperatures, the thermal data) are those

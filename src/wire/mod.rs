@@ -367,6 +367,23 @@ impl Wire {
         self.update_rest_lengths();
     }
 
+    /// Set the temperature `temperature_k` [K] on every segment and rescale the stress-free lengths:
+    /// [`Wire::update_rest_lengths`] after filling `temperature_k`, bit for bit. The thermal factor
+    /// `1 + alpha_t (u - u_ref)` is the same for every segment, so it is formed once (the same operations
+    /// on the same operands give the same bits) and each length is one multiplication `L * factor`
+    /// (IEEE multiplication is commutative: `factor * L` has the bits of `L * factor`).
+    pub fn set_uniform_temperature(&mut self, temperature_k: f64) {
+        self.temperature_k.fill(temperature_k);
+        if self.material.is_some() {
+            self.rest_length.copy_from_slice(&self.reference_length);
+            return;
+        }
+        let factor = 1.0 + self.thermal_expansion_per_k * (temperature_k - self.reference_temperature_k);
+        for (l0, &l) in self.rest_length.iter_mut().zip(&self.reference_length) {
+            *l0 = l * factor;
+        }
+    }
+
     /// Recompute every stress-free length from `temperature_k` (after a heat-equation step wrote it).
     pub fn update_rest_lengths(&mut self) {
         if self.material.is_some() {
@@ -405,6 +422,29 @@ mod tests {
             assert_eq!(w.rest_length[j].to_bits(), want.to_bits(), "segment {j}");
         }
         assert!(w.rest_length[0] != w.reference_length[0]);
+    }
+
+    /// `set_uniform_temperature` (the thermal factor formed once) gives the bits of filling the
+    /// temperatures and `update_rest_lengths` (the factor formed per segment), over many temperatures.
+    #[test]
+    fn a_uniform_temperature_is_update_rest_lengths_bit_for_bit() {
+        let conductor =
+            Conductor { axial_stiffness_n: 1.0, internal_friction_n_s: 0.0, law: tension::LawKind::TensionOnly };
+        let n = 41;
+        let x = [vec![0.0; n + 1], (0..=n).map(|i| i as f64 * 7.5).collect(), vec![0.0; n + 1]];
+        let mut a = Wire::new(conductor, x, (0..n).map(|j| 7.5 + 1e-3 * (1.3 * j as f64).sin()).collect(), 1.6);
+        a.thermal_expansion_per_k = 1.89e-5;
+        let mut b = a.clone();
+        for k in 0..500 {
+            let temp = 250.0 + 0.37 * k as f64 + 1e-9 * (k as f64).cos();
+            a.set_uniform_temperature(temp);
+            b.temperature_k.fill(temp);
+            b.update_rest_lengths();
+            for j in 0..n {
+                assert_eq!(a.temperature_k[j].to_bits(), b.temperature_k[j].to_bits());
+                assert_eq!(a.rest_length[j].to_bits(), b.rest_length[j].to_bits(), "segment {j} at {temp} K");
+            }
+        }
     }
 
     #[test]
