@@ -137,7 +137,11 @@ impl SparseLu {
         for (v, &k) in values.iter().zip(&self.slot) {
             self.csc[k] += *v;
         }
-        let structure = SymbolicSparseColMatRef::new_checked(self.n, self.n, &self.col_ptr, None, &self.row_idx);
+        // SAFETY: `col_ptr` and `row_idx` are the arrays `new` built and checked (`new_checked`, which
+        // panics on a malformed structure) and nothing changes them since: checking them again at every
+        // solve (a pass over the pattern) would find what it found then.
+        let structure =
+            unsafe { SymbolicSparseColMatRef::new_unchecked(self.n, self.n, &self.col_ptr, None, &self.row_idx) };
         let a = SparseColMatRef::new(structure, &self.csc);
         let stack = MemStack::new(&mut self.mem);
         let lu = self
