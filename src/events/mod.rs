@@ -76,7 +76,18 @@ impl EventState {
     }
 
     /// Apply every event due at or before `t + tol` [s]; returns how many were applied.
+    #[inline]
     pub fn apply_due(&mut self, solver: &mut Explicit, t: f64, tol: f64) -> usize {
+        // At most levels no event is due: the test of the loop below, inlined into the driver's loop.
+        match self.events.get(self.next) {
+            Some(e) if e.time_s > t + tol => 0,
+            Some(_) => self.apply_due_now(solver, t, tol),
+            None => 0,
+        }
+    }
+
+    #[inline(never)]
+    fn apply_due_now(&mut self, solver: &mut Explicit, t: f64, tol: f64) -> usize {
         let mut count = 0;
         // The time is read in place; an event is cloned only when it is applied (this cloned the next
         // event at every level to compare its time).
