@@ -24,6 +24,7 @@ impl Heating {
     }
 
     /// The temperature at `t` [K]: linear between the samples around `t`, the first or last outside them.
+    #[inline]
     pub fn temperature_at(&mut self, t: f64) -> f64 {
         let s = &self.samples;
         if t <= s[0].0 {

@@ -242,6 +242,17 @@ unsafe fn largest_square_sum_avx512(f1: &[f64], f2: &[f64], f3: &[f64]) -> f64 {
     largest_square_sum(f1, f2, f3)
 }
 
+/// [`Wire::set_uniform_temperature`] compiled for AVX2 (the same IEEE multiplications: bitwise the same
+/// lengths), for [`Explicit::set_uniform_temperature`].
+///
+/// # Safety
+/// Only where the processor has AVX2.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+unsafe fn set_uniform_temperature_avx2(wire: &mut Wire, temperature_k: f64) {
+    wire.set_uniform_temperature(temperature_k);
+}
+
 /// `sum_i m_i (v1_i^2 + v2_i^2 + v3_i^2)`, added in node order ([`Explicit::kinetic_energy_half_step`],
 /// which the settle detector asks for every level). The terms of a block of nodes are formed together
 /// (the compiler vectorises them), then added one by one in node order, so the sum is bitwise that of
@@ -519,10 +530,19 @@ impl Explicit {
     /// flag (a scan of every segment) would give the same answer. Everything else `wire_mut` marks stale
     /// is marked stale (the forces of the level, `1 / l0`, the wire stamp). For a temperature history
     /// played at every step (`[thermal]`, [`crate::events::Heating`]).
+    ///
+    /// Where the processor has AVX2, the fill and the multiplications `L * factor` are compiled for it (4
+    /// at a time): the same IEEE multiplications, the same bits.
     pub fn set_uniform_temperature(&mut self, temperature_k: f64) {
         self.fresh = false;
         self.inv_rest_length_fresh = false;
         self.wire_stamp = next_wire_stamp();
+        #[cfg(target_arch = "x86_64")]
+        match self.isa {
+            // SAFETY: `isa` is `Avx2` or `Avx512` only where the processor reports AVX2 (`detected_isa`).
+            Isa::Avx2 | Isa::Avx512 => return unsafe { set_uniform_temperature_avx2(&mut self.wire, temperature_k) },
+            Isa::Baseline => {}
+        }
         self.wire.set_uniform_temperature(temperature_k);
     }
 

@@ -372,6 +372,7 @@ impl Wire {
     /// `1 + alpha_t (u - u_ref)` is the same for every segment, so it is formed once (the same operations
     /// on the same operands give the same bits) and each length is one multiplication `L * factor`
     /// (IEEE multiplication is commutative: `factor * L` has the bits of `L * factor`).
+    #[inline(always)]
     pub fn set_uniform_temperature(&mut self, temperature_k: f64) {
         self.temperature_k.fill(temperature_k);
         if self.material.is_some() {
