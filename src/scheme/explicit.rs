@@ -1090,9 +1090,15 @@ impl Explicit {
     }
 
     /// The diagnostics of the forces last computed, with the largest tension if `MAX_TENSION`.
+    ///
+    /// The arrays are sliced to their lengths once (no bounds check per element) and each segment's
+    /// strain is formed in place by [`segment::stretch`], the function [`Wire::strain`] calls (the same
+    /// operations on the same operands); every term and every sum is the one of the loops as they were
+    /// (`node_force_own` written out), in the same order: bitwise the same energies.
     fn energies_of_forces<const MAX_TENSION: bool>(&self) -> Diagnostics {
         let w = &self.wire;
         let n = w.segments();
+        let n1 = n + 1;
         let half = 0.5 * self.dt_prev;
         let zeta = self.params.mass_damping_per_s;
         let g = self.loads.gravity_m_per_s2;
@@ -1103,8 +1109,14 @@ impl Explicit {
         // every node.
         let mut points: Vec<(usize, [f64; 3])> = self.point_force.iter().chain(&self.external_force).copied().collect();
         points.sort_by_key(|&(node, _)| node);
+        let (mass, inv_mass, free, exposed) = (&w.mass[..n1], &w.inv_mass[..n1], &w.free[..n1], &w.exposed[..n1]);
+        let x = [&w.x[0][..n1], &w.x[1][..n1], &w.x[2][..n1]];
+        let v = [&w.v[0][..n1], &w.v[1][..n1], &w.v[2][..n1]];
+        let fs = [&self.fs[0][..n1 + 1], &self.fs[1][..n1 + 1], &self.fs[2][..n1 + 1]];
+        let es = [&self.es[0][..n1 + 1], &self.es[1][..n1 + 1], &self.es[2][..n1 + 1]];
+        let nodal = self.nodal_force.as_ref().map(|x| [&x[0][..n1], &x[1][..n1], &x[2][..n1]]);
         let mut next = 0;
-        for i in 0..=n {
+        for i in 0..n1 {
             let first = next;
             while next < points.len() && points[next].0 == i {
                 next += 1;
@@ -1112,25 +1124,37 @@ impl Explicit {
             let at_i = &points[first..next];
             let mut v2 = 0.0;
             for k in 0..3 {
-                let mut f = self.node_force_own(k, i);
+                // `node_force_own(k, i)`, then the point forces at the node.
+                let mut f = fs[k][i + 1] - fs[k][i] + (es[k][i + 1] + es[k][i]) * exposed[i];
+                if k == 2 {
+                    f -= mass[i] * g;
+                }
+                if let Some(x) = &nodal {
+                    f += x[k][i];
+                }
                 for (_, p) in at_i {
                     f += p[k];
                 }
-                let a = f * w.inv_mass[i] - zeta * w.v[k][i];
-                let vn = w.v[k][i] + half * w.free[i] * a;
+                let a = f * inv_mass[i] - zeta * v[k][i];
+                let vn = v[k][i] + half * free[i] * a;
                 v2 += vn * vn;
             }
-            d.kinetic_j += 0.5 * w.mass[i] * v2;
-            d.potential_j += w.mass[i] * g * w.x[2][i];
+            d.kinetic_j += 0.5 * mass[i] * v2;
+            d.potential_j += mass[i] * g * x[2][i];
         }
+        let (ea, l0, lref, intact) =
+            (&w.axial_stiffness_n[..n], &w.rest_length[..n], &w.reference_length[..n], &w.intact[..n]);
+        let zero = [0.0; 3];
         for j in 0..n {
-            let (ea, e) = (w.axial_stiffness_n[j], w.strain(j));
+            let (a, b) = ([x[0][j], x[1][j], x[2][j]], [x[0][j + 1], x[1][j + 1], x[2][j + 1]]);
+            // `Wire::strain(j)`.
+            let (ea, e) = (ea[j], segment::stretch(a, b, zero, zero, l0[j]).e);
             let energy = match (w.law, &w.material) {
                 (LawKind::TwoMaterial, Some(m)) => m.energy_density(j, e, w.temperature_k[j]),
                 (LawKind::Linear, _) => Linear::energy_density(ea, e),
                 _ => TensionOnly::energy_density(ea, e),
             };
-            d.elastic_j += energy * w.rest_length[j] * w.intact[j];
+            d.elastic_j += energy * l0[j] * intact[j];
             if MAX_TENSION {
                 let tension = self.segment_tension(j);
                 if tension > d.max_tension_n {
@@ -1139,9 +1163,8 @@ impl Explicit {
                 }
             }
             // Potential of the uniform load: each segment's share q L sits half on each end node.
-            let (a, b) = (w.position(j), w.position(j + 1));
             for k in 0..3 {
-                d.potential_j -= q[k] * w.reference_length[j] * 0.5 * (a[k] + b[k]);
+                d.potential_j -= q[k] * lref[j] * 0.5 * (a[k] + b[k]);
             }
         }
         // Insulator strings and elastic crossarms; a crossarm's velocity is synchronised like the nodes'.
@@ -1644,10 +1667,41 @@ mod tests {
                 }
                 kinetic += 0.5 * w.mass[i] * v2;
             }
+            // The elastic and potential energies as the loops formed them before their arrays were sliced
+            // (`Wire::strain`, `Wire::position` per segment).
+            let (g, q) = (s.loads.gravity_m_per_s2, s.loads.uniform_load_n_per_m);
+            let (mut elastic, mut potential) = (0.0, 0.0);
+            for i in 0..w.nodes() {
+                potential += w.mass[i] * g * w.x[2][i];
+            }
+            for j in 0..w.segments() {
+                let (ea, e) = (w.axial_stiffness_n[j], w.strain(j));
+                let energy = match (w.law, &w.material) {
+                    (LawKind::TwoMaterial, Some(m)) => m.energy_density(j, e, w.temperature_k[j]),
+                    (LawKind::Linear, _) => Linear::energy_density(ea, e),
+                    _ => TensionOnly::energy_density(ea, e),
+                };
+                elastic += energy * w.rest_length[j] * w.intact[j];
+                let (a, b) = (w.position(j), w.position(j + 1));
+                for k in 0..3 {
+                    potential -= q[k] * w.reference_length[j] * 0.5 * (a[k] + b[k]);
+                }
+            }
+            for ins in &w.insulators {
+                elastic += ins.energy(w.position(ins.node));
+                if let Some(arm) = &ins.crossarm {
+                    elastic += arm.spring_energy(ins.pivot_m);
+                }
+            }
             let (d, energies) = (s.level_diagnostics(), s.level_energies());
             if w.insulators.iter().all(|i| i.crossarm.is_none()) {
                 assert_eq!(d.kinetic_j.to_bits(), kinetic.to_bits(), "{name}");
             }
+            assert_eq!(
+                [d.elastic_j, d.potential_j].map(f64::to_bits),
+                [elastic, potential].map(f64::to_bits),
+                "{name}"
+            );
             assert_eq!(
                 [energies.kinetic_j, energies.elastic_j, energies.potential_j].map(f64::to_bits),
                 [d.kinetic_j, d.elastic_j, d.potential_j].map(f64::to_bits),
