@@ -2,7 +2,10 @@
 //! peak for a time window, checked at every time level (so the settle time does not depend on the sample
 //! interval). The kinetic energy is that of the half-step velocities, `sum m_i |v_i^{n-1/2}|^2 / 2`
 //! ([`crate::scheme::Explicit::kinetic_energy_half_step`]): the scheme's own velocities, one pass over the
-//! nodes. After events the peak is measured afresh, and the loop stops only when no event is pending
+//! nodes. The sum in node order is formed only where bounds on it
+//! ([`crate::scheme::Explicit::kinetic_energy_half_step_bounds`], a vectorised sum of the same terms)
+//! leave the peak or the verdict open: the peak and every verdict are those of the node-order sum.
+//! After events the peak is measured afresh, and the loop stops only when no event is pending
 //! ([`super::run_loop`]), so a wire that settles before a later break still breaks.
 
 use super::{Control, Level, Observer, OutputError};
@@ -27,9 +30,21 @@ impl Settle {
 
 impl Observer for Settle {
     fn observe(&mut self, level: &Level) -> Result<Control, OutputError> {
-        let ke = level.solver.kinetic_energy_half_step();
-        self.peak_j = self.peak_j.max(ke);
-        if ke <= self.fraction * self.peak_j {
+        // Bounds on the kinetic energy first (a vectorised sum, without the node-order sum's chain of
+        // dependent additions): where they decide both questions below, as at nearly every level of a
+        // decay, the node-order sum would leave the peak and the verdict as they are.
+        let (lo, hi) = level.solver.kinetic_energy_half_step_bounds();
+        let threshold = self.fraction * self.peak_j;
+        let below = if hi < self.peak_j && hi <= threshold {
+            true
+        } else if hi < self.peak_j && lo > threshold {
+            false
+        } else {
+            let ke = level.solver.kinetic_energy_half_step();
+            self.peak_j = self.peak_j.max(ke);
+            ke <= self.fraction * self.peak_j
+        };
+        if below {
             let since = *self.below_since_s.get_or_insert(level.t_s);
             if level.t_s - since >= self.window_s {
                 self.settled_since_s = Some(since);
