@@ -121,14 +121,20 @@ pub struct SpanPeaks {
 }
 
 /// Sign changes of one displacement component about the chord point (module documentation).
+///
+/// Plain numbers rather than options, so that the check every level takes is a few comparisons
+/// ([`Crossings::at_most_records`]): `last_d = 0` stands for "no level with a sign yet" (a level with
+/// `d = 0` is never recorded) and `side` is `+1` above, `-1` below, `0` before `|d|` first left the band.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Crossings {
-    /// the last level where the component had a sign: time [s] and value [m]
-    last: Option<(f64, f64)>,
+    /// the last level where the component had a sign: time [s]
+    last_t: f64,
+    /// ... and value [m] (0: none yet)
+    last_d: f64,
     /// the time of the last sign change [s], not yet confirmed by leaving the band
     candidate: f64,
-    /// the side (`true` above) the component last left the band on
-    side: Option<bool>,
+    /// the side the component last left the band on: `+1` above, `-1` below, `0` not yet
+    side: f64,
     /// the first crossing: time [s] and whether it was upward (`None` before it)
     first: Option<(f64, bool)>,
     /// crossings in the first one's direction, and the time of the last of them [s]
@@ -145,29 +151,44 @@ impl Crossings {
         if d == 0.0 || d.is_nan() {
             return;
         }
-        if let Some((t0, d0)) = self.last
-            && (d0 < 0.0) != (d < 0.0)
-        {
+        let (t0, d0) = (self.last_t, self.last_d);
+        if d0 != 0.0 && (d0 < 0.0) != (d < 0.0) {
             self.candidate = t0 + (t - t0) * (d0 / (d0 - d));
         }
-        self.last = Some((t, d));
+        (self.last_t, self.last_d) = (t, d);
         if d.abs() <= band {
             return;
         }
         let up = d > 0.0;
-        match self.side {
-            Some(side) if side != up => {
-                let tc = self.candidate;
-                let (_, first_up) = *self.first.get_or_insert((tc, up));
-                if up == first_up {
-                    self.same += 1;
-                    self.last_same_s = tc;
-                }
-                self.count += 1;
+        if self.side != 0.0 && (self.side > 0.0) != up {
+            let tc = self.candidate;
+            let (_, first_up) = *self.first.get_or_insert((tc, up));
+            if up == first_up {
+                self.same += 1;
+                self.last_same_s = tc;
             }
-            _ => {}
+            self.count += 1;
         }
-        self.side = Some(up);
+        self.side = if up { 1.0 } else { -1.0 };
+    }
+
+    /// Whether [`Crossings::update`] with the value `d` would at most record the level as the last one
+    /// with a sign ([`Crossings::record`]): `d` zero or NaN (no change at all), or no sign change from the
+    /// last level with a sign and `d` inside the band or on the side it last left the band on (`side d >
+    /// 0`: `side` is `+-1`, so the product is `+-d`, exactly).
+    #[inline(always)]
+    fn at_most_records(&self, d: f64, band: f64) -> bool {
+        let d0 = self.last_d;
+        let sign_change = (d0 != 0.0) & ((d0 < 0.0) != (d < 0.0));
+        !(d.abs() > 0.0) | (!sign_change & ((d.abs() <= band) | (self.side * d > 0.0)))
+    }
+
+    /// What [`Crossings::update`] does where [`Crossings::at_most_records`] holds.
+    #[inline(always)]
+    fn record(&mut self, t: f64, d: f64) {
+        if d.abs() > 0.0 {
+            (self.last_t, self.last_d) = (t, d);
+        }
     }
 
     /// The mean period `(t_c,m - t_c,1) / (m - 1)` [s] over the `m >= 2` crossings in the direction of
@@ -262,12 +283,43 @@ impl PeakSet {
                 }
             }
         }
+        let origin = self.origin.get_or_insert_with(|| disp.clone());
+        // At most levels no probe's peak, rise, fall or crossing changes: each component's level is then
+        // at most recorded as its crossings' last one, which is all the updates below would do with it.
+        // (Indexed slices of one length: a zip of five iterators cost more than the comparisons.)
+        let n = self.probes.len();
+        let (p, r, f, o, d) = (&self.probes[..n], &self.rises[..n], &self.falls[..n], &origin[..n], &disp[..n]);
+        let c = &mut self.crossings[..n];
+        let mut quiet = true;
+        for i in 0..n {
+            for k in 0..3 {
+                let change = d[i][k] - o[i][k];
+                quiet &= !(d[i][k].abs() > p[i][k].value_m.abs())
+                    & !(change > r[i][k].value_m)
+                    & !(change < f[i][k].value_m)
+                    & c[i][k].at_most_records(d[i][k], band_m);
+            }
+        }
+        if quiet {
+            for i in 0..n {
+                for k in 0..3 {
+                    c[i][k].record(t, d[i][k]);
+                }
+            }
+        } else {
+            self.update_probes(t, tau, disp, band_m);
+        }
+        self.update_supports(t, tau, forces, swings);
+    }
+
+    /// The probes' part of [`PeakSet::update`], every value compared.
+    fn update_probes(&mut self, t: f64, tau: f64, disp: &[[f64; 3]], band_m: f64) {
         for (p, d) in self.probes.iter_mut().zip(disp) {
             for k in 0..3 {
                 signed(&mut p[k], d[k], t, tau);
             }
         }
-        let origin = self.origin.get_or_insert_with(|| disp.clone());
+        let origin = self.origin.as_ref().expect("set by update");
         for (((r, f), o), d) in self.rises.iter_mut().zip(&mut self.falls).zip(origin.iter()).zip(disp) {
             for k in 0..3 {
                 let change = d[k] - o[k];
@@ -284,6 +336,10 @@ impl PeakSet {
                 c[k].update(t, d[k], band_m);
             }
         }
+    }
+
+    /// The supports' part of [`PeakSet::update`].
+    fn update_supports(&mut self, t: f64, tau: f64, forces: &[(usize, [f64; 3])], swings: &[Option<[f64; 2]>]) {
         for (s, (_, f)) in self.supports.iter_mut().zip(forces) {
             largest(&mut s.magnitude, (f[0] * f[0] + f[1] * f[1] + f[2] * f[2]).sqrt(), t, tau);
             for k in 0..3 {

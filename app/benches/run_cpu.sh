@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# CPU time (user + system, /usr/bin/time) of whole runs (`ohl run`, as written, nothing shortened) of every
+# case and mechanical example with two binaries, the runs of the two alternating so that a change of the
+# machine's load falls on both; the median of REPS runs each. The issue-27 goal is stated in CPU time:
+# this is its measurement (`run_instructions.sh` counts instructions, the load-independent proxy). Outputs
+# go to a temporary directory and are deleted. A scenario the old binary rejects (a file format it does
+# not know) gets "NA".
+#
+# usage: app/benches/run_cpu.sh OLD_BINARY NEW_BINARY [REPS] [CSV]   (writes "scenario,old_cpu_s,new_cpu_s,old_over_new")
+# e.g.   app/benches/run_cpu.sh /tmp/ohl-060d9f9 target/release/ohl 5 figures/bench/run_cpu.csv
+set -euo pipefail
+old="$(realpath "$1")"
+new="$(realpath "$2")"
+reps=${3:-3}
+csv=${4:-/dev/stdout}
+cd "$(dirname "$0")/../.."
+work="$(mktemp -d "${TMPDIR:-/tmp}/ohl-run-cpu.XXXXXX")"
+trap 'rm -rf "$work"' EXIT
+cpu() {
+  if /usr/bin/time -o "$work/time" -f '%U %S' "$1" run "$2" --out "$work/out" --quiet > /dev/null 2> "$work/err"; then
+    awk '{ printf "%.3f\n", $1 + $2 }' "$work/time"
+  else
+    echo NA
+  fi
+  rm -rf "$work/out"
+}
+median() { tr ' ' '\n' | grep -v '^$' | sort -g | awk '{ a[NR] = $1 } END { if (NR == 0 || a[1] == "NA") print "NA"; else print a[int((NR + 1) / 2)] }'; }
+[ "$csv" = /dev/stdout ] || echo "scenario,old_cpu_s,new_cpu_s,old_over_new" > "$csv"
+for f in cases/*.toml examples/mechanical/*.toml; do
+  n="$(basename "$f" .toml)"
+  o="" w=""
+  for _ in $(seq "$reps"); do
+    o="$o $(cpu "$old" "$f")"
+    w="$w $(cpu "$new" "$f")"
+  done
+  mo=$(echo "$o" | median)
+  mw=$(echo "$w" | median)
+  ratio=$(awk -v a="$mo" -v b="$mw" 'BEGIN { if (a == "NA" || b == "NA" || b == 0) print "NA"; else printf "%.2f", a / b }')
+  echo "$n,$mo,$mw,$ratio" >> "$csv"
+  [ "$csv" = /dev/stdout ] || echo "$n,$mo,$mw,$ratio"
+done
