@@ -226,7 +226,24 @@ pub struct PeakSet {
     pub supports: Vec<SupportPeaks>,
     /// per span of a section (empty for one span)
     pub spans: Vec<SpanPeaks>,
+    /// levels left that take the full update without the comparisons first ([`PeakSet::update`])
+    #[serde(skip)]
+    full_for: CostHint,
 }
+
+/// A count that only chooses how to compute (not what): equal to every other, so that sets compare by
+/// their peaks alone.
+#[derive(Clone, Copy, Debug, Default)]
+struct CostHint(u32);
+
+impl PartialEq for CostHint {
+    fn eq(&self, _: &Self) -> bool {
+        true
+    }
+}
+
+/// Levels that take the full update after one that changed a probe's peak, rise, fall or crossing.
+const RETRY: u32 = 16;
 
 /// One phase: the time between two events.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -268,6 +285,7 @@ impl PeakSet {
             origin: None,
             supports: vec![SupportPeaks::default(); supports],
             spans: vec![SpanPeaks::default(); spans],
+            full_for: CostHint::default(),
         }
     }
 
@@ -284,58 +302,57 @@ impl PeakSet {
             }
         }
         let origin = self.origin.get_or_insert_with(|| disp.clone());
-        // At most levels no probe's peak, rise, fall or crossing changes: each component's level is then
-        // at most recorded as its crossings' last one, which is all the updates below would do with it.
-        // (Indexed slices of one length: a zip of five iterators cost more than the comparisons.)
         let n = self.probes.len();
-        let (p, r, f, o, d) = (&self.probes[..n], &self.rises[..n], &self.falls[..n], &origin[..n], &disp[..n]);
-        let c = &mut self.crossings[..n];
-        let mut quiet = true;
-        for i in 0..n {
-            for k in 0..3 {
-                let change = d[i][k] - o[i][k];
-                quiet &= !(d[i][k].abs() > p[i][k].value_m.abs())
-                    & !(change > r[i][k].value_m)
-                    & !(change < f[i][k].value_m)
-                    & c[i][k].at_most_records(d[i][k], band_m);
-            }
-        }
-        if quiet {
+        let (o, d) = (&origin[..n], &disp[..n]);
+        // At most levels no probe's peak, rise, fall or crossing changes: the level is then at most
+        // recorded as each component's crossings' last one, which is all the full update would do with it.
+        // One pass of comparisons finds that out; after a level where it did not hold (a displacement
+        // growing from level to level, as under heating), the next `RETRY` levels take the full update at
+        // once. (Indexed slices of one length: a zip of five iterators cost more than the comparisons.)
+        if self.full_for.0 == 0 {
+            let (p, r, f, c) = (&self.probes[..n], &self.rises[..n], &self.falls[..n], &mut self.crossings[..n]);
+            let mut quiet = true;
             for i in 0..n {
                 for k in 0..3 {
-                    c[i][k].record(t, d[i][k]);
+                    let change = d[i][k] - o[i][k];
+                    quiet &= !(d[i][k].abs() > p[i][k].value_m.abs())
+                        & !(change > r[i][k].value_m)
+                        & !(change < f[i][k].value_m)
+                        & c[i][k].at_most_records(d[i][k], band_m);
                 }
             }
+            if quiet {
+                for i in 0..n {
+                    for k in 0..3 {
+                        c[i][k].record(t, d[i][k]);
+                    }
+                }
+                self.update_supports(t, tau, forces, swings);
+                return;
+            }
+            self.full_for.0 = RETRY;
         } else {
-            self.update_probes(t, tau, disp, band_m);
+            self.full_for.0 -= 1;
+        }
+        // Component by component: its peak, rise, fall and crossings, each a function of that component's
+        // values alone, so the order across components changes nothing.
+        let (p, r, f, c) =
+            (&mut self.probes[..n], &mut self.rises[..n], &mut self.falls[..n], &mut self.crossings[..n]);
+        for i in 0..n {
+            for k in 0..3 {
+                let dk = d[i][k];
+                signed(&mut p[i][k], dk, t, tau);
+                let change = dk - o[i][k];
+                if change > r[i][k].value_m {
+                    r[i][k] = Peak { value_m: change, time_s: t, tau };
+                }
+                if change < f[i][k].value_m {
+                    f[i][k] = Peak { value_m: change, time_s: t, tau };
+                }
+                c[i][k].update(t, dk, band_m);
+            }
         }
         self.update_supports(t, tau, forces, swings);
-    }
-
-    /// The probes' part of [`PeakSet::update`], every value compared.
-    fn update_probes(&mut self, t: f64, tau: f64, disp: &[[f64; 3]], band_m: f64) {
-        for (p, d) in self.probes.iter_mut().zip(disp) {
-            for k in 0..3 {
-                signed(&mut p[k], d[k], t, tau);
-            }
-        }
-        let origin = self.origin.as_ref().expect("set by update");
-        for (((r, f), o), d) in self.rises.iter_mut().zip(&mut self.falls).zip(origin.iter()).zip(disp) {
-            for k in 0..3 {
-                let change = d[k] - o[k];
-                if change > r[k].value_m {
-                    r[k] = Peak { value_m: change, time_s: t, tau };
-                }
-                if change < f[k].value_m {
-                    f[k] = Peak { value_m: change, time_s: t, tau };
-                }
-            }
-        }
-        for (c, d) in self.crossings.iter_mut().zip(disp) {
-            for k in 0..3 {
-                c[k].update(t, d[k], band_m);
-            }
-        }
     }
 
     /// The supports' part of [`PeakSet::update`].
