@@ -25,6 +25,13 @@
 //!
 //! What is not computed at a level, for the same peaks bit for bit:
 //!
+//! - a string's swing along the line `a = atan2(y, x)` (in degrees; `y = d . e_l`, `x = -d3`) where it
+//!   cannot pass the peak `a_p`: with `x > 0`, `|a| = atan(|y| / x)`, increasing in `|y| / x`; the tangent
+//!   of the peak `tan |a_p|` is kept as formed when the peak was set, and a level with `|y| / x < tan |a_p|
+//!   (1 - 1e-10)` has `|a|` below `|a_p|` by at least `1e-10 x / (1 + x^2) / atan(x)` relative, which for
+//!   `x = tan |a_p| < 1e3` is above `6e-14`: hundreds of roundings more than the few between the
+//!   quotient, the tangent, `atan2` and the conversion to degrees. Elsewhere (`x <= 0`, beyond 90 degrees;
+//!   a peak within 0.06 degrees of 90; a NaN) the angle is formed and compared as always;
 //! - a span's largest tension `max_j |T_j t_j|` ([`crate::scheme::Explicit::max_tension_in`], a pass over
 //!   the span's segments) where it cannot raise a peak: under the tension-only law every `T_j >= 0`, the
 //!   tangent `t_j = d_j (1 / |d_j|)` is a unit vector to a few roundings and so `|T_j t_j|` as formed
@@ -91,6 +98,9 @@ pub struct SupportPeaks {
     /// a suspension support's string: largest swing from plumb along and across the line [deg]
     #[serde(skip_serializing_if = "Option::is_none")]
     pub swing: Option<[PeakAngle; 2]>,
+    /// `tan |swing along|` of the peak above, as formed from it (0 without one) [-]
+    #[serde(skip)]
+    along_tan: f64,
 }
 
 /// The least value of a length (a clearance).
@@ -226,7 +236,24 @@ pub struct PeakSet {
     pub supports: Vec<SupportPeaks>,
     /// per span of a section (empty for one span)
     pub spans: Vec<SpanPeaks>,
+    /// levels left that take the full update without the comparisons first ([`PeakSet::update`])
+    #[serde(skip)]
+    full_for: CostHint,
 }
+
+/// A count that only chooses how to compute (not what): equal to every other, so that sets compare by
+/// their peaks alone.
+#[derive(Clone, Copy, Debug, Default)]
+struct CostHint(u32);
+
+impl PartialEq for CostHint {
+    fn eq(&self, _: &Self) -> bool {
+        true
+    }
+}
+
+/// Levels that take the full update after one that changed a probe's peak, rise, fall or crossing.
+const RETRY: u32 = 16;
 
 /// One phase: the time between two events.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -268,6 +295,7 @@ impl PeakSet {
             origin: None,
             supports: vec![SupportPeaks::default(); supports],
             spans: vec![SpanPeaks::default(); spans],
+            full_for: CostHint::default(),
         }
     }
 
@@ -284,62 +312,61 @@ impl PeakSet {
             }
         }
         let origin = self.origin.get_or_insert_with(|| disp.clone());
-        // At most levels no probe's peak, rise, fall or crossing changes: each component's level is then
-        // at most recorded as its crossings' last one, which is all the updates below would do with it.
-        // (Indexed slices of one length: a zip of five iterators cost more than the comparisons.)
         let n = self.probes.len();
-        let (p, r, f, o, d) = (&self.probes[..n], &self.rises[..n], &self.falls[..n], &origin[..n], &disp[..n]);
-        let c = &mut self.crossings[..n];
-        let mut quiet = true;
-        for i in 0..n {
-            for k in 0..3 {
-                let change = d[i][k] - o[i][k];
-                quiet &= !(d[i][k].abs() > p[i][k].value_m.abs())
-                    & !(change > r[i][k].value_m)
-                    & !(change < f[i][k].value_m)
-                    & c[i][k].at_most_records(d[i][k], band_m);
-            }
-        }
-        if quiet {
+        let (o, d) = (&origin[..n], &disp[..n]);
+        // At most levels no probe's peak, rise, fall or crossing changes: the level is then at most
+        // recorded as each component's crossings' last one, which is all the full update would do with it.
+        // One pass of comparisons finds that out; after a level where it did not hold (a displacement
+        // growing from level to level, as under heating), the next `RETRY` levels take the full update at
+        // once. (Indexed slices of one length: a zip of five iterators cost more than the comparisons.)
+        if self.full_for.0 == 0 {
+            let (p, r, f, c) = (&self.probes[..n], &self.rises[..n], &self.falls[..n], &mut self.crossings[..n]);
+            let mut quiet = true;
             for i in 0..n {
                 for k in 0..3 {
-                    c[i][k].record(t, d[i][k]);
+                    let change = d[i][k] - o[i][k];
+                    quiet &= !(d[i][k].abs() > p[i][k].value_m.abs())
+                        & !(change > r[i][k].value_m)
+                        & !(change < f[i][k].value_m)
+                        & c[i][k].at_most_records(d[i][k], band_m);
                 }
             }
+            if quiet {
+                for i in 0..n {
+                    for k in 0..3 {
+                        c[i][k].record(t, d[i][k]);
+                    }
+                }
+                self.update_supports(t, tau, forces, swings);
+                return;
+            }
+            self.full_for.0 = RETRY;
         } else {
-            self.update_probes(t, tau, disp, band_m);
+            self.full_for.0 -= 1;
+        }
+        // Component by component: its peak, rise, fall and crossings, each a function of that component's
+        // values alone, so the order across components changes nothing.
+        let (p, r, f, c) =
+            (&mut self.probes[..n], &mut self.rises[..n], &mut self.falls[..n], &mut self.crossings[..n]);
+        for i in 0..n {
+            for k in 0..3 {
+                let dk = d[i][k];
+                signed(&mut p[i][k], dk, t, tau);
+                let change = dk - o[i][k];
+                if change > r[i][k].value_m {
+                    r[i][k] = Peak { value_m: change, time_s: t, tau };
+                }
+                if change < f[i][k].value_m {
+                    f[i][k] = Peak { value_m: change, time_s: t, tau };
+                }
+                c[i][k].update(t, dk, band_m);
+            }
         }
         self.update_supports(t, tau, forces, swings);
     }
 
-    /// The probes' part of [`PeakSet::update`], every value compared.
-    fn update_probes(&mut self, t: f64, tau: f64, disp: &[[f64; 3]], band_m: f64) {
-        for (p, d) in self.probes.iter_mut().zip(disp) {
-            for k in 0..3 {
-                signed(&mut p[k], d[k], t, tau);
-            }
-        }
-        let origin = self.origin.as_ref().expect("set by update");
-        for (((r, f), o), d) in self.rises.iter_mut().zip(&mut self.falls).zip(origin.iter()).zip(disp) {
-            for k in 0..3 {
-                let change = d[k] - o[k];
-                if change > r[k].value_m {
-                    r[k] = Peak { value_m: change, time_s: t, tau };
-                }
-                if change < f[k].value_m {
-                    f[k] = Peak { value_m: change, time_s: t, tau };
-                }
-            }
-        }
-        for (c, d) in self.crossings.iter_mut().zip(disp) {
-            for k in 0..3 {
-                c[k].update(t, d[k], band_m);
-            }
-        }
-    }
-
     /// The supports' part of [`PeakSet::update`].
-    fn update_supports(&mut self, t: f64, tau: f64, forces: &[(usize, [f64; 3])], swings: &[Option<[f64; 2]>]) {
+    fn update_supports(&mut self, t: f64, tau: f64, forces: &[(usize, [f64; 3])], swings: &[Option<([f64; 2], f64)>]) {
         for (s, (_, f)) in self.supports.iter_mut().zip(forces) {
             largest(&mut s.magnitude, (f[0] * f[0] + f[1] * f[1] + f[2] * f[2]).sqrt(), t, tau);
             for k in 0..3 {
@@ -347,12 +374,18 @@ impl PeakSet {
             }
         }
         for (s, sw) in self.supports.iter_mut().zip(swings) {
-            if let Some(a) = sw {
+            if let &Some(([y, x], across)) = sw {
                 let peaks = s.swing.get_or_insert_with(Default::default);
-                for k in 0..2 {
-                    if a[k].abs() > peaks[k].value_deg.abs() {
-                        peaks[k] = PeakAngle { value_deg: a[k], time_s: t, tau };
+                // The angle along, `atan2(y, x)` in degrees, only where it could pass the peak (module docs).
+                if !(x > 0.0 && s.along_tan < SWING_TAN_BELOW && y.abs() / x < s.along_tan * (1.0 - SWING_MARGIN)) {
+                    let along = y.atan2(x).to_degrees();
+                    if along.abs() > peaks[0].value_deg.abs() {
+                        peaks[0] = PeakAngle { value_deg: along, time_s: t, tau };
+                        s.along_tan = along.abs().to_radians().tan();
                     }
+                }
+                if across.abs() > peaks[1].value_deg.abs() {
+                    peaks[1] = PeakAngle { value_deg: across, time_s: t, tau };
                 }
             }
         }
@@ -392,13 +425,23 @@ struct Current {
     disp: Vec<[f64; 3]>,
     /// support forces [N]
     forces: Vec<(usize, [f64; 3])>,
-    /// string swings along and across [deg]
-    swings: Vec<Option<[f64; 2]>>,
+    /// string swings: the arguments `[y, x]` of the angle along, `atan2(y, x)` [m], and the angle across
+    /// [deg]
+    swings: Vec<Option<([f64; 2], f64)>>,
     /// per span: largest tension [N] and least clearance [m]
     spans: Vec<(f64, Option<f64>)>,
     /// the band a crossing must leave [m]: `1e-9` of the wire's chord at the first level
     band_m: f64,
 }
+
+/// The relative margin below the peak's tangent under which a string's swing along the line cannot be a
+/// new peak (module docs): far above the roundings between `|y| / x`, the tangent as formed from the peak
+/// in degrees and the angles `atan2` returns (a few units of `eps = 2.2e-16` each).
+const SWING_MARGIN: f64 = 1e-10;
+
+/// The peak's tangent from which the swing's angle along is always formed (module docs): near 90 degrees
+/// the angle changes too little with the tangent for the margin (`d atan(x) = dx / (1 + x^2)`).
+const SWING_TAN_BELOW: f64 = 1e3;
 
 /// A crossing counts once the displacement passes this fraction of the wire's chord (module docs).
 const CROSSING_BAND: f64 = 1e-9;
@@ -473,7 +516,10 @@ impl Observer for Peaks {
         c.swings.clear();
         for &(node, _) in &c.forces {
             let string = w.insulators.iter().find(|i| i.node == node);
-            c.swings.push(string.map(|i| i.swing(w.position(node)).map(f64::to_degrees)));
+            c.swings.push(string.map(|i| {
+                let (along, across) = i.swing_parts(w.position(node), i.along);
+                (along, across.to_degrees())
+            }));
         }
         c.tension = s.max_tension_n();
         c.spans.clear();
@@ -644,6 +690,41 @@ mod tests {
             assert_eq!(peaks.phases.len(), 1 + events.iter().filter(|&&n| n > 0).count());
         }
         assert!(skipped > 0, "no span's largest tension was left out");
+    }
+
+    /// A string's swing peaks with the angle along formed only where it could pass the peak are those
+    /// formed every level: swings growing by steps of a few roundings near the peak, across 90 degrees
+    /// (`x <= 0`), near 90 degrees, at zero and NaN.
+    #[test]
+    fn swing_peaks_skipping_the_angle_are_the_formed_ones() {
+        let mut set = PeakSet::sized(0, 1, 0);
+        let mut want = [PeakAngle::default(); 2];
+        let mut levels: Vec<(f64, f64)> = Vec::new();
+        for (i, a) in
+            [0.0_f64, 0.3, 0.5, 0.5, 0.7, 1.2, 1.5707, 1.57079, 1.5708, 2.0, 3.1, 3.0, -3.1].iter().enumerate()
+        {
+            for step in -40..=40 {
+                // angles a few roundings apart around `a`, and the same mirrored in y
+                let b = a * (1.0 + step as f64 * 1e-16);
+                levels.push(((i as f64 + 1.0) * b.sin(), b.cos()));
+                levels.push((-(i as f64 + 1.0) * b.sin() * 0.999, b.cos()));
+            }
+        }
+        levels.extend([(0.0, 0.0), (f64::NAN, 1.0), (1.0, f64::NAN), (0.0, -1.0)]);
+        for (n, &(y, x)) in levels.iter().enumerate() {
+            let t = n as f64;
+            let across = (n % 7) as f64 - 3.0;
+            let c =
+                Current { t, forces: vec![(0, [0.0; 3])], swings: vec![Some(([y, x], across))], ..Default::default() };
+            set.update(&c);
+            let along = y.atan2(x).to_degrees();
+            for (k, a) in [along, across].into_iter().enumerate() {
+                if a.abs() > want[k].value_deg.abs() {
+                    want[k] = PeakAngle { value_deg: a, time_s: t, tau: 0.0 };
+                }
+            }
+            assert_eq!(set.supports[0].swing, Some(want), "level {n}: y {y:e}, x {x:e}");
+        }
     }
 
     /// The rise and fall count from the stretch's first level, whatever the displacement was before it.

@@ -19,12 +19,18 @@ pub struct Settle {
     below_since_s: Option<f64>,
     /// the start of the window that completed (the time from which the wire was settled) [s]
     pub settled_since_s: Option<f64>,
+    /// levels left that take the node-order sum without trying the bounds first
+    exact_for: u32,
 }
+
+/// Levels that take the node-order sum after the bounds left one open (a choice of cost only: every
+/// verdict is the node-order sum's either way).
+const RETRY: u32 = 16;
 
 impl Settle {
     /// Settled when the kinetic energy stays at or below `fraction` of its peak for `window_s` [s].
     pub fn new(fraction: f64, window_s: f64) -> Self {
-        Settle { fraction, window_s, peak_j: 0.0, below_since_s: None, settled_since_s: None }
+        Settle { fraction, window_s, peak_j: 0.0, below_since_s: None, settled_since_s: None, exact_for: 0 }
     }
 }
 
@@ -33,13 +39,23 @@ impl Observer for Settle {
         // Bounds on the kinetic energy first (a vectorised sum, without the node-order sum's chain of
         // dependent additions): where they decide both questions below, as at nearly every level of a
         // decay, the node-order sum would leave the peak and the verdict as they are.
-        let (lo, hi) = level.solver.kinetic_energy_half_step_bounds();
+        // After a level the bounds left open (the energy rising to a new peak, or at the threshold), the
+        // next `RETRY` levels go straight to the node-order sum: the bounds would most likely be open again.
+        let (lo, hi) = if self.exact_for == 0 {
+            level.solver.kinetic_energy_half_step_bounds()
+        } else {
+            self.exact_for -= 1;
+            (f64::NAN, f64::NAN)
+        };
         let threshold = self.fraction * self.peak_j;
         let below = if hi < self.peak_j && hi <= threshold {
             true
         } else if hi < self.peak_j && lo > threshold {
             false
         } else {
+            if !hi.is_nan() {
+                self.exact_for = RETRY;
+            }
             let ke = level.solver.kinetic_energy_half_step();
             self.peak_j = self.peak_j.max(ke);
             ke <= self.fraction * self.peak_j

@@ -206,11 +206,18 @@ impl Insulator {
     /// plane, `asin(d . e_t / |d|)` (positive toward `+e_t`). For a string in the plane the second is 0
     /// at any swing (an `atan2` over `-d3` would jump to 180 degrees there).
     pub fn swing_rad(&self, clamp: [f64; 3], along: [f64; 3]) -> [f64; 2] {
+        let ([y, x], out) = self.swing_parts(clamp, along);
+        [y.atan2(x), out]
+    }
+
+    /// [`Insulator::swing_rad`] with the angle along the line left as the two arguments of its `atan2`:
+    /// `([d . e_l, -d3], across)` (for the peaks, which need the angle only where it could be a new peak).
+    pub fn swing_parts(&self, clamp: [f64; 3], along: [f64; 3]) -> ([f64; 2], f64) {
         let d = sub(clamp, self.pivot_m);
         let across = [-along[1], along[0], 0.0];
         let len = norm(d);
         let out = if len > 0.0 { (dot(d, across) / len).clamp(-1.0, 1.0).asin() } else { 0.0 };
-        [dot(d, along).atan2(-d[2]), out]
+        ([dot(d, along), -d[2]], out)
     }
 
     /// Derivative of [`Insulator::force_on_clamp`] with respect to the clamp position [N/m] (row-major
