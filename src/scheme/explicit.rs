@@ -1816,9 +1816,9 @@ mod tests {
         }
     }
 
-    /// The kinetic energy's bounds contain the node-order sum and are `8 n u` wide at most, on every
-    /// option case after some steps (each copy this processor runs) and on velocities and masses spread
-    /// over 300 orders of magnitude, where the order of the additions matters most.
+    /// The kinetic energy's bounds contain the node-order sum and are `(8 n + 4) u` wide at most, on
+    /// every option case after some steps (each copy this processor runs) and on speeds spread over 150
+    /// orders of magnitude (the terms over 300), where the order of the additions matters most.
     #[test]
     fn kinetic_energy_bounds_contain_the_node_order_sum() {
         let check = |s: &Explicit, what: &str| {
