@@ -1261,21 +1261,8 @@ impl Explicit {
     /// [`Explicit::node_force`] of the three components at once: one scan of the point forces, each
     /// component summed in the same order (the same bits).
     fn node_force3(&self, i: usize) -> [f64; 3] {
-        // `node_force_own` of each component, with the node's arrays read once (the peaks ask for every
-        // support's force at every level).
-        let w = &self.wire;
-        let (exposed, mass, g) = (w.exposed[i], w.mass[i], self.loads.gravity_m_per_s2);
-        let mut f = [0.0; 3];
-        for (k, f) in f.iter_mut().enumerate() {
-            let (fs, es) = (&self.fs[k][i..i + 2], &self.es[k][i..i + 2]);
-            *f = fs[1] - fs[0] + (es[1] + es[0]) * exposed;
-        }
-        f[2] -= mass * g;
-        if let Some(x) = &self.nodal_force {
-            for (k, f) in f.iter_mut().enumerate() {
-                *f += x[k][i];
-            }
-        }
+        let mut f = [0, 1, 2].map(|k| self.node_force_own(k, i));
+        // (The peaks ask for every support's force at every level; most runs have no point force.)
         if self.point_force.is_empty() && self.external_force.is_empty() {
             return f;
         }
