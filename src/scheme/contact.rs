@@ -150,10 +150,12 @@ fn lanes_min(z: &[f64], f: impl Fn(f64) -> f64) -> (f64, bool) {
 /// test each: a node at or above [`Ground::ceiling_m`] (`x3 >= ceiling`; over the level plane exactly
 /// the negation of the contact test `x3 < h`) is not in contact and is passed over; the others go
 /// through the contact law one by one, in node order, as before. Nodes do not interact here, so the
-/// result is bitwise that of the loop over every node.
+/// result is bitwise that of the loop over every node. The seven arrays are sliced to one length once,
+/// so one comparison per node stands for the bounds checks of all of them.
 #[allow(clippy::neg_cmp_op_on_partial_ord, reason = "`!(z >= ceiling)` is meant to hold for a NaN too")]
 pub fn apply(g: &Ground, x: &mut [Vec<f64>; 3], v: &mut [Vec<f64>; 3], exposed: &mut [f64]) {
-    let n = exposed.len();
+    let mut nodes = Nodes::of(x, v, exposed);
+    let n = nodes.exposed.len();
     let ceiling = g.ceiling_m();
     let mut start = 0;
     while start < n {
@@ -161,41 +163,103 @@ pub fn apply(g: &Ground, x: &mut [Vec<f64>; 3], v: &mut [Vec<f64>; 3], exposed: 
         // node-by-node law handles as it always did.
         let mut below = 0_u32;
         if start + LANES <= n {
-            let block: &[f64; LANES] = x[2][start..start + LANES].try_into().expect("a block of LANES nodes");
+            let block: &[f64; LANES] = nodes.x3[start..start + LANES].try_into().expect("a block of LANES nodes");
             for (k, &z) in block.iter().enumerate() {
                 below |= u32::from(!(z >= ceiling)) << k;
             }
         } else {
-            for (k, &z) in x[2][start..n].iter().enumerate() {
+            for (k, &z) in nodes.x3[start..n].iter().enumerate() {
                 below |= u32::from(!(z >= ceiling)) << k;
             }
         }
         let end = (start + LANES).min(n);
         while below != 0 {
-            contact_node(g, x, v, exposed, start + below.trailing_zeros() as usize);
+            contact_node(g, &mut nodes, start + below.trailing_zeros() as usize);
             below &= below - 1;
         }
         start = end;
     }
 }
 
+/// The nodes' positions [m], velocities [m/s] and exposure [-] as slices of one length.
+struct Nodes<'a> {
+    x2: &'a mut [f64],
+    x3: &'a mut [f64],
+    v1: &'a mut [f64],
+    v2: &'a mut [f64],
+    v3: &'a mut [f64],
+    exposed: &'a mut [f64],
+}
+
+impl<'a> Nodes<'a> {
+    fn of(x: &'a mut [Vec<f64>; 3], v: &'a mut [Vec<f64>; 3], exposed: &'a mut [f64]) -> Self {
+        let n = exposed.len();
+        let [_, x2, x3] = x;
+        let [v1, v2, v3] = v;
+        Nodes {
+            x2: &mut x2[..n],
+            x3: &mut x3[..n],
+            v1: &mut v1[..n],
+            v2: &mut v2[..n],
+            v3: &mut v3[..n],
+            exposed: &mut exposed[..n],
+        }
+    }
+}
+
+/// The squared horizontal speeds [m^2/s^2] between which [`friction_keep`] decides without `hypot`: the
+/// squares neither overflow nor lose more than `2^-1074` to underflow (relative `1e-43` of the sum).
+const SQUARES_ABOVE: f64 = 1e-280;
+const SQUARES_BELOW: f64 = 1e280;
+
+/// The relative margin by which the friction's impulse must exceed `sqrt(v1^2 + v2^2)` for
+/// [`friction_keep`] to stop the node without `hypot`: far above the roundings between that square root
+/// and `hypot` (a few units of `u = 2^-53`).
+const STOP_MARGIN: f64 = 1e-12;
+
+/// The level plane's friction factor `keep = max(1 - q / |v_t|, 0)`, `|v_t| = hypot(v1, v2)` [m/s] the
+/// speed along the plane and `q = mu_g (1 + e) |v_3|` [m/s] the largest tangential impulse per unit
+/// mass; `None` where `|v_t| = 0` (the law leaves the node's velocity alone then).
+///
+/// `hypot` is a library call of a few dozen instructions, taken at every node lying on the ground at
+/// every step. Two cases are decided without it, with the same result bit for bit:
+/// - `v1 = v2 = 0` (either sign): `hypot` is `+0`, so `None`;
+/// - the friction stops the node, `q >= r (1 + 1e-12)` with `r = sqrt(v1^2 + v2^2)`: for squares between
+///   [`SQUARES_ABOVE`] and [`SQUARES_BELOW`], `r` is within `(1 + u)^(3/2) (1 + u) - 1 < 3u` of the exact
+///   `|v_t|` and `hypot` within a few `u` (glibc states at most one ulp), so `q / hypot(v1, v2)` is above
+///   `1 + 1e-12 / 2` and rounds above 1; `1 - q / |v_t|` is then negative, not zero, and its maximum with
+///   `+0` is `+0` exactly (no question of the sign of a zero).
+///
+/// Elsewhere (a sliding node, non-finite or extreme speeds) `hypot` is formed as the law states.
+#[inline]
+fn friction_keep(v1: f64, v2: f64, q: f64) -> Option<f64> {
+    if v1 == 0.0 && v2 == 0.0 {
+        return None;
+    }
+    let s = v1 * v1 + v2 * v2;
+    if (SQUARES_ABOVE..=SQUARES_BELOW).contains(&s) && q >= s.sqrt() * (1.0 + STOP_MARGIN) {
+        return Some(0.0);
+    }
+    let vt = v1.hypot(v2);
+    (vt > 0.0).then(|| (1.0 - q / vt).max(0.0))
+}
+
 /// The contact law at node `i` ([`apply`]).
 #[inline]
-fn contact_node(g: &Ground, x: &mut [Vec<f64>; 3], v: &mut [Vec<f64>; 3], exposed: &mut [f64], i: usize) {
+fn contact_node(g: &Ground, nodes: &mut Nodes, i: usize) {
+    let Nodes { x2, x3, v1, v2, v3, exposed } = nodes;
     let e = g.restitution;
     if g.profile_m.is_empty() {
         // The level plane: the normal is x3.
-        if x[2][i] < g.height_m {
-            x[2][i] = g.height_m;
-            if v[2][i] < 0.0 {
-                let normal = (1.0 + e) * -v[2][i];
-                v[2][i] *= -e;
+        if x3[i] < g.height_m {
+            x3[i] = g.height_m;
+            if v3[i] < 0.0 {
+                let normal = (1.0 + e) * -v3[i];
+                v3[i] *= -e;
                 if g.friction > 0.0 {
-                    let vt = v[0][i].hypot(v[1][i]);
-                    if vt > 0.0 {
-                        let keep = (1.0 - g.friction * normal / vt).max(0.0);
-                        v[0][i] *= keep;
-                        v[1][i] *= keep;
+                    if let Some(keep) = friction_keep(v1[i], v2[i], g.friction * normal) {
+                        v1[i] *= keep;
+                        v2[i] *= keep;
                     }
                 }
             }
@@ -203,27 +267,27 @@ fn contact_node(g: &Ground, x: &mut [Vec<f64>; 3], v: &mut [Vec<f64>; 3], expose
         }
         return;
     }
-    let (h, slope) = g.surface(x[1][i]);
-    if x[2][i] >= h {
+    let (h, slope) = g.surface(x2[i]);
+    if x3[i] >= h {
         return;
     }
     // Unit normal (0, n2, n3) of the piece; the depth below it along the normal.
     let inv = 1.0 / (1.0 + slope * slope).sqrt();
     let (n2, n3) = (-slope * inv, inv);
-    let depth = (h - x[2][i]) * inv;
-    x[1][i] += depth * n2;
-    x[2][i] += depth * n3;
-    let vn = v[1][i] * n2 + v[2][i] * n3;
+    let depth = (h - x3[i]) * inv;
+    x2[i] += depth * n2;
+    x3[i] += depth * n3;
+    let vn = v2[i] * n2 + v3[i] * n3;
     if vn < 0.0 {
         let normal = (1.0 + e) * -vn;
         // tangential part before the reflection
-        let t = [v[0][i], v[1][i] - vn * n2, v[2][i] - vn * n3];
+        let t = [v1[i], v2[i] - vn * n2, v3[i] - vn * n3];
         let vt = (t[0] * t[0] + t[1] * t[1] + t[2] * t[2]).sqrt();
         let keep = if g.friction > 0.0 && vt > 0.0 { (1.0 - g.friction * normal / vt).max(0.0) } else { 1.0 };
         let vn_after = -e * vn;
-        v[0][i] = keep * t[0];
-        v[1][i] = keep * t[1] + vn_after * n2;
-        v[2][i] = keep * t[2] + vn_after * n3;
+        v1[i] = keep * t[0];
+        v2[i] = keep * t[1] + vn_after * n2;
+        v3[i] = keep * t[2] + vn_after * n3;
     }
     exposed[i] = 0.0;
 }
@@ -273,10 +337,30 @@ mod tests {
         assert_eq!(exposed[0], 0.0);
     }
 
-    /// The contact law before its scan: every node in turn.
+    /// The contact law before its scan: every node in turn, the level plane's friction with `hypot`
+    /// formed at every node as the law states it (no [`friction_keep`]).
     fn apply_node_by_node(g: &Ground, x: &mut [Vec<f64>; 3], v: &mut [Vec<f64>; 3], exposed: &mut [f64]) {
         for i in 0..exposed.len() {
-            contact_node(g, x, v, exposed, i);
+            if !g.profile_m.is_empty() {
+                contact_node(g, &mut Nodes::of(x, v, exposed), i);
+                continue;
+            }
+            if x[2][i] < g.height_m {
+                x[2][i] = g.height_m;
+                if v[2][i] < 0.0 {
+                    let normal = (1.0 + g.restitution) * -v[2][i];
+                    v[2][i] *= -g.restitution;
+                    if g.friction > 0.0 {
+                        let vt = v[0][i].hypot(v[1][i]);
+                        if vt > 0.0 {
+                            let keep = (1.0 - g.friction * normal / vt).max(0.0);
+                            v[0][i] *= keep;
+                            v[1][i] *= keep;
+                        }
+                    }
+                }
+                exposed[i] = 0.0;
+            }
         }
     }
 
@@ -323,6 +407,46 @@ mod tests {
                 assert!(n < 9 || ea.contains(&0.0), "some node was in contact");
             }
         }
+    }
+
+    /// The friction factor without `hypot` where it is decided equals the law's with it, bit for bit:
+    /// impulses a few roundings either side of the speed along the plane (where the factor goes from
+    /// positive to zero), both signs of zero, speeds from `1e-200` to `1e200` m/s, NaN and infinities.
+    #[test]
+    fn friction_factor_equals_the_one_with_hypot() {
+        let stated = |v1: f64, v2: f64, q: f64| {
+            let vt = v1.hypot(v2);
+            (vt > 0.0).then(|| (1.0 - q / vt).max(0.0))
+        };
+        let bits = |k: Option<f64>| k.map(f64::to_bits);
+        let mut checked = 0;
+        let mut decided = 0;
+        for scale in [1e-200, 1e-150, 1e-3, 0.07, 1.0, 3.3, 1e5, 1e150, 1e200] {
+            for (a, b) in [(1.0, 0.0), (0.0, -1.0), (0.6, 0.8), (-0.3, 0.7), (1e-9, 1.0), (1.0, 1.0 - 1e-15)] {
+                let (v1, v2): (f64, f64) = (a * scale, b * scale);
+                let vt = v1.hypot(v2);
+                for q0 in [vt, 0.5 * vt, 2.0 * vt, 0.0, f64::INFINITY] {
+                    let mut q = q0;
+                    for _ in 0..60 {
+                        decided += usize::from(friction_keep(v1, v2, q) == Some(0.0));
+                        assert_eq!(bits(friction_keep(v1, v2, q)), bits(stated(v1, v2, q)), "{v1:e} {v2:e} {q:e}");
+                        checked += 1;
+                        q = q.next_up();
+                    }
+                    q = q0;
+                    for _ in 0..60 {
+                        assert_eq!(bits(friction_keep(v1, v2, q)), bits(stated(v1, v2, q)), "{v1:e} {v2:e} {q:e}");
+                        q = q.next_down();
+                    }
+                }
+            }
+        }
+        for (v1, v2) in [(0.0, 0.0), (-0.0, 0.0), (0.0, -0.0), (f64::NAN, 0.0), (f64::INFINITY, f64::NAN), (1.0, f64::INFINITY)] {
+            for q in [0.0, 1.0, f64::INFINITY] {
+                assert_eq!(bits(friction_keep(v1, v2, q)), bits(stated(v1, v2, q)), "{v1:e} {v2:e} {q:e}");
+            }
+        }
+        assert!(decided > checked / 4, "the shortcut decided {decided} of {checked}");
     }
 
     /// The least clearance in lanes is the node-order fold bit for bit, including its zero's sign
