@@ -80,13 +80,26 @@ impl Ground {
     /// for the sign of a zero (`min(0, -0)`): if the minimum is zero and some clearance is `-0` it is
     /// taken again in node order, so the result is bitwise that of the node-by-node fold
     /// ([`Ground::least_clearance_in_order_m`]; a conductor lying on the ground has clearances `+0`).
+    ///
+    /// A clearance `z - h` is `-0` only for `z = -0` and `h = +0`: in round to nearest the difference of
+    /// equal numbers is `+0`, `-0 - (+0) = -0`, `-0 - (-0) = +0`, and a difference is zero only where the
+    /// numbers are equal. So the zeros' signs are looked at only where the minimum is zero over ground at
+    /// `+0`, and then as the positions' bits (the clearance is the height itself).
     pub fn least_clearance_m(&self, x: &[Vec<f64>; 3], range: std::ops::RangeInclusive<usize>) -> f64 {
         if !self.profile_m.is_empty() || range.is_empty() {
             return self.least_clearance_in_order_m(x, range);
         }
-        let h = self.height_m;
-        let (least, negative_zero) = lanes_min(&x[2][range.clone()], |z| z - h);
-        if least == 0.0 && negative_zero { self.least_clearance_in_order_m(x, range) } else { least }
+        let z = &x[2][range.clone()];
+        #[cfg(target_arch = "x86_64")]
+        let least = if super::explicit::avx2_available() {
+            // SAFETY: the processor reports AVX2 (`avx2_available`).
+            unsafe { least_above_plane_avx2(z, self.height_m) }
+        } else {
+            least_above_plane(z, self.height_m)
+        };
+        #[cfg(not(target_arch = "x86_64"))]
+        let least = least_above_plane(z, self.height_m);
+        least.unwrap_or_else(|| self.least_clearance_in_order_m(x, range))
     }
 
     /// [`Ground::least_clearance_m`] node by node, in node order: the definition.
@@ -113,34 +126,48 @@ impl Ground {
 const LANES: usize = 8;
 
 /// `min_i f(z_i)` (`+inf` for an empty slice; a NaN is passed over as [`f64::min`] does), in [`LANES`]
-/// independent minima, and whether some `f(z_i)` is `-0`: without one, equal to the fold of
-/// [`f64::min`] in order bitwise (a minimum is exact; only the sign of a zero can depend on the order).
-/// `if y < m` passes over a NaN as [`f64::min`] does (the lanes start at `+inf` and never hold one).
-fn lanes_min(z: &[f64], f: impl Fn(f64) -> f64) -> (f64, bool) {
-    // `-0` is the zero whose sign carries to 1 (a bitwise operation, vectorised like the comparisons).
-    let negative_zero_at = |y: f64| y == 0.0 && 1.0_f64.copysign(y) < 0.0;
+/// independent minima: equal to the fold of [`f64::min`] in order bitwise unless the minimum is zero and
+/// some `f(z_i)` is `-0` (a minimum is exact; only the sign of a zero can depend on the order). `if y < m`
+/// passes over a NaN as [`f64::min`] does (the lanes start at `+inf` and never hold one).
+fn lanes_min(z: &[f64], f: impl Fn(f64) -> f64) -> f64 {
     let mut m = [f64::INFINITY; LANES];
-    let mut negative_zero = [false; LANES];
     let chunks = z.chunks_exact(LANES);
     let rest = chunks.remainder();
     for c in chunks {
         for k in 0..LANES {
             let y = f(c[k]);
             m[k] = if y < m[k] { y } else { m[k] };
-            negative_zero[k] |= negative_zero_at(y);
         }
     }
     let mut least = f64::INFINITY;
-    let mut any = negative_zero.contains(&true);
     for &v in rest {
-        let y = f(v);
-        least = least.min(y);
-        any |= negative_zero_at(y);
+        least = least.min(f(v));
     }
     for v in m {
         least = least.min(v);
     }
-    (least, any)
+    least
+}
+
+/// The least clearance `min_i (z_i - h)` [m] of heights `z` [m] above the level plane `h` [m] in
+/// [`lanes_min`], or `None` where the node-order fold is needed for the sign of a zero: the minimum is
+/// zero, the ground at `+0` and some `z_i` is `-0` (its bits compared as an integer, in one pass without
+/// early exit, which the compiler vectorises; [`Ground::least_clearance_m`]).
+#[inline(always)]
+fn least_above_plane(z: &[f64], h: f64) -> Option<f64> {
+    let least = lanes_min(z, |z| z - h);
+    let negative_zero = || z.iter().fold(false, |any, z| any | (z.to_bits() == (-0.0_f64).to_bits()));
+    if least == 0.0 && h.to_bits() == 0 && negative_zero() { None } else { Some(least) }
+}
+
+/// [`least_above_plane`] compiled for AVX2 (minima and comparisons are exact: the same result).
+///
+/// # Safety
+/// Only where the processor has AVX2.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+unsafe fn least_above_plane_avx2(z: &[f64], h: f64) -> Option<f64> {
+    least_above_plane(z, h)
 }
 
 /// Apply the contact law to every node of `x`, `v` (positions [m], velocities [m/s]); a node in contact
@@ -441,7 +468,9 @@ mod tests {
                 }
             }
         }
-        for (v1, v2) in [(0.0, 0.0), (-0.0, 0.0), (0.0, -0.0), (f64::NAN, 0.0), (f64::INFINITY, f64::NAN), (1.0, f64::INFINITY)] {
+        for (v1, v2) in
+            [(0.0, 0.0), (-0.0, 0.0), (0.0, -0.0), (f64::NAN, 0.0), (f64::INFINITY, f64::NAN), (1.0, f64::INFINITY)]
+        {
             for q in [0.0, 1.0, f64::INFINITY] {
                 assert_eq!(bits(friction_keep(v1, v2, q)), bits(stated(v1, v2, q)), "{v1:e} {v2:e} {q:e}");
             }
@@ -470,14 +499,19 @@ mod tests {
                 }
             }
         }
-        // zeros of both signs as the least clearance, in the lanes and in the remainder
-        let g = Ground::level(0.0, 0.2, 0.0);
-        for (plus, minus) in [(3, 12), (12, 3), (3, 18), (18, 3), (17, 19)] {
-            let mut z = vec![1.0; 20];
-            (z[plus], z[minus]) = (0.0, -0.0);
-            let x = [vec![0.0; 20], vec![0.0; 20], z];
-            let (a, b) = (g.least_clearance_m(&x, 0..=19), g.least_clearance_in_order_m(&x, 0..=19));
-            assert_eq!((a.to_bits(), a), (b.to_bits(), 0.0));
+        // zeros of both signs as the least clearance, in the lanes and in the remainder, over ground at
+        // `+0`, `-0` and 2 m (nodes on it, at `+-0` or at its height)
+        for h in [0.0, -0.0, 2.0] {
+            let g = Ground::level(h, 0.2, 0.0);
+            for (plus, minus) in [(3, 12), (12, 3), (3, 18), (18, 3), (17, 19)] {
+                let mut z = vec![h + 1.0; 20];
+                (z[plus], z[minus]) = (h, -0.0);
+                z[(plus + minus) / 2] = 0.0;
+                let x = [vec![0.0; 20], vec![0.0; 20], z];
+                let (a, b) = (g.least_clearance_m(&x, 0..=19), g.least_clearance_in_order_m(&x, 0..=19));
+                assert_eq!(a.to_bits(), b.to_bits(), "{h} {plus} {minus}");
+                assert_eq!(a, 0.0_f64.min(h).min(-h));
+            }
         }
         // the lowest node by hand
         let x = [vec![0.0; 3], vec![0.0; 3], vec![5.0, 2.5, 3.0]];

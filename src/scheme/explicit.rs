@@ -158,9 +158,12 @@ fn detected_isa() -> Isa {
 
 /// Whether code compiled for AVX2 may run here (the AVX2 or AVX-512 copy is chosen, [`detected_isa`]): the
 /// processor reports AVX2 and the environment variable `OHL_NO_AVX2` is not set (to measure or compare
-/// the baseline copy). Used by the elements' own AVX2 copies (pair forces, contact walk).
+/// the baseline copy). Used by the elements' own AVX2 copies (pair forces, contact walk, the least
+/// clearance above the ground). Read once: the ground's clearance asks at every time level, and the
+/// environment's lookup is a few hundred instructions.
 pub(crate) fn avx2_available() -> bool {
-    detected_isa() >= Isa::Avx2
+    static AVX2: std::sync::OnceLock<bool> = std::sync::OnceLock::new();
+    *AVX2.get_or_init(|| detected_isa() >= Isa::Avx2)
 }
 
 /// The instruction set the kernel's passes run with on this machine: `"avx512"` (the AVX-512 copies),
