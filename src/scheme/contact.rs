@@ -283,11 +283,11 @@ fn contact_node(g: &Ground, nodes: &mut Nodes, i: usize) {
             if v3[i] < 0.0 {
                 let normal = (1.0 + e) * -v3[i];
                 v3[i] *= -e;
-                if g.friction > 0.0 {
-                    if let Some(keep) = friction_keep(v1[i], v2[i], g.friction * normal) {
-                        v1[i] *= keep;
-                        v2[i] *= keep;
-                    }
+                if g.friction > 0.0
+                    && let Some(keep) = friction_keep(v1[i], v2[i], g.friction * normal)
+                {
+                    v1[i] *= keep;
+                    v2[i] *= keep;
                 }
             }
             exposed[i] = 0.0;
