@@ -45,17 +45,19 @@ pub fn differences(v: &[f64], diff: &mut [f64], intact: &[f64]) {
 }
 
 /// Second half of (3.3) at node `i`: `v_i + (b free_i) (D_{i+1} - D_i)`, where `b_free = b free_i` and
-/// `diff` holds the differences of [`differences`]. The explicit kernel fuses this with the drift (3.6).
+/// `below = D_i`, `above = D_{i+1}` are the differences of [`differences`] on either side. The explicit
+/// kernel fuses this with the drift (3.6).
 #[inline(always)]
-pub fn smoothed(v: f64, b_free: f64, diff: &[f64], i: usize) -> f64 {
-    v + b_free * (diff[i + 1] - diff[i])
+pub fn smoothed(v: f64, b_free: f64, below: f64, above: f64) -> f64 {
+    v + b_free * (above - below)
 }
 
 /// Second half of the mass-weighted (3.3) at node `i`: `v_i + (b free_i) (w+_i D_{i+1} - w-_i D_i)`,
-/// with `left = w-_i` and `right = w+_i` ([`crate::wire::Wire::smoothing_weight`]).
+/// with `below = D_i`, `above = D_{i+1}`, `left = w-_i` and `right = w+_i`
+/// ([`crate::wire::Wire::smoothing_weight`]).
 #[inline(always)]
-pub fn smoothed_weighted(v: f64, b_free: f64, diff: &[f64], left: f64, right: f64, i: usize) -> f64 {
-    v + b_free * (right * diff[i + 1] - left * diff[i])
+pub fn smoothed_weighted(v: f64, b_free: f64, below: f64, above: f64, left: f64, right: f64) -> f64 {
+    v + b_free * (right * above - left * below)
 }
 
 /// Apply the mass-weighted (3.3) to one velocity component `v` (length `N + 1`) with coefficient `b`,
@@ -67,7 +69,7 @@ pub fn smooth(v: &mut [f64], diff: &mut [f64], intact: &[f64], free: &[f64], wei
     differences(v, diff, intact);
     let diff = &diff[..n + 2];
     for (i, (vi, f)) in v[..n + 1].iter_mut().zip(&free[..n + 1]).enumerate() {
-        *vi = smoothed_weighted(*vi, b * f, diff, weight[0][i], weight[1][i], i);
+        *vi = smoothed_weighted(*vi, b * f, diff[i], diff[i + 1], weight[0][i], weight[1][i]);
     }
 }
 
