@@ -430,8 +430,8 @@ struct Current {
     disp: Vec<[f64; 3]>,
     /// support forces [N]
     forces: Vec<(usize, [f64; 3])>,
-    /// string swings: the arguments `[y, x]` of the angle along, `atan2(y, x)` [m], and the angle across
-    /// [deg]
+    /// string swings per support (`None` without a string; the list is empty where the wire has no
+    /// strings): the arguments `[y, x]` of the angle along, `atan2(y, x)` [m], and the angle across [deg]
     swings: Vec<Option<([f64; 2], f64)>>,
     /// per span: largest tension [N] and least clearance [m]
     spans: Vec<(f64, Option<f64>)>,
@@ -519,7 +519,8 @@ impl Observer for Peaks {
         s.support_forces(&mut c.forces);
         let w = s.wire();
         c.swings.clear();
-        for &(node, _) in &c.forces {
+        // Without strings no support has a swing (an empty list pairs with no support in the update).
+        for &(node, _) in if w.insulators.is_empty() { &[][..] } else { &c.forces[..] } {
             let string = w.insulators.iter().find(|i| i.node == node);
             c.swings.push(string.map(|i| {
                 let (along, across) = i.swing_parts(w.position(node), i.along);
