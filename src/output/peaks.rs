@@ -42,6 +42,16 @@
 //!   peak in every set the level updates, the span's value could not pass the peak (a peak is replaced
 //!   only by a larger value) and it is not formed. A NaN bound, the linear law (whose tensions may be
 //!   negative) and tensions from `1e150` N (squares near overflow) always form it;
+//! - a level's probe update where every component lies in its **quiet interval** `[lo, hi]`, formed after
+//!   each level that changed something: values in it change no peak, rise, fall or crossing, and the
+//!   level is only recorded as each crossing's last. The interval is the intersection of `|d| <= |d_p|`
+//!   (the peak); `[up(f + o), down(r + o)]` for the rise `r` and fall `f` about the first value `o`,
+//!   where `down(x)` is the largest number at most the exact `x` and `up(x)` the least at least it (the
+//!   sum and its rounding error by TwoSum), so that `d <= down(r + o)` gives `d - o <= r` exactly and
+//!   `d - o` rounds to at most `r`, the rounding being monotone; and the side of the last level with a
+//!   sign (`[0, inf)` above, `(-inf, 0]` below; only up to the band where the crossing's side is the
+//!   other one or none; only zero before the first level with a sign). Empty where a bound is NaN.
+//!   Values outside it take the comparisons of the update as before;
 //! - the run's peaks where they are the last phase's: when the run's peaks begin at the level where the
 //!   phase's began (`peaks_from_s` at an event, or 0 without events), both sets see the same levels and
 //!   perform the same operations on the same values, so the phase's set stands for both until the next
@@ -241,6 +251,79 @@ pub struct PeakSet {
     /// levels left that take the full update without the comparisons first ([`PeakSet::update`])
     #[serde(skip)]
     full_for: CostHint,
+    /// each probe component's quiet interval (module documentation)
+    #[serde(skip)]
+    quiet: QuietIntervals,
+}
+
+/// Each probe component's quiet interval `[lo, hi]` (module documentation), formed after a level that
+/// changed something (`armed` false until then). Only chooses how to compute: equal to every other, so
+/// that sets compare by their peaks alone.
+#[derive(Clone, Debug, Default)]
+struct QuietIntervals {
+    lo: Vec<[f64; 3]>,
+    hi: Vec<[f64; 3]>,
+    armed: bool,
+}
+
+impl PartialEq for QuietIntervals {
+    fn eq(&self, _: &Self) -> bool {
+        true
+    }
+}
+
+/// The quiet interval of one component (module documentation): peak `p`, rise `r`, fall `f`, crossings
+/// `c`, first value `o` [m] and crossing band `band` [m]; only zero before the first level with a sign
+/// (a value with a sign would become the crossings' first), empty (`lo > hi`) where a bound is NaN.
+fn quiet_interval(p: &Peak, r: &Peak, f: &Peak, c: &Crossings, o: f64, band: f64) -> [f64; 2] {
+    const EMPTY: [f64; 2] = [f64::INFINITY, f64::NEG_INFINITY];
+    let inf = f64::INFINITY;
+    let side = if c.last_d > 0.0 {
+        if c.side > 0.0 { [0.0, inf] } else { [0.0, band] }
+    } else if c.last_d < 0.0 {
+        if c.side < 0.0 { [-inf, 0.0] } else { [-band, 0.0] }
+    } else {
+        [0.0, 0.0]
+    };
+    let peak = p.value_m.abs();
+    let bounds = [-peak, peak, sum_ceil(f.value_m, o), sum_floor(r.value_m, o), side[0], side[1]];
+    if bounds.iter().any(|b| b.is_nan()) {
+        return EMPTY;
+    }
+    [bounds[0].max(bounds[2]).max(bounds[4]), bounds[1].min(bounds[3]).min(bounds[5])]
+}
+
+/// The rounded sum `s = a + b` and its error `a + b - s`, exact without overflow (Knuth's TwoSum; NaN
+/// with an infinity).
+fn two_sum(a: f64, b: f64) -> (f64, f64) {
+    let s = a + b;
+    let bb = s - a;
+    (s, (a - (s - bb)) + (b - bb))
+}
+
+/// The largest number at most the exact `a + b`: a value `d` up to it has `d - b <= a` exactly, so
+/// `d - b` rounds to at most `a` (rounding is monotone). NaN where the error is NaN (an infinity).
+fn sum_floor(a: f64, b: f64) -> f64 {
+    let (s, e) = two_sum(a, b);
+    if e < 0.0 {
+        s.next_down()
+    } else if e >= 0.0 {
+        s
+    } else {
+        f64::NAN
+    }
+}
+
+/// The least number at least the exact `a + b`, likewise.
+fn sum_ceil(a: f64, b: f64) -> f64 {
+    let (s, e) = two_sum(a, b);
+    if e > 0.0 {
+        s.next_up()
+    } else if e <= 0.0 {
+        s
+    } else {
+        f64::NAN
+    }
 }
 
 /// A count that only chooses how to compute (not what): equal to every other, so that sets compare by
@@ -298,7 +381,30 @@ impl PeakSet {
             supports: vec![SupportPeaks::default(); supports],
             spans: vec![SpanPeaks::default(); spans],
             full_for: CostHint::default(),
+            quiet: QuietIntervals { lo: vec![[0.0; 3]; probes], hi: vec![[0.0; 3]; probes], armed: false },
         }
+    }
+
+    /// Form every probe component's quiet interval from the peaks as they now are (after the first
+    /// level, which sets the first values).
+    fn arm(&mut self, band: f64) {
+        let Some(o) = self.origin.as_deref() else { return };
+        let n = self.probes.len();
+        let q = &mut self.quiet;
+        for i in 0..n {
+            for k in 0..3 {
+                let [lo, hi] = quiet_interval(
+                    &self.probes[i][k],
+                    &self.rises[i][k],
+                    &self.falls[i][k],
+                    &self.crossings[i][k],
+                    o[i][k],
+                    band,
+                );
+                (q.lo[i][k], q.hi[i][k]) = (lo, hi);
+            }
+        }
+        q.armed = true;
     }
 
     // The negated comparisons are the full update's own (`!(a > b)` is true exactly where it changes
@@ -319,6 +425,27 @@ impl PeakSet {
         let origin = self.origin.get_or_insert_with(|| disp.clone());
         let n = self.probes.len();
         let (o, d) = (&origin[..n], &disp[..n]);
+        // Every component in its quiet interval: the level is only recorded (which keeps each interval:
+        // a recorded value has the sign of the last one).
+        if self.full_for.0 == 0 && self.quiet.armed {
+            let (lo, hi) = (&self.quiet.lo[..n], &self.quiet.hi[..n]);
+            let mut inside = true;
+            for i in 0..n {
+                for k in 0..3 {
+                    inside &= (lo[i][k] <= d[i][k]) & (d[i][k] <= hi[i][k]);
+                }
+            }
+            if inside {
+                let c = &mut self.crossings[..n];
+                for i in 0..n {
+                    for k in 0..3 {
+                        c[i][k].record(t, d[i][k]);
+                    }
+                }
+                self.update_supports(t, tau, forces, swings);
+                return;
+            }
+        }
         // At most levels no probe's peak, rise, fall or crossing changes: the level is then at most
         // recorded as each component's crossings' last one, which is all the full update would do with it.
         // One pass of comparisons finds that out; after a level where it did not hold (a displacement
@@ -342,6 +469,7 @@ impl PeakSet {
                         c[i][k].record(t, d[i][k]);
                     }
                 }
+                self.arm(band_m);
                 self.update_supports(t, tau, forces, swings);
                 return;
             }
@@ -349,6 +477,7 @@ impl PeakSet {
         } else {
             self.full_for.0 -= 1;
         }
+        self.quiet.armed = false;
         // Component by component: its peak, rise, fall and crossings, each a function of that component's
         // values alone, so the order across components changes nothing.
         let (p, r, f, c) =
@@ -748,5 +877,105 @@ mod tests {
         assert!((f.value_m + 0.7).abs() < 1e-12 && f.time_s == 5.0, "{f:?}");
         assert_eq!((set.rises[0][0], set.falls[0][1]), (Peak::default(), Peak::default()));
         assert_eq!(set.probes[0][2].value_m, -15.5);
+    }
+
+    /// The quiet interval's edges for the rise and fall: `d = sum_floor(a, b)` has `d - b` rounding to at
+    /// most `a`, `sum_ceil` to at least it, over sums of numbers of many magnitudes and signs (where the
+    /// rounded sum is above or below the exact one), with zeros and infinities.
+    #[test]
+    fn rounded_edges_keep_the_difference_on_their_side() {
+        let mut r: u64 = 7;
+        let mut next = move || {
+            r = r.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            (r >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let (mut above, mut below) = (0, 0);
+        for _ in 0..200_000 {
+            let a = (next() - 0.5) * 10f64.powi((next() * 12.0) as i32 - 6);
+            let b = (next() - 0.5) * 10f64.powi((next() * 12.0) as i32 - 6);
+            let (lo, hi) = (sum_ceil(a, b), sum_floor(a, b));
+            assert!(hi - b <= a && lo - b >= a, "{a:e} {b:e}: [{lo:e}, {hi:e}]");
+            assert!(lo <= hi.next_up() && hi <= lo);
+            above += usize::from(a + b > hi);
+            below += usize::from(a + b < lo);
+        }
+        assert!(above > 1000 && below > 1000, "{above} rounded sums above the exact one, {below} below");
+        assert_eq!((sum_floor(0.0, 0.0), sum_ceil(-0.0, 0.0)), (0.0, 0.0));
+        assert!(sum_floor(f64::INFINITY, 1.0).is_nan() && sum_ceil(1.0, f64::NEG_INFINITY).is_nan());
+    }
+
+    /// A set updated as the runs do it (quiet intervals, the comparisons, the full update after a change)
+    /// equals one that takes the full update at every level, field for field including every crossing's
+    /// state: two probes whose components oscillate about offsets, grow and decay, stay inside the
+    /// crossing band, are exactly zero, sit exactly on a peak and on `o + r` or `o + f` as rounded, and a
+    /// NaN level. Most levels must be decided by the quiet intervals (else the test would not test them).
+    #[test]
+    fn quiet_intervals_change_nothing() {
+        let band = 1e-9 * 400.0;
+        let mut set = PeakSet::sized(2, 0, 0);
+        let mut reference = PeakSet::sized(2, 0, 0);
+        let (mut inside, mut levels) = (0, 0);
+        let signal = |n: usize, i: usize, k: usize| -> f64 {
+            let t = n as f64 * 0.01;
+            let (a, w, off) = (0.5 + i as f64, 2.0 + k as f64, [0.0, 0.3, -0.7][k] * (1.0 - 0.5 * i as f64));
+            let envelope = if n < 2000 { 1.0 } else { (-(t - 20.0) / 5.0).exp() };
+            match n % 997 {
+                500 if k == 0 => 0.0,
+                501 if k == 1 => 0.5 * band,
+                _ => off * (1.0 + 1e-3 * t) + a * envelope * (w * t).sin(),
+            }
+        };
+        for n in 0..6000 {
+            let t = n as f64 * 0.01;
+            let mut disp = vec![[0.0; 3]; 2];
+            for (i, d) in disp.iter_mut().enumerate() {
+                for (k, x) in d.iter_mut().enumerate() {
+                    *x = signal(n, i, k);
+                }
+            }
+            if n % 1499 == 700 {
+                // exactly on the peak and on the rise's and fall's edges as rounded
+                disp[0][0] = reference.probes[0][0].value_m;
+                if let Some(o) = &reference.origin {
+                    disp[1][2] = reference.rises[1][2].value_m + o[1][2];
+                    disp[0][1] = reference.falls[0][1].value_m + o[0][1];
+                }
+            }
+            if let (1100 | 1200 | 1300 | 1400, Some(o)) = (n % 1499, &reference.origin) {
+                // just beyond a rise's edge (probe 0, x3: values in about [-1.2, -0.2]) and a fall's
+                // (probe 1, x2: about [-1.35, 1.65]), where neither the peak nor the side binds: by 1e-9 m,
+                // and by the least change that rounds beyond them (new rises and falls)
+                let (r, f) = (reference.rises[0][2].value_m, reference.falls[1][1].value_m);
+                match n % 1499 {
+                    1100 => disp[0][2] = r + o[0][2] + 1e-9,
+                    1200 => disp[1][1] = f + o[1][1] - 1e-9,
+                    1300 => disp[0][2] = o[0][2] + r.next_up(),
+                    _ => disp[1][1] = o[1][1] + f.next_down(),
+                }
+            }
+            if n < 40 {
+                // exactly zero for the first levels, then inside the band on either side
+                disp[1][0] = if n < 20 { 0.0 } else { 0.3 * band * if n % 2 == 0 { 1.0 } else { -1.0 } };
+            }
+            if n == 4321 {
+                disp[1][0] = f64::NAN;
+            }
+            let c = Current { t, tau: t / 10.0, disp, band_m: band, ..Default::default() };
+            let armed = set.quiet.armed && set.full_for.0 == 0;
+            let (lo, hi) = (set.quiet.lo.clone(), set.quiet.hi.clone());
+            set.update(&c);
+            reference.full_for.0 = u32::MAX;
+            reference.update(&c);
+            assert_eq!(set, reference, "level {n}");
+            for (i, d) in c.disp.iter().enumerate() {
+                for k in 0..3 {
+                    assert_eq!(set.crossings[i][k], reference.crossings[i][k], "level {n} probe {i} component {k}");
+                }
+                inside += usize::from(armed && (0..3).all(|k| lo[i][k] <= d[k] && d[k] <= hi[i][k]));
+            }
+            levels += 2;
+        }
+        assert!(inside > levels / 2, "{inside} of {levels} probe levels inside their quiet intervals");
+        assert!(set.crossings[0][0].count() > 10 && set.rises[1][2].value_m > 0.0);
     }
 }
