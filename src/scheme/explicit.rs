@@ -504,8 +504,7 @@ impl Explicit {
         let damp = self.params.mass_damping_per_s != 0.0;
         let smooth = self.params.smoothing > 0.0;
         let extra = self.nodal_force.take();
-        let none = [const { Vec::new() }; 3];
-        let f = extra.as_ref().unwrap_or(&none);
+        let f = extra.as_ref().unwrap_or(&NO_NODAL_FORCE);
         let points = std::mem::take(&mut self.point_force);
         let mut all = std::mem::take(&mut self.point_scratch);
         let p = if self.external_force.is_empty() {
@@ -739,9 +738,14 @@ impl Explicit {
     pub fn support_forces(&self, out: &mut Vec<(usize, [f64; 3])>) {
         assert!(self.fresh, "support_forces needs evaluate_forces at this time level");
         out.clear();
-        for &i in &self.supports {
-            let f = if self.wire.free[i] <= 0.0 {
-                self.node_force3(i)
+        // (One `extend` from the supports' slice: its length is reserved once, not checked per push. The
+        // arrays are sliced once to the nodes, so that the test of `free[i]` bounds every read of node
+        // `i` in them.)
+        let own = self.own_force();
+        let free = &self.wire.free[..self.wire.nodes()];
+        out.extend(self.supports.iter().map(|&i| {
+            let f = if free[i] <= 0.0 {
+                self.node_force3_with(&own, i)
             } else if let Some(&(_, p)) = self.point_force.iter().find(|(n, _)| *n == i) {
                 // A suspension support: the string's pull on its crossarm, minus its force on the clamp.
                 [-p[0], -p[1], -p[2]]
@@ -749,8 +753,8 @@ impl Explicit {
                 // Released: no longer held.
                 [0.0; 3]
             };
-            out.push((i, f));
-        }
+            (i, f)
+        }));
     }
 
     /// Length of the last step `dt_{n-1/2}` [s].
@@ -1235,14 +1239,32 @@ impl Explicit {
     }
 
     /// [`Explicit::node_force`] of the three components at once: one scan of the point forces, each
-    /// component summed in the same order (the same bits).
+    /// component summed in the same order (the same bits). (The supports' forces call
+    /// [`Explicit::node_force3_with`]; the tests compare this with `node_force`.)
+    #[cfg(test)]
     fn node_force3(&self, i: usize) -> [f64; 3] {
-        let mut f = [0, 1, 2].map(|k| self.node_force_own(k, i));
+        self.node_force3_with(&self.own_force(), i)
+    }
+
+    /// [`Explicit::node_force3`] from the arrays `own` ([`Explicit::own_force`]) sliced once by a caller
+    /// that forms several nodes' forces.
+    #[inline(always)]
+    fn node_force3_with(&self, own: &OwnForce<'_>, i: usize) -> [f64; 3] {
+        let mut f = [0, 1, 2].map(|k| own.component(k, i));
         // (The peaks ask for every support's force at every level; most runs have no point force.)
         if self.point_force.is_empty() && self.external_force.is_empty() {
             return f;
         }
-        for &(node, p) in self.point_force.iter().chain(&self.external_force) {
+        // The strings' forces, then the external ones: the order of `node_force`'s chain, in two plain
+        // loops (a chained iterator tests which half it is in at every element).
+        for &(node, p) in &self.point_force {
+            if node == i {
+                for k in 0..3 {
+                    f[k] += p[k];
+                }
+            }
+        }
+        for &(node, p) in &self.external_force {
             if node == i {
                 for k in 0..3 {
                     f[k] += p[k];
@@ -1253,18 +1275,25 @@ impl Explicit {
     }
 
     /// [`Explicit::node_force`] without the point forces (strings, external forces): the segments'
-    /// tension and loads, gravity and the prescribed nodal force, summed in that order.
+    /// tension and loads, gravity and the prescribed nodal force, summed in that order
+    /// ([`OwnForce::component`]).
     #[inline(always)]
     fn node_force_own(&self, k: usize, i: usize) -> f64 {
-        let w = &self.wire;
-        let mut f = self.fs[k][i + 1] - self.fs[k][i] + (self.es[k][i + 1] + self.es[k][i]) * w.exposed[i];
-        if k == 2 {
-            f -= w.mass[i] * self.loads.gravity_m_per_s2;
+        self.own_force().component(k, i)
+    }
+
+    /// The arrays of the nodes' own forces, each sliced once to the wire's nodes.
+    #[inline(always)]
+    fn own_force(&self) -> OwnForce<'_> {
+        let (w, n1) = (&self.wire, self.wire.nodes());
+        OwnForce {
+            fs: [&self.fs[0][..n1 + 1], &self.fs[1][..n1 + 1], &self.fs[2][..n1 + 1]],
+            es: [&self.es[0][..n1 + 1], &self.es[1][..n1 + 1], &self.es[2][..n1 + 1]],
+            exposed: &w.exposed[..n1],
+            mass: &w.mass[..n1],
+            gravity: self.loads.gravity_m_per_s2,
+            nodal: self.nodal_force.as_ref().map(|x| [&x[0][..n1], &x[1][..n1], &x[2][..n1]]),
         }
-        if let Some(x) = &self.nodal_force {
-            f += x[k][i];
-        }
-        f
     }
 
     /// Net force on every node [N] at the current state (tension with the Kelvin-Voigt rate from the
@@ -1292,6 +1321,38 @@ impl Explicit {
             _ => TensionOnly::tension(ea, eta, st.e, st.edot),
         };
         t * w.intact[j]
+    }
+}
+
+/// No prescribed nodal force (the node pass's argument without one: nothing to build per step).
+static NO_NODAL_FORCE: [Vec<f64>; 3] = [const { Vec::new() }; 3];
+
+/// The arrays of the nodes' own forces (without point forces), each sliced to the wire's nodes (`fs`,
+/// `es`: one more, the padding after the last segment): a node's index tested against one of them
+/// bounds its reads in all.
+struct OwnForce<'a> {
+    fs: [&'a [f64]; 3],
+    es: [&'a [f64]; 3],
+    exposed: &'a [f64],
+    mass: &'a [f64],
+    gravity: f64,
+    nodal: Option<[&'a [f64]; 3]>,
+}
+
+impl OwnForce<'_> {
+    /// Node `i`'s own force along `x_k` [N]: the segments' tension and loads, gravity and the prescribed
+    /// nodal force, summed in that order (the node pass's sum, [`Explicit::node_force`]).
+    #[inline(always)]
+    fn component(&self, k: usize, i: usize) -> f64 {
+        let (fs, es) = (self.fs[k], self.es[k]);
+        let mut f = fs[i + 1] - fs[i] + (es[i + 1] + es[i]) * self.exposed[i];
+        if k == 2 {
+            f -= self.mass[i] * self.gravity;
+        }
+        if let Some(x) = &self.nodal {
+            f += x[k][i];
+        }
+        f
     }
 }
 
