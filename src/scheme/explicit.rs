@@ -1138,7 +1138,7 @@ impl Explicit {
     /// The arrays are sliced to their lengths once (no bounds check per element) and each segment's
     /// strain is formed in place by [`segment::stretch`], the function [`Wire::strain`] calls (the same
     /// operations on the same operands); every term and every sum is the one of the loops as they were
-    /// (`node_force_own` written out), in the same order: bitwise the same energies.
+    /// (`OwnForce::component` written out), in the same order: bitwise the same energies.
     fn energies_of_forces<const MAX_TENSION: bool>(&self) -> Diagnostics {
         let w = &self.wire;
         let n = w.segments();
@@ -1168,7 +1168,7 @@ impl Explicit {
             let at_i = &points[first..next];
             let mut v2 = 0.0;
             for k in 0..3 {
-                // `node_force_own(k, i)`, then the point forces at the node.
+                // `OwnForce::component(k, i)`, then the point forces at the node.
                 let mut f = fs[k][i + 1] - fs[k][i] + (es[k][i + 1] + es[k][i]) * exposed[i];
                 if k == 2 {
                     f -= mass[i] * g;
@@ -1228,8 +1228,16 @@ impl Explicit {
 
     /// Net force on node `i` along `x_k` [N] from the segment forces last computed: tension, distributed
     /// loads, gravity and the prescribed nodal force (no mass damping).
+    #[cfg(test)]
     fn node_force(&self, k: usize, i: usize) -> f64 {
-        let mut f = self.node_force_own(k, i);
+        self.node_force_with(&self.own_force(), k, i)
+    }
+
+    /// [`Explicit::node_force`] from the arrays `own` ([`Explicit::own_force`]) sliced once by a caller
+    /// that forms several nodes' forces.
+    #[inline(always)]
+    fn node_force_with(&self, own: &OwnForce<'_>, k: usize, i: usize) -> f64 {
+        let mut f = own.component(k, i);
         for &(node, p) in self.point_force.iter().chain(&self.external_force) {
             if node == i {
                 f += p[k];
@@ -1274,15 +1282,8 @@ impl Explicit {
         f
     }
 
-    /// [`Explicit::node_force`] without the point forces (strings, external forces): the segments'
-    /// tension and loads, gravity and the prescribed nodal force, summed in that order
-    /// ([`OwnForce::component`]).
-    #[inline(always)]
-    fn node_force_own(&self, k: usize, i: usize) -> f64 {
-        self.own_force().component(k, i)
-    }
-
-    /// The arrays of the nodes' own forces, each sliced once to the wire's nodes.
+    /// The arrays of the nodes' own forces (without the point forces: the strings', the external ones),
+    /// each sliced once to the wire's nodes.
     #[inline(always)]
     fn own_force(&self) -> OwnForce<'_> {
         let (w, n1) = (&self.wire, self.wire.nodes());
@@ -1302,9 +1303,10 @@ impl Explicit {
     /// residual of the discrete equations that an implicit solver drives to zero.
     pub fn net_force(&mut self, out: &mut [Vec<f64>; 3]) {
         self.compute_segment_forces();
+        let own = self.own_force();
         for k in 0..3 {
             for i in 0..self.wire.nodes() {
-                out[k][i] = self.node_force(k, i);
+                out[k][i] = self.node_force_with(&own, k, i);
             }
         }
     }
