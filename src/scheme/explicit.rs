@@ -1138,7 +1138,7 @@ impl Explicit {
     /// The arrays are sliced to their lengths once (no bounds check per element) and each segment's
     /// strain is formed in place by [`segment::stretch`], the function [`Wire::strain`] calls (the same
     /// operations on the same operands); every term and every sum is the one of the loops as they were
-    /// (`OwnForce::component` written out), in the same order: bitwise the same energies.
+    /// (each node's own force from [`OwnForce::component`]), in the same order: bitwise the same energies.
     fn energies_of_forces<const MAX_TENSION: bool>(&self) -> Diagnostics {
         let w = &self.wire;
         let n = w.segments();
@@ -1153,12 +1153,10 @@ impl Explicit {
         // every node.
         let mut points: Vec<(usize, [f64; 3])> = self.point_force.iter().chain(&self.external_force).copied().collect();
         points.sort_by_key(|&(node, _)| node);
-        let (mass, inv_mass, free, exposed) = (&w.mass[..n1], &w.inv_mass[..n1], &w.free[..n1], &w.exposed[..n1]);
+        let (mass, inv_mass, free) = (&w.mass[..n1], &w.inv_mass[..n1], &w.free[..n1]);
         let x = [&w.x[0][..n1], &w.x[1][..n1], &w.x[2][..n1]];
         let v = [&w.v[0][..n1], &w.v[1][..n1], &w.v[2][..n1]];
-        let fs = [&self.fs[0][..n1 + 1], &self.fs[1][..n1 + 1], &self.fs[2][..n1 + 1]];
-        let es = [&self.es[0][..n1 + 1], &self.es[1][..n1 + 1], &self.es[2][..n1 + 1]];
-        let nodal = self.nodal_force.as_ref().map(|x| [&x[0][..n1], &x[1][..n1], &x[2][..n1]]);
+        let own = self.own_force();
         let mut next = 0;
         for i in 0..n1 {
             let first = next;
@@ -1168,14 +1166,8 @@ impl Explicit {
             let at_i = &points[first..next];
             let mut v2 = 0.0;
             for k in 0..3 {
-                // `OwnForce::component(k, i)`, then the point forces at the node.
-                let mut f = fs[k][i + 1] - fs[k][i] + (es[k][i + 1] + es[k][i]) * exposed[i];
-                if k == 2 {
-                    f -= mass[i] * g;
-                }
-                if let Some(x) = &nodal {
-                    f += x[k][i];
-                }
+                // The node's own force, then the point forces at the node.
+                let mut f = own.component(k, i);
                 for (_, p) in at_i {
                     f += p[k];
                 }
