@@ -351,6 +351,17 @@ pub struct Phase {
     pub peaks: PeakSet,
 }
 
+/// Record the level at `t` [s] with the displacements `d` [m] as each component's crossings' last
+/// ([`Crossings::record`]): all a quiet level changes.
+#[inline(always)]
+fn record_all(c: &mut [[Crossings; 3]], t: f64, d: &[[f64; 3]]) {
+    for (c, d) in c.iter_mut().zip(d) {
+        for k in 0..3 {
+            c[k].record(t, d[k]);
+        }
+    }
+}
+
 fn signed(p: &mut Peak, v: f64, t: f64, tau: f64) {
     if v.abs() > p.value_m.abs() {
         *p = Peak { value_m: v, time_s: t, tau };
@@ -436,12 +447,7 @@ impl PeakSet {
                 }
             }
             if inside {
-                let c = &mut self.crossings[..n];
-                for i in 0..n {
-                    for k in 0..3 {
-                        c[i][k].record(t, d[i][k]);
-                    }
-                }
+                record_all(&mut self.crossings[..n], t, d);
                 self.update_supports(t, tau, forces, swings);
                 return;
             }
@@ -464,11 +470,7 @@ impl PeakSet {
                 }
             }
             if quiet {
-                for i in 0..n {
-                    for k in 0..3 {
-                        c[i][k].record(t, d[i][k]);
-                    }
-                }
+                record_all(c, t, d);
                 self.arm(band_m);
                 self.update_supports(t, tau, forces, swings);
                 return;
