@@ -382,7 +382,7 @@ pub(crate) fn check(
             }
             // A two-material conductor is strung at t0 by its own law below: no rescaling.
             let alpha = if two_material.is_some() { 0.0 } else { s.conductor.thermal_expansion_per_k };
-            let factor = 1.0 + alpha * (t0 - t_ref);
+            let factor = crate::wire::thermal_factor(alpha, t0, t_ref);
             if factor != 1.0 && s.initial.shape != ShapeSpec::Equilibrium {
                 c.fail(
                     "section.stringing_temperature_k",

@@ -379,7 +379,7 @@ impl Wire {
             self.rest_length.copy_from_slice(&self.reference_length);
             return;
         }
-        let factor = 1.0 + self.thermal_expansion_per_k * (temperature_k - self.reference_temperature_k);
+        let factor = thermal_factor(self.thermal_expansion_per_k, temperature_k, self.reference_temperature_k);
         for (l0, &l) in self.rest_length.iter_mut().zip(&self.reference_length) {
             *l0 = l * factor;
         }
@@ -394,25 +394,40 @@ impl Wire {
         let (a, u0) = (self.thermal_expansion_per_k, self.reference_temperature_k);
         // Zipped (no index checks: the compiler may take two segments at once, each the same operations).
         for ((l0, &l), &u) in self.rest_length.iter_mut().zip(&self.reference_length).zip(&self.temperature_k) {
-            *l0 = l * (1.0 + a * (u - u0));
+            *l0 = l * thermal_factor(a, u, u0);
         }
     }
+}
+
+/// The thermal factor of (5.5), `L0 = L (1 + alpha_t (u - u_ref))`: `1 + alpha (u - u_ref)` [-] for the
+/// expansion coefficient `alpha` [1/K] at the temperature `u` [K] over the reference `u_ref` [K] (one
+/// definition: the same operations, the same bits, wherever a stress-free length is scaled).
+#[inline(always)]
+pub fn thermal_factor(alpha: f64, u: f64, u_ref: f64) -> f64 {
+    1.0 + alpha * (u - u_ref)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
 
+    /// A straight wire of `n` segments `ds` [m] apart along `x2`, stress-free lengths `ds + 1e-3 sin(w j)`
+    /// [m] (none equal), `mass` [kg/m] and thermal expansion `alpha` [1/K]: the rest-length tests' wire.
+    fn thermal_wire(n: usize, ds: f64, w: f64, mass: f64, alpha: f64) -> Wire {
+        let conductor =
+            Conductor { axial_stiffness_n: 1.0, internal_friction_n_s: 0.0, law: tension::LawKind::TensionOnly };
+        let x = [vec![0.0; n + 1], (0..=n).map(|i| i as f64 * ds).collect(), vec![0.0; n + 1]];
+        let mut wire = Wire::new(conductor, x, (0..n).map(|j| ds + 1e-3 * (w * j as f64).sin()).collect(), mass);
+        wire.thermal_expansion_per_k = alpha;
+        wire
+    }
+
     /// The zipped loop of `update_rest_lengths` gives the bits of the indexed formula
     /// `L0_j = L_j (1 + a (u_j - u_0))` over pseudo-random temperatures and lengths.
     #[test]
     fn rest_lengths_are_the_indexed_formula() {
-        let conductor =
-            Conductor { axial_stiffness_n: 1.0, internal_friction_n_s: 0.0, law: tension::LawKind::TensionOnly };
         let n = 37;
-        let x = [vec![0.0; n + 1], (0..=n).map(|i| i as f64 * 8.0).collect(), vec![0.0; n + 1]];
-        let mut w = Wire::new(conductor, x, (0..n).map(|j| 8.0 + 1e-3 * (j as f64).sin()).collect(), 1.0);
-        w.thermal_expansion_per_k = 1.93e-5;
+        let mut w = thermal_wire(n, 8.0, 1.0, 1.0, 1.93e-5);
         for j in 0..n {
             w.temperature_k[j] = 288.15 + 90.0 * (0.7 * j as f64).cos();
         }
@@ -429,12 +444,8 @@ mod tests {
     /// temperatures and `update_rest_lengths` (the factor formed per segment), over many temperatures.
     #[test]
     fn a_uniform_temperature_is_update_rest_lengths_bit_for_bit() {
-        let conductor =
-            Conductor { axial_stiffness_n: 1.0, internal_friction_n_s: 0.0, law: tension::LawKind::TensionOnly };
         let n = 41;
-        let x = [vec![0.0; n + 1], (0..=n).map(|i| i as f64 * 7.5).collect(), vec![0.0; n + 1]];
-        let mut a = Wire::new(conductor, x, (0..n).map(|j| 7.5 + 1e-3 * (1.3 * j as f64).sin()).collect(), 1.6);
-        a.thermal_expansion_per_k = 1.89e-5;
+        let mut a = thermal_wire(n, 7.5, 1.3, 1.6, 1.89e-5);
         let mut b = a.clone();
         for k in 0..500 {
             let temp = 250.0 + 0.37 * k as f64 + 1e-9 * (k as f64).cos();
