@@ -341,6 +341,17 @@ unsafe fn kinetic_sum_lanes_avx2(m: &[f64], v1: &[f64], v2: &[f64], v3: &[f64]) 
     kinetic_sum_lanes(m, v1, v2, v3)
 }
 
+/// An integer whose order is that of a speed squared `s2 = v1^2 + v2^2 + v3^2`: `s2` is `+0`, positive,
+/// `+inf` or a NaN of either sign (never `-0`: a square is `+0` or positive, and `+0 + +0 = +0`). Its bits
+/// without the sign bit: for the numbers, integers in the order of the numbers (non-negative doubles
+/// order as their bits); every NaN above `+inf`. So for a bound `b2 >= 0` (not NaN), `speed2_key(s2) <=
+/// speed2_key(b2)` is exactly `s2 <= b2`, NaN included (false). An integer maximum vectorises where a
+/// floating-point one does not (the node loops fold it in place of a comparison per node).
+#[inline(always)]
+fn speed2_key(s2: f64) -> i64 {
+    (s2.to_bits() & !(1 << 63)) as i64
+}
+
 /// A number not given before in this process ([`Explicit::wire_stamp`]).
 fn next_wire_stamp() -> u64 {
     static NEXT: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(1);
@@ -421,6 +432,13 @@ pub struct Explicit {
     inv_rest_length_fresh: bool,
     /// a number new at every [`Explicit::wire_mut`] ([`Explicit::wire_stamp`])
     wire_stamp: u64,
+    /// the largest `|v_i|^2` of the velocities the last step ended with, as the node loops formed it
+    /// (the kinetic sum's `v1^2 + v2^2 + v3^2`) [m^2/s^2]; NaN where not known (before a step, after
+    /// [`Explicit::wire_mut`], where contact or the strings' kick changed a velocity after the loops)
+    speed2_max: f64,
+    /// the least node mass and the sum of the node masses [kg] ([`Explicit::kinetic_energy_quick_bounds`]),
+    /// formed at the first call after a change of the wire
+    mass_range: std::cell::Cell<Option<(f64, f64)>>,
     /// segment tension force `T t` [N], padded: index `j + 1` for segment `j`, zero at 0 and `N + 1`
     fs: [Vec<f64>; 3],
     /// half the segment load `P / 2` [N], padded like `fs` (between the segment pass's two loops, the
@@ -467,6 +485,8 @@ impl Explicit {
             inv_rest_length: vec![0.0; pad],
             inv_rest_length_fresh: false,
             wire_stamp: next_wire_stamp(),
+            speed2_max: f64::NAN,
+            mass_range: std::cell::Cell::new(None),
             fs: z(),
             es: z(),
             seg_len: vec![0.0; pad],
@@ -515,7 +535,7 @@ impl Explicit {
             all.extend_from_slice(&self.external_force);
             &all[..]
         };
-        let ok = match (extra.is_some(), damp, smooth) {
+        let key = match (extra.is_some(), damp, smooth) {
             (false, false, false) => self.node_pass::<false, false, false>(kick, dt, f, p),
             (false, true, false) => self.node_pass::<false, true, false>(kick, dt, f, p),
             (true, false, false) => self.node_pass::<true, false, false>(kick, dt, f, p),
@@ -524,6 +544,19 @@ impl Explicit {
             (false, true, true) => self.node_pass::<false, true, true>(kick, dt, f, p),
             (true, false, true) => self.node_pass::<true, false, true>(kick, dt, f, p),
             (true, true, true) => self.node_pass::<true, true, true>(kick, dt, f, p),
+        };
+        // `<=` on the keys is `<=` on the speeds squared (`s2 <= bound2`), except that a NaN (of either
+        // sign) fails: [`speed2_key`].
+        let bound2 = self.params.max_speed_m_per_s * self.params.max_speed_m_per_s;
+        let ok = key <= speed2_key(bound2);
+        // The largest speed squared of the velocities the level ends with, for the kinetic-energy bounds
+        // ([`Explicit::kinetic_energy_quick_bounds`]), unless something changes a velocity after the
+        // node loops: the strings' kick without smoothing (the loop's key holds the clamps' speed before
+        // it), or the ground contact.
+        self.speed2_max = if (!points.is_empty() && !smooth) || self.ground.is_some() {
+            f64::NAN
+        } else {
+            f64::from_bits(key as u64)
         };
         if !points.is_empty() {
             self.advance_crossarms(&points, kick, dt);
@@ -558,6 +591,8 @@ impl Explicit {
         self.viscous = None;
         self.inv_rest_length_fresh = false;
         self.wire_stamp = next_wire_stamp();
+        self.speed2_max = f64::NAN;
+        self.mass_range.set(None);
         &mut self.wire
     }
 
@@ -948,12 +983,13 @@ impl Explicit {
     isa_dispatch! {
         /// The node pass ([`Explicit::kick_drift`]), from the widest copy the processor runs.
         fn node_pass[const EXTRA: bool, const DAMP: bool, const SMOOTH: bool][EXTRA, DAMP, SMOOTH](
-            kick: f64, dt: f64, extra: &[Vec<f64>; 3], points: &[(usize, [f64; 3])]) -> bool
+            kick: f64, dt: f64, extra: &[Vec<f64>; 3], points: &[(usize, [f64; 3])]) -> i64
             = kick_drift;
     }
 
     /// Pass 2 over nodes: `v += kick a` on free nodes, then (without smoothing) `r += dt v` in the same
-    /// loop; returns false if any speed is beyond the bound or not finite. `EXTRA` adds the prescribed
+    /// loop; returns the largest [`speed2_key`] of the new velocities (and, without smoothing, of the
+    /// clamps' velocities before their strings' kick: the speed check only). `EXTRA` adds the prescribed
     /// nodal forces; `DAMP = false` drops the mass damping `- zeta v` (zeta = 0: the term can change only
     /// the sign of a zero); `SMOOTH` inserts (3.3) between the kick and the drift.
     ///
@@ -970,7 +1006,7 @@ impl Explicit {
         dt: f64,
         extra: &[Vec<f64>; 3],
         points: &[(usize, [f64; 3])],
-    ) -> bool {
+    ) -> i64 {
         let w = &mut self.wire;
         let n1 = w.nodes();
         let inv_m = &w.inv_mass[..n1];
@@ -978,7 +1014,6 @@ impl Explicit {
         let exposed = &w.exposed[..n1];
         let zeta = self.params.mass_damping_per_s;
         let g = -self.loads.gravity_m_per_s2;
-        let bound2 = self.params.max_speed_m_per_s * self.params.max_speed_m_per_s;
         let [fs1, fs2, fs3] = &mut self.fs;
         let [es1, es2, es3] = &self.es;
         let (f1, f2, f3) = (&fs1[..=n1], &fs2[..=n1], &fs3[..=n1]);
@@ -990,9 +1025,8 @@ impl Explicit {
         let [x1, x2, x3] = &mut w.x;
         let (x1, x2, x3) = (&mut x1[..n1], &mut x2[..n1], &mut x3[..n1]);
         // One slice per argument, as in the segment pass (no run-time overlap checks).
-        let mut ok = node_loop::<EXTRA, DAMP, SMOOTH>(
-            kick, dt, zeta, g, bound2, inv_m, free, exposed, f1, f2, f3, e1, e2, e3, ex1, ex2, ex3, v1, v2, v3, x1, x2,
-            x3,
+        let mut kmax = node_loop::<EXTRA, DAMP, SMOOTH>(
+            kick, dt, zeta, g, inv_m, free, exposed, f1, f2, f3, e1, e2, e3, ex1, ex2, ex3, v1, v2, v3, x1, x2, x3,
         );
         for &(i, f) in points {
             let kf = kick * free[i] * inv_m[i];
@@ -1004,11 +1038,11 @@ impl Explicit {
                 x1[i] += dt * dv[0];
                 x2[i] += dt * dv[1];
                 x3[i] += dt * dv[2];
-                ok &= v1[i] * v1[i] + v2[i] * v2[i] + v3[i] * v3[i] <= bound2;
+                kmax = kmax.max(speed2_key(v1[i] * v1[i] + v2[i] * v2[i] + v3[i] * v3[i]));
             }
         }
         if !SMOOTH {
-            return ok;
+            return kmax;
         }
         // Smoothing (3.3), scaled by dt / dt_nominal, then the drift (3.6) with the smoothed velocity. The
         // segment tension forces are no longer needed: their arrays hold the differences.
@@ -1020,14 +1054,13 @@ impl Explicit {
         let (d1, d2, d3) = (&fs1[..n1 + 1], &fs2[..n1 + 1], &fs3[..n1 + 1]);
         // One slice per argument, as in the node loop (no run-time overlap checks: about 250
         // instructions per step before the loop, measured at 81 nodes).
-        ok &= if w.uniform_smoothing {
+        if w.uniform_smoothing {
             // Every weight is 1: the paper's (3.3) exactly.
-            smooth_drift_loop::<false>(b, dt, bound2, free, &[], &[], d1, d2, d3, v1, v2, v3, x1, x2, x3)
+            smooth_drift_loop::<false>(b, dt, free, &[], &[], d1, d2, d3, v1, v2, v3, x1, x2, x3)
         } else {
             let [wl, wr] = &w.smoothing_weight;
-            smooth_drift_loop::<true>(b, dt, bound2, free, wl, wr, d1, d2, d3, v1, v2, v3, x1, x2, x3)
-        };
-        ok
+            smooth_drift_loop::<true>(b, dt, free, wl, wr, d1, d2, d3, v1, v2, v3, x1, x2, x3)
+        }
     }
 
     /// Find the first offending node after the node pass reported a failure: `(node, reason)`. The pass
@@ -1127,6 +1160,43 @@ impl Explicit {
             return (f64::NAN, f64::NAN);
         }
         (0.5 * (s * (1.0 - delta)), 0.5 * (s * (1.0 + delta)))
+    }
+
+    /// Bounds `[lo, hi]` [J] on [`Explicit::kinetic_energy_half_step`] from the largest speed squared
+    /// `s2_max` the last step's node loops formed (no pass over the nodes; NaN where the step did not keep
+    /// it: `speed2_max`): with the least node mass `m_min` and the sum `M` of the masses,
+    ///
+    /// - `lo = (m_min s2_max) / 2`: the node-order sum of the non-negative terms `t_i = m_i s2_i` is at
+    ///   least each term (a rounded sum of non-negative numbers is at least each of them, rounding being
+    ///   monotone), and the term of the fastest node is at least `m_min s2_max` as rounded (monotone
+    ///   again);
+    /// - `hi = ((s2_max M) (1 + 4 n u) + 2^-1022) / 2`: each term is at most `m_i s2_max (1 + u)`, their
+    ///   node-order sum at most `(1 + gamma_{n-1})` times their exact sum and `M` as summed at least `(1 -
+    ///   gamma_{n-1})` times the exact one (Higham, eq. (4.4), as in
+    ///   [`Explicit::kinetic_energy_half_step_bounds`]); the factor `1 + 4 n u` covers these and the
+    ///   products' roundings for `n u < 1e-3`, and `2^-1022` the absolute error of products that underflow.
+    ///
+    /// Halving is monotone, so `lo <= kinetic_energy_half_step() <= hi`. Their ratio is about `M / m_min`
+    /// (about `2 N` on a uniform wire), wide, but enough for the settle detector at most levels, where the
+    /// energy is far above its threshold and below its peak. Both NaN where `s2_max` is unknown or not
+    /// finite, or `4 n u >= 1e-3`.
+    pub fn kinetic_energy_quick_bounds(&self) -> (f64, f64) {
+        let s2 = self.speed2_max;
+        let n1 = self.wire.nodes();
+        let delta = 4.0 * n1 as f64 * f64::EPSILON * 0.5;
+        if !s2.is_finite() || delta >= 1e-3 {
+            return (f64::NAN, f64::NAN);
+        }
+        let (m_min, m_sum) = match self.mass_range.get() {
+            Some(r) => r,
+            None => {
+                let m = &self.wire.mass[..n1];
+                let r = (m.iter().copied().fold(f64::INFINITY, f64::min), m.iter().sum::<f64>());
+                self.mass_range.set(Some(r));
+                r
+            }
+        };
+        (0.5 * (m_min * s2), 0.5 * ((s2 * m_sum) * (1.0 + delta) + f64::MIN_POSITIVE))
     }
 
     fn diagnostics_of_forces(&self) -> Diagnostics {
@@ -1498,9 +1568,11 @@ fn load_loop<W: SegmentLoad, const UNIFORM: bool>(
     }
 }
 
-/// The node loop of [`Explicit::kick_drift`]: kick (and, without smoothing, drift and speed check) of
-/// each node from its two segments' arrays (`lo`: segment `i - 1`, `hi`: segment `i`); false if a speed
-/// is beyond the bound or not finite. Every slice has the length of `v1` (the `ex` only with `EXTRA`).
+/// The node loop of [`Explicit::kick_drift`]: kick (and, without smoothing, drift) of each node from its
+/// two segments' arrays (`lo`: segment `i - 1`, `hi`: segment `i`). Without smoothing it returns the
+/// largest [`speed2_key`] of the nodes' new velocities (the speed check and the kinetic-energy bounds,
+/// [`Explicit::step`]), with smoothing `0` (the smoothing loop checks). Every slice has the length of `v1`
+/// (the `ex` only with `EXTRA`).
 ///
 /// Each operation is the one of the unfused passes, in the same order, so the result is identical:
 /// `a = (F / m + g_k) - zeta v`, `v + (kick free) a`, `x + dt v`.
@@ -1511,7 +1583,6 @@ fn node_loop<const EXTRA: bool, const DAMP: bool, const SMOOTH: bool>(
     dt: f64,
     zeta: f64,
     g: f64,
-    bound2: f64,
     inv_m: &[f64],
     free: &[f64],
     exposed: &[f64],
@@ -1530,7 +1601,7 @@ fn node_loop<const EXTRA: bool, const DAMP: bool, const SMOOTH: bool>(
     x1: &mut [f64],
     x2: &mut [f64],
     x3: &mut [f64],
-) -> bool {
+) -> i64 {
     let n1 = v1.len();
     let (inv_m, free, exposed) = (&inv_m[..n1], &free[..n1], &exposed[..n1]);
     // Each node's two segments from one array (one base address, two offsets: fewer registers).
@@ -1539,7 +1610,7 @@ fn node_loop<const EXTRA: bool, const DAMP: bool, const SMOOTH: bool>(
     let (e2lo, e2hi, e3lo, e3hi) = (&e2[..n1], &e2[1..n1 + 1], &e3[..n1], &e3[1..n1 + 1]);
     let (ex1, ex2, ex3) = if EXTRA { (&ex1[..n1], &ex2[..n1], &ex3[..n1]) } else { (ex1, ex2, ex3) };
     let (v2, v3, x1, x2, x3) = (&mut v2[..n1], &mut v3[..n1], &mut x1[..n1], &mut x2[..n1], &mut x3[..n1]);
-    let mut ok = true;
+    let mut kmax = 0;
     for i in 0..n1 {
         let (im, ex, kf) = (inv_m[i], exposed[i], kick * free[i]);
         let mut f = [
@@ -1566,17 +1637,16 @@ fn node_loop<const EXTRA: bool, const DAMP: bool, const SMOOTH: bool>(
             x1[i] += dt * v[0];
             x2[i] += dt * v[1];
             x3[i] += dt * v[2];
-            // `<=` is false for NaN, so a NaN anywhere fails the check.
-            ok &= v[0] * v[0] + v[1] * v[1] + v[2] * v[2] <= bound2;
+            kmax = kmax.max(speed2_key(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]));
         }
     }
-    ok
+    kmax
 }
 
 /// The second half of the smoothing (3.3) and the drift (3.6) of [`Explicit::kick_drift`]: each node's
 /// smoothed velocity from the differences `d` ([`smoothing::differences`]; `WEIGHTED`: with the
-/// weights `wl`, `wr`, else the paper's unweighted form), then `x + dt v` and the speed check; false if
-/// a speed is beyond the bound or not finite. `free`, `v` and `x` have one length, `d` one more, `wl`
+/// weights `wl`, `wr`, else the paper's unweighted form), then `x + dt v`; returns the largest
+/// [`speed2_key`] of the smoothed velocities (as [`node_loop`]). `free`, `v` and `x` have one length, `d` one more, `wl`
 /// and `wr` that of `v` (empty without `WEIGHTED`). The operations are those of the loops it replaces,
 /// in the same order: the result is identical.
 #[inline(always)]
@@ -1584,7 +1654,6 @@ fn node_loop<const EXTRA: bool, const DAMP: bool, const SMOOTH: bool>(
 fn smooth_drift_loop<const WEIGHTED: bool>(
     b: f64,
     dt: f64,
-    bound2: f64,
     free: &[f64],
     wl: &[f64],
     wr: &[f64],
@@ -1597,7 +1666,7 @@ fn smooth_drift_loop<const WEIGHTED: bool>(
     x1: &mut [f64],
     x2: &mut [f64],
     x3: &mut [f64],
-) -> bool {
+) -> i64 {
     let n1 = v1.len();
     let free = &free[..n1];
     let (wl, wr) = if WEIGHTED { (&wl[..n1], &wr[..n1]) } else { (wl, wr) };
@@ -1607,7 +1676,7 @@ fn smooth_drift_loop<const WEIGHTED: bool>(
     let (d1lo, d1hi, d2lo, d2hi) = (&d1[..n1], &d1[1..n1 + 1], &d2[..n1], &d2[1..n1 + 1]);
     let (d3lo, d3hi) = (&d3[..n1], &d3[1..n1 + 1]);
     let (v2, v3, x1, x2, x3) = (&mut v2[..n1], &mut v3[..n1], &mut x1[..n1], &mut x2[..n1], &mut x3[..n1]);
-    let mut ok = true;
+    let mut kmax = 0;
     for i in 0..n1 {
         let bf = b * free[i];
         let v = if WEIGHTED {
@@ -1630,9 +1699,9 @@ fn smooth_drift_loop<const WEIGHTED: bool>(
         x1[i] += dt * v[0];
         x2[i] += dt * v[1];
         x3[i] += dt * v[2];
-        ok &= v[0] * v[0] + v[1] * v[1] + v[2] * v[2] <= bound2;
+        kmax = kmax.max(speed2_key(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]));
     }
-    ok
+    kmax
 }
 
 #[cfg(test)]
@@ -1932,6 +2001,92 @@ mod tests {
                 t.wire.v[1][n1 / 2] = f64::NAN;
                 let (lo, hi) = t.kinetic_energy_half_step_bounds();
                 assert!(lo.is_nan() && hi.is_nan(), "{name} {isa:?}: NaN speed");
+            }
+        }
+    }
+
+    /// `speed2_key(s2) <= speed2_key(b2)` is `s2 <= b2` for every speed squared the loops can form (`+0`,
+    /// subnormal, normal, `+inf`, NaN of either sign) and every bound `b2 >= 0`, at and one rounding either
+    /// side of each bound.
+    #[test]
+    fn speed_keys_compare_like_the_speeds_squared() {
+        let neg_nan = f64::from_bits(0xfff8_0000_0000_0000);
+        assert!(neg_nan.is_nan() && neg_nan.is_sign_negative());
+        let mut squares = vec![0.0, 5e-324, 1e-310, f64::MIN_POSITIVE, 1.0, 2.5e15, f64::MAX, f64::INFINITY];
+        squares.extend([f64::NAN, neg_nan, -f64::NAN]);
+        let bounds = [0.0, 5e-324, 1.0, 2.5e15, 1e14, f64::MAX, f64::INFINITY];
+        for &b2 in &bounds {
+            let mut near = vec![b2, b2.next_up(), b2.next_down().max(0.0)];
+            near.extend(&squares);
+            for s2 in near {
+                assert_eq!(speed2_key(s2) <= speed2_key(b2), s2 <= b2, "{s2:e} against {b2:e}");
+            }
+        }
+    }
+
+    /// The step's speed check through the keys: a node at exactly the bound passes, one rounding above it
+    /// fails with the speed named, a NaN of either sign fails as not finite (with and without smoothing,
+    /// each copy this processor runs).
+    #[test]
+    fn step_flags_a_speed_above_the_bound_or_a_nan() {
+        for smoothing in [0.0, 0.02] {
+            for isa in [Isa::Baseline, Isa::Avx2, Isa::Avx512].into_iter().filter(|&i| i <= detected_isa()) {
+                let mut base = Config::PlaneWeight.solver(40);
+                base.isa = isa;
+                base.params.smoothing = smoothing;
+                base.loads.gravity_m_per_s2 = 0.0;
+                base.params.max_speed_m_per_s = 3.0;
+                // At rest and weightless on the straight chord: one node moving at `v` along x keeps it
+                // through a step (no force), so its speed squared is `v * v` as the loops form it.
+                let run = |v: f64| {
+                    let mut s = base.clone();
+                    s.wire.v[0][17] = v;
+                    s.wire.v[0][16] = v;
+                    s.wire.v[0][18] = v;
+                    s.step(1e-9 * s.params.dt_s).map(|_| ())
+                };
+                let what = format!("smoothing {smoothing}, {isa:?}");
+                assert!(run(3.0).is_ok(), "{what}: at the bound");
+                let above = run(3.0_f64.next_up()).expect_err(&what);
+                assert!(matches!(above.reason, InstabilityReason::SpeedLimit { .. }), "{what}: {above:?}");
+                for nan in [f64::NAN, f64::from_bits(0xfff8_0000_0000_0000)] {
+                    let e = run(nan).expect_err(&what);
+                    assert!(matches!(e.reason, InstabilityReason::NonFinite), "{what}: {e:?}");
+                }
+            }
+        }
+    }
+
+    /// The wide bounds of [`Explicit::kinetic_energy_quick_bounds`] contain the node-order sum after every
+    /// step of the option cases (each copy this processor runs), and are given wherever the step keeps
+    /// the largest speed (no ground; no strings); after `wire_mut`, or before a step, none.
+    #[test]
+    fn quick_kinetic_energy_bounds_contain_the_node_order_sum() {
+        for (name, s0) in option_cases() {
+            for isa in [Isa::Baseline, Isa::Avx2, Isa::Avx512].into_iter().filter(|&i| i <= detected_isa()) {
+                let mut s = s0.clone();
+                s.isa = isa;
+                let (lo, hi) = s.kinetic_energy_quick_bounds();
+                assert!(lo.is_nan() && hi.is_nan(), "{name}: before a step");
+                let dt = s.params.dt_s;
+                let (mut given, mut moving) = (0, 0);
+                for _ in 0..200 {
+                    if s.step(dt).is_err() {
+                        break;
+                    }
+                    let (ke, (lo, hi)) = (s.kinetic_energy_half_step(), s.kinetic_energy_quick_bounds());
+                    if s.ground.is_some() {
+                        assert!(lo.is_nan() && hi.is_nan(), "{name} {isa:?}: with a ground");
+                        continue;
+                    }
+                    assert!(lo <= ke && ke <= hi, "{name} {isa:?}: {lo:e} <= {ke:e} <= {hi:e}");
+                    given += 1;
+                    moving += usize::from(lo > 0.0);
+                }
+                assert!(s.ground.is_some() || (given == 200 && moving > 100), "{name} {isa:?}: {given}, {moving}");
+                s.wire_mut();
+                let (lo, hi) = s.kinetic_energy_quick_bounds();
+                assert!(lo.is_nan() && hi.is_nan(), "{name}: after wire_mut");
             }
         }
     }
