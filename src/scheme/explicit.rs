@@ -31,6 +31,7 @@ use crate::element::aero::{Downwind, NoWind, SegmentLoad};
 use crate::element::segment;
 use crate::element::tension::{LawKind, Linear, TensionLaw, TensionOnly, from_order_key, order_key};
 use crate::wire::Wire;
+use crate::wire::insulator::Insulator;
 use crate::wire::material::segment_tension;
 
 pub use crate::element::aero::WindLoad;
@@ -523,28 +524,23 @@ impl Explicit {
         let kick = 0.5 * (self.dt_prev + dt);
         let damp = self.params.mass_damping_per_s != 0.0;
         let smooth = self.params.smoothing > 0.0;
-        let extra = self.nodal_force.take();
-        let f = extra.as_ref().unwrap_or(&NO_NODAL_FORCE);
-        let points = std::mem::take(&mut self.point_force);
-        let mut all = std::mem::take(&mut self.point_scratch);
-        let p = if self.external_force.is_empty() {
-            &points[..]
-        } else {
-            all.clear();
-            all.extend_from_slice(&points);
-            all.extend_from_slice(&self.external_force);
-            &all[..]
+        if !self.external_force.is_empty() {
+            // The strings' forces, then the external ones, in one list for the node pass.
+            self.point_scratch.clear();
+            self.point_scratch.extend_from_slice(&self.point_force);
+            self.point_scratch.extend_from_slice(&self.external_force);
+        }
+        let key = match (self.nodal_force.is_some(), damp, smooth) {
+            (false, false, false) => self.node_pass::<false, false, false>(kick, dt),
+            (false, true, false) => self.node_pass::<false, true, false>(kick, dt),
+            (true, false, false) => self.node_pass::<true, false, false>(kick, dt),
+            (true, true, false) => self.node_pass::<true, true, false>(kick, dt),
+            (false, false, true) => self.node_pass::<false, false, true>(kick, dt),
+            (false, true, true) => self.node_pass::<false, true, true>(kick, dt),
+            (true, false, true) => self.node_pass::<true, false, true>(kick, dt),
+            (true, true, true) => self.node_pass::<true, true, true>(kick, dt),
         };
-        let key = match (extra.is_some(), damp, smooth) {
-            (false, false, false) => self.node_pass::<false, false, false>(kick, dt, f, p),
-            (false, true, false) => self.node_pass::<false, true, false>(kick, dt, f, p),
-            (true, false, false) => self.node_pass::<true, false, false>(kick, dt, f, p),
-            (true, true, false) => self.node_pass::<true, true, false>(kick, dt, f, p),
-            (false, false, true) => self.node_pass::<false, false, true>(kick, dt, f, p),
-            (false, true, true) => self.node_pass::<false, true, true>(kick, dt, f, p),
-            (true, false, true) => self.node_pass::<true, false, true>(kick, dt, f, p),
-            (true, true, true) => self.node_pass::<true, true, true>(kick, dt, f, p),
-        };
+        let points = !self.point_force.is_empty() || !self.external_force.is_empty();
         // `<=` on the keys is `<=` on the speeds squared (`s2 <= bound2`), except that a NaN (of either
         // sign) fails: [`speed2_key`].
         let bound2 = self.params.max_speed_m_per_s * self.params.max_speed_m_per_s;
@@ -553,17 +549,11 @@ impl Explicit {
         // ([`Explicit::kinetic_energy_quick_bounds`]), unless something changes a velocity after the
         // node loops: the strings' kick without smoothing (the loop's key holds the clamps' speed before
         // it), or the ground contact.
-        self.speed2_max = if (!points.is_empty() && !smooth) || self.ground.is_some() {
-            f64::NAN
-        } else {
-            f64::from_bits(key as u64)
-        };
-        if !points.is_empty() {
-            self.advance_crossarms(&points, kick, dt);
+        self.speed2_max =
+            if (points && !smooth) || self.ground.is_some() { f64::NAN } else { f64::from_bits(key as u64) };
+        if !self.point_force.is_empty() {
+            advance_crossarms(&mut self.wire.insulators, &self.point_force, kick, dt);
         }
-        self.point_force = points;
-        self.point_scratch = all;
-        self.nodal_force = extra;
         // Locate a failure before ground contact, which may change the offending velocity.
         let failure = if ok { None } else { Some(self.locate_instability()) };
         if let Some(g) = &self.ground {
@@ -812,21 +802,7 @@ impl Explicit {
         }
     }
 
-    /// Leapfrog step of the elastic crossarms ([`crate::wire::insulator`]): the kick with the string force
-    /// of this level `points` and the springs, then the drift; the pivots of rigid crossarms stay.
-    fn advance_crossarms(&mut self, points: &[(usize, [f64; 3])], kick: f64, dt: f64) {
-        for (ins, &(_, f)) in self.wire.insulators.iter_mut().zip(points) {
-            let p = ins.pivot_m;
-            let Some(arm) = ins.crossarm.as_mut() else { continue };
-            let spring = arm.spring_force(p);
-            for k in 0..2 {
-                let a = (spring[k] - f[k]) / arm.mass_kg;
-                arm.velocity_m_per_s[k] += kick * a;
-                ins.pivot_m[k] += dt * arm.velocity_m_per_s[k];
-            }
-        }
-    }
-
+    #[inline(always)]
     fn segment_and_load_pass(&mut self) {
         let scale = self.loads.wind_scale;
         let q = self.loads.uniform_load_n_per_m;
@@ -844,6 +820,7 @@ impl Explicit {
         }
     }
 
+    #[inline(always)]
     fn dispatch_gate<W: SegmentLoad>(&mut self, load: W, direction: [f64; 3], q: [f64; 3]) {
         match self.loads.wind_gate {
             WindGate::Always => self.dispatch_law(&load, q),
@@ -851,6 +828,7 @@ impl Explicit {
         }
     }
 
+    #[inline(always)]
     fn dispatch_law<W: SegmentLoad>(&mut self, load: &W, q: [f64; 3]) {
         let viscous = *self.viscous.get_or_insert_with(|| self.wire.internal_friction_n_s.iter().any(|&e| e != 0.0));
         match (self.wire.law, q != [0.0; 3], viscous) {
@@ -983,7 +961,7 @@ impl Explicit {
     isa_dispatch! {
         /// The node pass ([`Explicit::kick_drift`]), from the widest copy the processor runs.
         fn node_pass[const EXTRA: bool, const DAMP: bool, const SMOOTH: bool][EXTRA, DAMP, SMOOTH](
-            kick: f64, dt: f64, extra: &[Vec<f64>; 3], points: &[(usize, [f64; 3])]) -> i64
+            kick: f64, dt: f64) -> i64
             = kick_drift;
     }
 
@@ -996,17 +974,15 @@ impl Explicit {
     /// Each operation is the one of the unfused passes, in the same order, so the result is identical:
     /// `a = (F / m + g_k) - zeta v`, `v + (kick free) a`, `x + dt v`.
     ///
-    /// `points` are point forces on a few nodes (the insulator strings on their clamps): their kick
+    /// The point forces (`point_force`, with `external_force` through `point_scratch`) act on a few nodes
+    /// (the insulator strings on their clamps, the links of a line): their kick
     /// `kick F / m` is added after the node loop (and, without smoothing, its drift `dt kick F / m`), which
     /// is the same update up to rounding and leaves the loop over all nodes untouched.
     #[inline(always)]
-    fn kick_drift<const EXTRA: bool, const DAMP: bool, const SMOOTH: bool>(
-        &mut self,
-        kick: f64,
-        dt: f64,
-        extra: &[Vec<f64>; 3],
-        points: &[(usize, [f64; 3])],
-    ) -> i64 {
+    fn kick_drift<const EXTRA: bool, const DAMP: bool, const SMOOTH: bool>(&mut self, kick: f64, dt: f64) -> i64 {
+        // Fields borrowed one by one (the wire mutably, the point forces and the nodal force shared).
+        let extra = if EXTRA { self.nodal_force.as_ref().expect("EXTRA with a nodal force") } else { &NO_NODAL_FORCE };
+        let points = if self.external_force.is_empty() { &self.point_force[..] } else { &self.point_scratch[..] };
         let w = &mut self.wire;
         let n1 = w.nodes();
         let inv_m = &w.inv_mass[..n1];
@@ -1385,6 +1361,21 @@ impl Explicit {
             _ => TensionOnly::tension(ea, eta, st.e, st.edot),
         };
         t * w.intact[j]
+    }
+}
+
+/// Leapfrog step of the elastic crossarms ([`crate::wire::insulator`]): the kick with the string force
+/// of this level `points` and the springs, then the drift; the pivots of rigid crossarms stay.
+fn advance_crossarms(insulators: &mut [Insulator], points: &[(usize, [f64; 3])], kick: f64, dt: f64) {
+    for (ins, &(_, f)) in insulators.iter_mut().zip(points) {
+        let p = ins.pivot_m;
+        let Some(arm) = ins.crossarm.as_mut() else { continue };
+        let spring = arm.spring_force(p);
+        for k in 0..2 {
+            let a = (spring[k] - f[k]) / arm.mass_kg;
+            arm.velocity_m_per_s[k] += kick * a;
+            ins.pivot_m[k] += dt * arm.velocity_m_per_s[k];
+        }
     }
 }
 
@@ -2087,6 +2078,27 @@ mod tests {
                 s.wire_mut();
                 let (lo, hi) = s.kinetic_energy_quick_bounds();
                 assert!(lo.is_nan() && hi.is_nan(), "{name}: after wire_mut");
+            }
+        }
+        // Point forces from outside (a line's links) kick their nodes after the node loop: without
+        // smoothing the loop's largest speed is then stale and no bounds are given; with smoothing (which
+        // follows the kick) they are, and contain the sum.
+        for smoothing in [0.0, 0.02] {
+            let mut s = Config::PlaneWeight.solver(40);
+            s.params.smoothing = smoothing;
+            s.set_point_forces(&[(13, [0.0, 0.0, 5e3]), (27, [2e3, 0.0, 0.0])]);
+            let dt = s.params.dt_s;
+            for _ in 0..50 {
+                s.step(dt).unwrap();
+                let (ke, (lo, hi)) = (s.kinetic_energy_half_step(), s.kinetic_energy_quick_bounds());
+                if smoothing > 0.0 {
+                    assert!(
+                        lo <= ke && ke <= hi && lo > 0.0,
+                        "smoothed, with point forces: {lo:e} <= {ke:e} <= {hi:e}"
+                    );
+                } else {
+                    assert!(lo.is_nan() && hi.is_nan(), "point forces without smoothing");
+                }
             }
         }
     }
