@@ -5,8 +5,9 @@
 //! ([`Explicit::evaluate_forces`]), so that an observer reads the state (positions, velocities at
 //! `n - 1/2`, the largest tension, the support forces) at no extra cost and cannot change it: it gets a
 //! shared reference. Asking for more output therefore never changes the trajectory. An observer decides
-//! by itself whether a level concerns it (a sample time has been reached, a snapshot is due); peaks and
-//! settling are tracked at every level.
+//! by itself whether a level concerns it (a sample time has been reached, a snapshot is due), and may
+//! tell the loop until when none will ([`Control::QuietUntil`]); peaks and settling are tracked at every
+//! level.
 
 use crate::scheme::{Explicit, Instability};
 
@@ -29,10 +30,15 @@ impl Level<'_> {
 }
 
 /// What an observer asks of the loop after a level.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Control {
     /// go on
     Continue,
+    /// go on, and skip this observer at the levels before this time [s] (`t_n < t`): its
+    /// [`Observer::observe`] would do nothing there and answer [`Control::QuietUntil`] with the same time
+    /// (a sampled output before its next sample time, by its own clock's test; the time step does not
+    /// change during a run). A loop may call it at those levels all the same.
+    QuietUntil(f64),
     /// the wire has settled: the run may stop here once no event is pending
     Settled,
 }

@@ -62,6 +62,17 @@ impl ListClock {
         ListClock { times_s, next: 0 }
     }
 
+    /// A level time below which [`ListClock::due`] with the tolerance `tol_s >= 0` [s] is false for every
+    /// level time `t >= 0` [s] (`+inf` once every listed time was taken): `T - 2 tol - 8 eps T` for the next
+    /// listed time `T >= 0`. Below it (computed with two roundings of at most `eps T / 2` each), `t + tol <
+    /// T - tol - 7 eps T`, and `t + tol` rounds to less than `T`: the test `T <= t + tol` fails.
+    pub fn quiet_until_s(&self, tol_s: f64) -> f64 {
+        match self.times_s.get(self.next) {
+            Some(&t) => t - 2.0 * tol_s - 8.0 * f64::EPSILON * t.abs(),
+            None => f64::INFINITY,
+        }
+    }
+
     /// Whether one or more listed times were reached at `t_s` (all of them are then consumed: one level,
     /// one snapshot).
     pub fn due(&mut self, t_s: f64, tol_s: f64) -> bool {
@@ -76,6 +87,28 @@ impl ListClock {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Below [`ListClock::quiet_until_s`] no level is due, just below the time it gives and far below;
+    /// and it lies within a few roundings of `T - tol` (so a sampled output is skipped at nearly every
+    /// level before its time, and at none where it is due).
+    #[test]
+    fn no_listed_time_is_due_below_the_quiet_time() {
+        for t_next in [0.0, 5e-324, 1e-3, 0.1, 1.0, 2.0, 3.000_000_1, 17.25, 1e5, 2.0_f64.powi(40)] {
+            for tol in [0.0, 1e-300, 1e-15, 4e-13, 1e-9, 0.25] {
+                let q = ListClock::new(vec![t_next]).quiet_until_s(tol);
+                assert!(q >= t_next - 3.0 * tol - 16.0 * f64::EPSILON * t_next, "{t_next} {tol}: {q}");
+                let mut t = q.next_down();
+                for _ in 0..40 {
+                    if t < 0.0 {
+                        break;
+                    }
+                    assert!(!ListClock::new(vec![t_next]).due(t, tol), "{t_next} {tol}: due at {t} < {q}");
+                    t = if t > 1e-300 { t - (q - t).max(t * 1e-15) } else { t.next_down() };
+                }
+            }
+        }
+        assert_eq!(ListClock::new(vec![]).quiet_until_s(1e-9), f64::INFINITY);
+    }
 
     /// Levels `t_k = k dt` from `t0`; every call must take a sample when the interval is below `dt`.
     fn levels(interval: f64, t0: f64, dt: f64, count: usize) {

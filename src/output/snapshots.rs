@@ -109,10 +109,11 @@ pub fn node_rows(solver: &Explicit, tension: &mut Vec<f64>, mut each: impl FnMut
 
 impl Observer for Snapshots {
     fn observe(&mut self, level: &Level) -> Result<Control, OutputError> {
-        if self.clock.due(level.t_s, LANDING * level.solver.params().dt_s) {
+        let tol = LANDING * level.solver.params().dt_s;
+        if self.clock.due(level.t_s, tol) {
             self.write(level.solver, level.t_s, level.tau())?;
         }
-        Ok(Control::Continue)
+        Ok(Control::QuietUntil(self.clock.quiet_until_s(tol)))
     }
 
     fn finish(&mut self, level: &Level, ending: &Ending) -> Result<(), OutputError> {

@@ -48,6 +48,8 @@ pub fn run_loop<'o>(
 ) -> Result<Ending, OutputError> {
     let (dt, horizon) = (solver.params().dt_s, stop.horizon_s());
     let tol = LANDING * dt;
+    // Each observer's time before which it has nothing to do ([`Control::QuietUntil`]).
+    let mut quiet_until = vec![f64::NEG_INFINITY; observers.len()];
     let ending = loop {
         let t = solver.time_s();
         let applied = timeline.apply_due(solver, t, tol);
@@ -60,8 +62,15 @@ pub fn run_loop<'o>(
         solver.evaluate_forces();
         let level = Level { solver, t_s: t, tau_per_s };
         let mut settled = false;
-        for o in observers.iter_mut() {
-            settled |= o.observe(&level)? == Control::Settled;
+        for (o, quiet) in observers.iter_mut().zip(&mut quiet_until) {
+            if t < *quiet {
+                continue;
+            }
+            match o.observe(&level)? {
+                Control::Settled => settled = true,
+                Control::QuietUntil(until) => *quiet = until,
+                Control::Continue => {}
+            }
         }
         if settled && timeline.next_time().is_none() {
             break Ending::Settled;

@@ -439,7 +439,7 @@ pub struct Explicit {
     speed2_max: f64,
     /// the least node mass and the sum of the node masses [kg] ([`Explicit::kinetic_energy_quick_bounds`]),
     /// formed at the first call after a change of the wire
-    mass_range: std::cell::Cell<Option<(f64, f64)>>,
+    mass_range: std::sync::OnceLock<(f64, f64)>,
     /// segment tension force `T t` [N], padded: index `j + 1` for segment `j`, zero at 0 and `N + 1`
     fs: [Vec<f64>; 3],
     /// half the segment load `P / 2` [N], padded like `fs` (between the segment pass's two loops, the
@@ -487,7 +487,7 @@ impl Explicit {
             inv_rest_length_fresh: false,
             wire_stamp: next_wire_stamp(),
             speed2_max: f64::NAN,
-            mass_range: std::cell::Cell::new(None),
+            mass_range: std::sync::OnceLock::new(),
             fs: z(),
             es: z(),
             seg_len: vec![0.0; pad],
@@ -582,7 +582,7 @@ impl Explicit {
         self.inv_rest_length_fresh = false;
         self.wire_stamp = next_wire_stamp();
         self.speed2_max = f64::NAN;
-        self.mass_range.set(None);
+        self.mass_range = std::sync::OnceLock::new();
         &mut self.wire
     }
 
@@ -1163,15 +1163,10 @@ impl Explicit {
         if !s2.is_finite() || delta >= 1e-3 {
             return (f64::NAN, f64::NAN);
         }
-        let (m_min, m_sum) = match self.mass_range.get() {
-            Some(r) => r,
-            None => {
-                let m = &self.wire.mass[..n1];
-                let r = (m.iter().copied().fold(f64::INFINITY, f64::min), m.iter().sum::<f64>());
-                self.mass_range.set(Some(r));
-                r
-            }
-        };
+        let &(m_min, m_sum) = self.mass_range.get_or_init(|| {
+            let m = &self.wire.mass[..n1];
+            (m.iter().copied().fold(f64::INFINITY, f64::min), m.iter().sum::<f64>())
+        });
         (0.5 * (m_min * s2), 0.5 * ((s2 * m_sum) * (1.0 + delta) + f64::MIN_POSITIVE))
     }
 
