@@ -353,6 +353,38 @@ fn speed2_key(s2: f64) -> i64 {
     (s2.to_bits() & !(1 << 63)) as i64
 }
 
+/// [`kinetic_sum_lanes`] from the speeds squared `s2_i = v1_i^2 + v2_i^2 + v3_i^2` as formed: the same
+/// terms `m_i s2_i` in the same sixteen lanes, added in the same order, so the same sum bit for bit, from
+/// two arrays instead of four and without the squares.
+#[inline(always)]
+fn kinetic_sum_lanes_of(m: &[f64], s2: &[f64]) -> f64 {
+    const LANES: usize = 16;
+    let n1 = m.len();
+    let s2 = &s2[..n1];
+    let whole = n1 / LANES * LANES;
+    let mut acc = [0.0; LANES];
+    for c in (0..whole).step_by(LANES) {
+        let (m, s2) = (&m[c..c + LANES], &s2[c..c + LANES]);
+        for k in 0..LANES {
+            acc[k] += m[k] * s2[k];
+        }
+    }
+    for i in whole..n1 {
+        acc[i - whole] += m[i] * s2[i];
+    }
+    acc.iter().sum()
+}
+
+/// [`kinetic_sum_lanes_of`] compiled for AVX2.
+///
+/// # Safety
+/// Only where the processor has AVX2.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+unsafe fn kinetic_sum_lanes_of_avx2(m: &[f64], s2: &[f64]) -> f64 {
+    kinetic_sum_lanes_of(m, s2)
+}
+
 /// A number not given before in this process ([`Explicit::wire_stamp`]).
 fn next_wire_stamp() -> u64 {
     static NEXT: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(1);
@@ -437,6 +469,12 @@ pub struct Explicit {
     /// (the kinetic sum's `v1^2 + v2^2 + v3^2`) [m^2/s^2]; NaN where not known (before a step, after
     /// [`Explicit::wire_mut`], where contact or the strings' kick changed a velocity after the loops)
     speed2_max: f64,
+    /// each node's `|v_i|^2` as the smoothing loop formed it [m^2/s^2] (index `i`), valid while
+    /// `speed2_fresh` (for the vectorised kinetic sum, [`Explicit::kinetic_energy_half_step_bounds`])
+    speed2: Vec<f64>,
+    /// `speed2` holds the velocities the last step ended with (a step with smoothing and without ground
+    /// contact, not followed by [`Explicit::wire_mut`])
+    speed2_fresh: bool,
     /// the least node mass and the sum of the node masses [kg] ([`Explicit::kinetic_energy_quick_bounds`]),
     /// formed at the first call after a change of the wire
     mass_range: std::sync::OnceLock<(f64, f64)>,
@@ -487,6 +525,8 @@ impl Explicit {
             inv_rest_length_fresh: false,
             wire_stamp: next_wire_stamp(),
             speed2_max: f64::NAN,
+            speed2: vec![0.0; pad],
+            speed2_fresh: false,
             mass_range: std::sync::OnceLock::new(),
             fs: z(),
             es: z(),
@@ -551,6 +591,8 @@ impl Explicit {
         // it), or the ground contact.
         self.speed2_max =
             if (points && !smooth) || self.ground.is_some() { f64::NAN } else { f64::from_bits(key as u64) };
+        // The smoothing loop wrote every node's `|v|^2` (point forces kick before it).
+        self.speed2_fresh = smooth && self.ground.is_none();
         if !self.point_force.is_empty() {
             advance_crossarms(&mut self.wire.insulators, &self.point_force, kick, dt);
         }
@@ -582,6 +624,7 @@ impl Explicit {
         self.inv_rest_length_fresh = false;
         self.wire_stamp = next_wire_stamp();
         self.speed2_max = f64::NAN;
+        self.speed2_fresh = false;
         self.mass_range = std::sync::OnceLock::new();
         &mut self.wire
     }
@@ -1032,10 +1075,10 @@ impl Explicit {
         // instructions per step before the loop, measured at 81 nodes).
         if w.uniform_smoothing {
             // Every weight is 1: the paper's (3.3) exactly.
-            smooth_drift_loop::<false>(b, dt, free, &[], &[], d1, d2, d3, v1, v2, v3, x1, x2, x3)
+            smooth_drift_loop::<false>(b, dt, free, &[], &[], d1, d2, d3, v1, v2, v3, x1, x2, x3, &mut self.speed2)
         } else {
             let [wl, wr] = &w.smoothing_weight;
-            smooth_drift_loop::<true>(b, dt, free, wl, wr, d1, d2, d3, v1, v2, v3, x1, x2, x3)
+            smooth_drift_loop::<true>(b, dt, free, wl, wr, d1, d2, d3, v1, v2, v3, x1, x2, x3, &mut self.speed2)
         }
     }
 
@@ -1123,14 +1166,20 @@ impl Explicit {
         let w = &self.wire;
         let n1 = w.nodes();
         let (m, v1, v2, v3) = (&w.mass[..n1], &w.v[0][..n1], &w.v[1][..n1], &w.v[2][..n1]);
+        let s2 = &self.speed2[..n1];
+        let fresh = self.speed2_fresh;
+        // From the speeds squared the smoothing loop kept where they are those of `v` (the same terms
+        // `m_i s2_i` in the same lanes: the same sum), else from the velocities.
         #[cfg(target_arch = "x86_64")]
-        let s = match self.isa {
+        let s = match (self.isa, fresh) {
             // SAFETY: `isa` is `Avx2` or wider only where the processor reports AVX2 (`detected_isa`).
-            Isa::Avx512 | Isa::Avx2 => unsafe { kinetic_sum_lanes_avx2(m, v1, v2, v3) },
-            Isa::Baseline => kinetic_sum_lanes(m, v1, v2, v3),
+            (Isa::Avx512 | Isa::Avx2, true) => unsafe { kinetic_sum_lanes_of_avx2(m, s2) },
+            (Isa::Avx512 | Isa::Avx2, false) => unsafe { kinetic_sum_lanes_avx2(m, v1, v2, v3) },
+            (Isa::Baseline, true) => kinetic_sum_lanes_of(m, s2),
+            (Isa::Baseline, false) => kinetic_sum_lanes(m, v1, v2, v3),
         };
         #[cfg(not(target_arch = "x86_64"))]
-        let s = kinetic_sum_lanes(m, v1, v2, v3);
+        let s = if fresh { kinetic_sum_lanes_of(m, s2) } else { kinetic_sum_lanes(m, v1, v2, v3) };
         let delta = 4.0 * n1 as f64 * f64::EPSILON * 0.5;
         if !s.is_finite() || delta >= 1e-3 {
             return (f64::NAN, f64::NAN);
@@ -1652,9 +1701,11 @@ fn smooth_drift_loop<const WEIGHTED: bool>(
     x1: &mut [f64],
     x2: &mut [f64],
     x3: &mut [f64],
+    speed2: &mut [f64],
 ) -> i64 {
     let n1 = v1.len();
     let free = &free[..n1];
+    let speed2 = &mut speed2[..n1];
     let (wl, wr) = if WEIGHTED { (&wl[..n1], &wr[..n1]) } else { (wl, wr) };
     // Each node's two differences from one array at two offsets, as the node loop reads its segments (a
     // single index `i + 1` let the compiler carry the difference across iterations in shuffles: more
@@ -1685,7 +1736,9 @@ fn smooth_drift_loop<const WEIGHTED: bool>(
         x1[i] += dt * v[0];
         x2[i] += dt * v[1];
         x3[i] += dt * v[2];
-        kmax = kmax.max(speed2_key(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]));
+        let s2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+        speed2[i] = s2;
+        kmax = kmax.max(speed2_key(s2));
     }
     kmax
 }
@@ -1969,22 +2022,31 @@ mod tests {
             for _ in 0..50 {
                 let _ = s.step(dt);
             }
+            // The sum from the speeds squared the smoothing loop kept is the sum from the velocities.
+            assert_eq!(s.speed2_fresh, s.params.smoothing > 0.0 && s.ground.is_none(), "{name}");
+            let mut from_v = s.clone();
+            from_v.speed2_fresh = false;
             for isa in [Isa::Baseline, Isa::Avx2, Isa::Avx512].into_iter().filter(|&i| i <= detected_isa()) {
                 s.isa = isa;
+                from_v.isa = isa;
+                let (a, b) = (s.kinetic_energy_half_step_bounds(), from_v.kinetic_energy_half_step_bounds());
+                assert_eq!([a.0.to_bits(), a.1.to_bits()], [b.0.to_bits(), b.1.to_bits()], "{name} {isa:?}");
                 check(&s, &format!("{name} {isa:?}"));
                 // Spread the terms: every third node's speed far above the rest, masses uneven.
+                // (Through `wire_mut`, as any change of the state: the speeds the step kept are stale.)
                 let mut t = s.clone();
-                let n1 = t.wire.nodes();
+                let w = t.wire_mut();
+                let n1 = w.nodes();
                 for i in 0..n1 {
                     let scale = [1e75, 1.0, 1e-75][i % 3] * (1.0 + i as f64 / 7.0);
                     for k in 0..3 {
-                        t.wire.v[k][i] = scale * (0.3 + k as f64);
+                        w.v[k][i] = scale * (0.3 + k as f64);
                     }
-                    t.wire.mass[i] *= 1.0 + (i % 5) as f64 * 0.37;
+                    w.mass[i] *= 1.0 + (i % 5) as f64 * 0.37;
                 }
                 check(&t, &format!("{name} {isa:?} spread"));
                 // A NaN speed: no bounds, the caller sums in node order.
-                t.wire.v[1][n1 / 2] = f64::NAN;
+                t.wire_mut().v[1][n1 / 2] = f64::NAN;
                 let (lo, hi) = t.kinetic_energy_half_step_bounds();
                 assert!(lo.is_nan() && hi.is_nan(), "{name} {isa:?}: NaN speed");
             }
