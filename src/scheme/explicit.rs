@@ -459,6 +459,12 @@ pub struct Explicit {
     max_tension_n: f64,
     /// whether any segment has internal friction (`None`: not known since the wire last changed)
     viscous: Option<bool>,
+    /// whether every node's exposure (the ground contact's share of its load, [`contact`]) is 1 (`None`:
+    /// not known since the wire or the ground last changed; only asked without a ground)
+    all_exposed: Option<bool>,
+    /// whether every segment is intact and at the conductor's own wind diameter (`intact = 1`, wind
+    /// diameter factor 1: no break, no ice), `None`: not known since the wire last changed
+    plain: Option<bool>,
     /// `1.0 / l0` of every segment [1/m], for the segment pass; valid while `inv_rest_length_fresh`
     inv_rest_length: Vec<f64>,
     /// `inv_rest_length` holds the wire's stress-free lengths (false once the wire may have changed)
@@ -521,6 +527,8 @@ impl Explicit {
             fresh: false,
             max_tension_n: 0.0,
             viscous: None,
+            all_exposed: None,
+            plain: None,
             inv_rest_length: vec![0.0; pad],
             inv_rest_length_fresh: false,
             wire_stamp: next_wire_stamp(),
@@ -621,6 +629,8 @@ impl Explicit {
     pub fn wire_mut(&mut self) -> &mut Wire {
         self.fresh = false;
         self.viscous = None;
+        self.all_exposed = None;
+        self.plain = None;
         self.inv_rest_length_fresh = false;
         self.wire_stamp = next_wire_stamp();
         self.speed2_max = f64::NAN;
@@ -706,6 +716,7 @@ impl Explicit {
     /// Switch ground contact (a plane, or none).
     pub fn set_ground(&mut self, g: Option<Ground>) {
         self.ground = g;
+        self.all_exposed = None;
     }
 
     /// The prescribed nodal forces `f_i` [N], if any.
@@ -959,6 +970,12 @@ impl Explicit {
             }
             self.inv_rest_length_fresh = true;
         }
+        // No break and no ice: the factors `intact = 1` and `k = 1` enter as constants, whose products
+        // (`T * 1`, `0.5 * 1`, `q d c * 1`) are the other factor exactly, and are left out.
+        let plain = *self.plain.get_or_insert_with(|| {
+            let w = &self.wire;
+            w.intact.iter().all(|&x| x == 1.0) && w.wind_diameter_factor.iter().all(|&k| k == 1.0)
+        });
         let w = &self.wire;
         let ea = &w.axial_stiffness_n[..n];
         let eta = &w.internal_friction_n_s[..n];
@@ -994,10 +1011,19 @@ impl Explicit {
         // the one the single loop forms (stored and loaded as it is), so the result is bitwise the same;
         // two shorter dependency chains per iteration let the processor overlap more segments.
         let len = &mut self.seg_len[..n];
-        let kmax = tension_loop::<L, VISCOUS>(
-            kmax, x1, x2, x3, v1, v2, v3, inv_l0, ea, eta, intact, fs1, fs2, fs3, es1, es2, es3, len,
-        );
-        load_loop::<W, UNIFORM>(load, q, v1, v2, v3, len, lref, intact, dfac, es1, es2, es3);
+        let kmax = if plain {
+            let kmax = tension_loop::<L, VISCOUS, true>(
+                kmax, x1, x2, x3, v1, v2, v3, inv_l0, ea, eta, intact, fs1, fs2, fs3, es1, es2, es3, len,
+            );
+            load_loop::<W, UNIFORM, true>(load, q, v1, v2, v3, len, lref, intact, dfac, es1, es2, es3);
+            kmax
+        } else {
+            let kmax = tension_loop::<L, VISCOUS, false>(
+                kmax, x1, x2, x3, v1, v2, v3, inv_l0, ea, eta, intact, fs1, fs2, fs3, es1, es2, es3, len,
+            );
+            load_loop::<W, UNIFORM, false>(load, q, v1, v2, v3, len, lref, intact, dfac, es1, es2, es3);
+            kmax
+        };
         self.max_tension_n = from_order_key(kmax);
     }
 
@@ -1026,6 +1052,9 @@ impl Explicit {
         // Fields borrowed one by one (the wire mutably, the point forces and the nodal force shared).
         let extra = if EXTRA { self.nodal_force.as_ref().expect("EXTRA with a nodal force") } else { &NO_NODAL_FORCE };
         let points = if self.external_force.is_empty() { &self.point_force[..] } else { &self.point_scratch[..] };
+        // Every exposure 1 (no ground, none left below 1 by an earlier one): the loop skips `* 1`.
+        let bare = self.ground.is_none()
+            && *self.all_exposed.get_or_insert_with(|| self.wire.exposed.iter().all(|&e| e == 1.0));
         let w = &mut self.wire;
         let n1 = w.nodes();
         let inv_m = &w.inv_mass[..n1];
@@ -1044,9 +1073,15 @@ impl Explicit {
         let [x1, x2, x3] = &mut w.x;
         let (x1, x2, x3) = (&mut x1[..n1], &mut x2[..n1], &mut x3[..n1]);
         // One slice per argument, as in the segment pass (no run-time overlap checks).
-        let mut kmax = node_loop::<EXTRA, DAMP, SMOOTH>(
-            kick, dt, zeta, g, inv_m, free, exposed, f1, f2, f3, e1, e2, e3, ex1, ex2, ex3, v1, v2, v3, x1, x2, x3,
-        );
+        let mut kmax = if bare {
+            node_loop::<EXTRA, DAMP, SMOOTH, true>(
+                kick, dt, zeta, g, inv_m, free, exposed, f1, f2, f3, e1, e2, e3, ex1, ex2, ex3, v1, v2, v3, x1, x2, x3,
+            )
+        } else {
+            node_loop::<EXTRA, DAMP, SMOOTH, false>(
+                kick, dt, zeta, g, inv_m, free, exposed, f1, f2, f3, e1, e2, e3, ex1, ex2, ex3, v1, v2, v3, x1, x2, x3,
+            )
+        };
         for &(i, f) in points {
             let kf = kick * free[i] * inv_m[i];
             let dv = [kf * f[0], kf * f[1], kf * f[2]];
@@ -1518,7 +1553,7 @@ fn segment_loop<L: TensionLaw, W: SegmentLoad, const UNIFORM: bool, const VISCOU
 /// key folded into `kmax` (returned). Every slice has the length of `fs1`.
 #[inline(always)]
 #[allow(clippy::too_many_arguments)]
-fn tension_loop<L: TensionLaw, const VISCOUS: bool>(
+fn tension_loop<L: TensionLaw, const VISCOUS: bool, const PLAIN: bool>(
     mut kmax: i64,
     x1: &[f64],
     x2: &[f64],
@@ -1552,10 +1587,12 @@ fn tension_loop<L: TensionLaw, const VISCOUS: bool>(
         let st = segment::stretch_by_inverse([x1a[j], x2a[j], x3a[j]], [x1b[j], x2b[j], x3b[j]], va, vb, inv_l0[j]);
         // Without internal friction anywhere (`VISCOUS = false`) the viscous term is the constant
         // `0 * 0`: it changes only the sign of a zero tension, and the strain rate is not computed.
+        // `PLAIN`: every segment intact, the factor the constant 1.
+        let it = if PLAIN { 1.0 } else { intact[j] };
         let tension = if VISCOUS {
-            L::tension(ea[j], eta[j], st.e, st.edot) * intact[j]
+            L::tension(ea[j], eta[j], st.e, st.edot) * it
         } else {
-            L::tension(ea[j], 0.0, st.e, 0.0) * intact[j]
+            L::tension(ea[j], 0.0, st.e, 0.0) * it
         };
         kmax = kmax.max(L::order_key(tension));
         let t = st.t;
@@ -1574,7 +1611,7 @@ fn tension_loop<L: TensionLaw, const VISCOUS: bool>(
 /// and length (`len`) into `es`. Every slice has the length of `es1`.
 #[inline(always)]
 #[allow(clippy::too_many_arguments)]
-fn load_loop<W: SegmentLoad, const UNIFORM: bool>(
+fn load_loop<W: SegmentLoad, const UNIFORM: bool, const PLAIN: bool>(
     load: &W,
     q: [f64; 3],
     v1: &[f64],
@@ -1596,7 +1633,9 @@ fn load_loop<W: SegmentLoad, const UNIFORM: bool>(
         let (va, vb) = ([v1a[j], v2a[j], v3a[j]], [v1b[j], v2b[j], v3b[j]]);
         // `e` and `edot` are not read by the load.
         let st = segment::Stretch { len: len[j], t: [es1[j], es2[j], es3[j]], e: 0.0, edot: 0.0 };
-        let e = segment::share::<f64, W, UNIFORM>(load, &st, va, vb, q, lref[j], intact[j], dfac[j]);
+        // `PLAIN`: intact at the conductor's own diameter, both factors the constant 1.
+        let (it, k) = if PLAIN { (1.0, 1.0) } else { (intact[j], dfac[j]) };
+        let e = segment::share::<f64, W, UNIFORM>(load, &st, va, vb, q, lref[j], it, k);
         es1[j] = e[0];
         es2[j] = e[1];
         es3[j] = e[2];
@@ -1613,7 +1652,7 @@ fn load_loop<W: SegmentLoad, const UNIFORM: bool>(
 /// `a = (F / m + g_k) - zeta v`, `v + (kick free) a`, `x + dt v`.
 #[inline(always)]
 #[allow(clippy::too_many_arguments)]
-fn node_loop<const EXTRA: bool, const DAMP: bool, const SMOOTH: bool>(
+fn node_loop<const EXTRA: bool, const DAMP: bool, const SMOOTH: bool, const BARE: bool>(
     kick: f64,
     dt: f64,
     zeta: f64,
@@ -1647,12 +1686,22 @@ fn node_loop<const EXTRA: bool, const DAMP: bool, const SMOOTH: bool>(
     let (v2, v3, x1, x2, x3) = (&mut v2[..n1], &mut v3[..n1], &mut x1[..n1], &mut x2[..n1], &mut x3[..n1]);
     let mut kmax = 0;
     for i in 0..n1 {
-        let (im, ex, kf) = (inv_m[i], exposed[i], kick * free[i]);
-        let mut f = [
-            f1hi[i] - f1lo[i] + (e1hi[i] + e1lo[i]) * ex,
-            f2hi[i] - f2lo[i] + (e2hi[i] + e2lo[i]) * ex,
-            f3hi[i] - f3lo[i] + (e3hi[i] + e3lo[i]) * ex,
-        ];
+        let (im, kf) = (inv_m[i], kick * free[i]);
+        // `BARE` (every exposure 1): `(e_hi + e_lo) * 1` is `e_hi + e_lo` exactly, so the product is left out.
+        let mut f = if BARE {
+            [
+                f1hi[i] - f1lo[i] + (e1hi[i] + e1lo[i]),
+                f2hi[i] - f2lo[i] + (e2hi[i] + e2lo[i]),
+                f3hi[i] - f3lo[i] + (e3hi[i] + e3lo[i]),
+            ]
+        } else {
+            let ex = exposed[i];
+            [
+                f1hi[i] - f1lo[i] + (e1hi[i] + e1lo[i]) * ex,
+                f2hi[i] - f2lo[i] + (e2hi[i] + e2lo[i]) * ex,
+                f3hi[i] - f3lo[i] + (e3hi[i] + e3lo[i]) * ex,
+            ]
+        };
         if EXTRA {
             f[0] += ex1[i];
             f[1] += ex2[i];
@@ -1822,6 +1871,38 @@ mod tests {
         assert!(!s.wire.uniform_smoothing);
         cases.push(("weighted smoothing".into(), s));
         cases
+    }
+
+    /// The passes' shortcuts for a plain wire (every segment intact at the conductor's diameter: the
+    /// factors 1 left out) and for full exposure (no ground: `* 1` left out) give the bits of the general
+    /// passes: the option cases stepped 300 times with the shortcuts and with the general passes forced,
+    /// and an iced case (wind diameter factor 1.4 on every third segment), which is not plain.
+    #[test]
+    fn plain_wire_and_full_exposure_shortcuts_change_no_bit() {
+        let mut cases = option_cases();
+        let mut iced = Config::Wind3d.solver(41);
+        iced.params.smoothing = 0.02;
+        for j in (0..41).step_by(3) {
+            iced.wire.wind_diameter_factor[j] = 1.4;
+        }
+        cases.push(("iced".into(), iced));
+        let mut shortcuts = 0;
+        for (name, mut fast) in cases {
+            let mut general = fast.clone();
+            let dt = fast.params.dt_s;
+            for step in 0..300 {
+                (general.plain, general.all_exposed) = (Some(false), Some(false));
+                assert_eq!(fast.step(dt).is_ok(), general.step(dt).is_ok(), "{name}: step {step}");
+            }
+            for k in 0..3 {
+                let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+                assert_eq!(bits(&fast.fs[k]), bits(&general.fs[k]), "{name}: fs{k}");
+                assert_eq!(bits(&fast.es[k]), bits(&general.es[k]), "{name}: es{k}");
+            }
+            assert_bitwise(&fast, &general, &name);
+            shortcuts += usize::from(fast.plain == Some(true)) + usize::from(fast.all_exposed == Some(true));
+        }
+        assert!(shortcuts >= 6, "{shortcuts} shortcuts taken");
     }
 
     #[test]
