@@ -462,9 +462,9 @@ pub struct Explicit {
     /// whether every node's exposure (the ground contact's share of its load, [`contact`]) is 1 (`None`:
     /// not known since the wire or the ground last changed; only asked without a ground)
     all_exposed: Option<bool>,
-    /// whether every segment is intact and at the conductor's own wind diameter (`intact = 1`, wind
-    /// diameter factor 1: no break, no ice), `None`: not known since the wire last changed
-    plain: Option<bool>,
+    /// whether every segment is intact (`intact = 1`: no break), and whether every segment is at the
+    /// conductor's own wind diameter (factor 1: no ice); `None`: not known since the wire last changed
+    plain: Option<(bool, bool)>,
     /// `1.0 / l0` of every segment [1/m], for the segment pass; valid while `inv_rest_length_fresh`
     inv_rest_length: Vec<f64>,
     /// `inv_rest_length` holds the wire's stress-free lengths (false once the wire may have changed)
@@ -970,11 +970,11 @@ impl Explicit {
             }
             self.inv_rest_length_fresh = true;
         }
-        // No break and no ice: the factors `intact = 1` and `k = 1` enter as constants, whose products
+        // No break (and no ice): the factors `intact = 1` (and `k = 1`) enter as constants, whose products
         // (`T * 1`, `0.5 * 1`, `q d c * 1`) are the other factor exactly, and are left out.
-        let plain = *self.plain.get_or_insert_with(|| {
+        let (intact_all, unit_k) = *self.plain.get_or_insert_with(|| {
             let w = &self.wire;
-            w.intact.iter().all(|&x| x == 1.0) && w.wind_diameter_factor.iter().all(|&k| k == 1.0)
+            (w.intact.iter().all(|&x| x == 1.0), w.wind_diameter_factor.iter().all(|&k| k == 1.0))
         });
         let w = &self.wire;
         let ea = &w.axial_stiffness_n[..n];
@@ -1011,18 +1011,28 @@ impl Explicit {
         // the one the single loop forms (stored and loaded as it is), so the result is bitwise the same;
         // two shorter dependency chains per iteration let the processor overlap more segments.
         let len = &mut self.seg_len[..n];
-        let kmax = if plain {
-            let kmax = tension_loop::<L, VISCOUS, true>(
-                kmax, x1, x2, x3, v1, v2, v3, inv_l0, ea, eta, intact, fs1, fs2, fs3, es1, es2, es3, len,
-            );
-            load_loop::<W, UNIFORM, true>(load, q, v1, v2, v3, len, lref, intact, dfac, es1, es2, es3);
-            kmax
-        } else {
-            let kmax = tension_loop::<L, VISCOUS, false>(
-                kmax, x1, x2, x3, v1, v2, v3, inv_l0, ea, eta, intact, fs1, fs2, fs3, es1, es2, es3, len,
-            );
-            load_loop::<W, UNIFORM, false>(load, q, v1, v2, v3, len, lref, intact, dfac, es1, es2, es3);
-            kmax
+        let kmax = match (intact_all, unit_k) {
+            (true, true) => {
+                let kmax = tension_loop::<L, VISCOUS, true>(
+                    kmax, x1, x2, x3, v1, v2, v3, inv_l0, ea, eta, intact, fs1, fs2, fs3, es1, es2, es3, len,
+                );
+                load_loop::<W, UNIFORM, true, true>(load, q, v1, v2, v3, len, lref, intact, dfac, es1, es2, es3);
+                kmax
+            }
+            (true, false) => {
+                let kmax = tension_loop::<L, VISCOUS, true>(
+                    kmax, x1, x2, x3, v1, v2, v3, inv_l0, ea, eta, intact, fs1, fs2, fs3, es1, es2, es3, len,
+                );
+                load_loop::<W, UNIFORM, true, false>(load, q, v1, v2, v3, len, lref, intact, dfac, es1, es2, es3);
+                kmax
+            }
+            (false, _) => {
+                let kmax = tension_loop::<L, VISCOUS, false>(
+                    kmax, x1, x2, x3, v1, v2, v3, inv_l0, ea, eta, intact, fs1, fs2, fs3, es1, es2, es3, len,
+                );
+                load_loop::<W, UNIFORM, false, false>(load, q, v1, v2, v3, len, lref, intact, dfac, es1, es2, es3);
+                kmax
+            }
         };
         self.max_tension_n = from_order_key(kmax);
     }
@@ -1553,7 +1563,7 @@ fn segment_loop<L: TensionLaw, W: SegmentLoad, const UNIFORM: bool, const VISCOU
 /// key folded into `kmax` (returned). Every slice has the length of `fs1`.
 #[inline(always)]
 #[allow(clippy::too_many_arguments)]
-fn tension_loop<L: TensionLaw, const VISCOUS: bool, const PLAIN: bool>(
+fn tension_loop<L: TensionLaw, const VISCOUS: bool, const INTACT: bool>(
     mut kmax: i64,
     x1: &[f64],
     x2: &[f64],
@@ -1587,8 +1597,8 @@ fn tension_loop<L: TensionLaw, const VISCOUS: bool, const PLAIN: bool>(
         let st = segment::stretch_by_inverse([x1a[j], x2a[j], x3a[j]], [x1b[j], x2b[j], x3b[j]], va, vb, inv_l0[j]);
         // Without internal friction anywhere (`VISCOUS = false`) the viscous term is the constant
         // `0 * 0`: it changes only the sign of a zero tension, and the strain rate is not computed.
-        // `PLAIN`: every segment intact, the factor the constant 1.
-        let it = if PLAIN { 1.0 } else { intact[j] };
+        // `INTACT`: every segment intact, the factor the constant 1.
+        let it = if INTACT { 1.0 } else { intact[j] };
         let tension = if VISCOUS {
             L::tension(ea[j], eta[j], st.e, st.edot) * it
         } else {
@@ -1611,7 +1621,7 @@ fn tension_loop<L: TensionLaw, const VISCOUS: bool, const PLAIN: bool>(
 /// and length (`len`) into `es`. Every slice has the length of `es1`.
 #[inline(always)]
 #[allow(clippy::too_many_arguments)]
-fn load_loop<W: SegmentLoad, const UNIFORM: bool, const PLAIN: bool>(
+fn load_loop<W: SegmentLoad, const UNIFORM: bool, const INTACT: bool, const UNIT_K: bool>(
     load: &W,
     q: [f64; 3],
     v1: &[f64],
@@ -1633,8 +1643,9 @@ fn load_loop<W: SegmentLoad, const UNIFORM: bool, const PLAIN: bool>(
         let (va, vb) = ([v1a[j], v2a[j], v3a[j]], [v1b[j], v2b[j], v3b[j]]);
         // `e` and `edot` are not read by the load.
         let st = segment::Stretch { len: len[j], t: [es1[j], es2[j], es3[j]], e: 0.0, edot: 0.0 };
-        // `PLAIN`: intact at the conductor's own diameter, both factors the constant 1.
-        let (it, k) = if PLAIN { (1.0, 1.0) } else { (intact[j], dfac[j]) };
+        // `INTACT`, `UNIT_K`: every segment intact, at the conductor's own diameter; the factor the constant 1.
+        let it = if INTACT { 1.0 } else { intact[j] };
+        let k = if UNIT_K { 1.0 } else { dfac[j] };
         let e = segment::share::<f64, W, UNIFORM>(load, &st, va, vb, q, lref[j], it, k);
         es1[j] = e[0];
         es2[j] = e[1];
@@ -1886,12 +1897,12 @@ mod tests {
             iced.wire.wind_diameter_factor[j] = 1.4;
         }
         cases.push(("iced".into(), iced));
-        let mut shortcuts = 0;
+        let (mut shortcuts, mut iced_intact) = (0, 0);
         for (name, mut fast) in cases {
             let mut general = fast.clone();
             let dt = fast.params.dt_s;
             for step in 0..300 {
-                (general.plain, general.all_exposed) = (Some(false), Some(false));
+                (general.plain, general.all_exposed) = (Some((false, false)), Some(false));
                 assert_eq!(fast.step(dt).is_ok(), general.step(dt).is_ok(), "{name}: step {step}");
             }
             for k in 0..3 {
@@ -1900,9 +1911,10 @@ mod tests {
                 assert_eq!(bits(&fast.es[k]), bits(&general.es[k]), "{name}: es{k}");
             }
             assert_bitwise(&fast, &general, &name);
-            shortcuts += usize::from(fast.plain == Some(true)) + usize::from(fast.all_exposed == Some(true));
+            shortcuts += usize::from(fast.plain == Some((true, true))) + usize::from(fast.all_exposed == Some(true));
+            iced_intact += usize::from(fast.plain == Some((true, false)));
         }
-        assert!(shortcuts >= 6, "{shortcuts} shortcuts taken");
+        assert!(shortcuts >= 6 && iced_intact == 1, "{shortcuts} shortcuts taken, {iced_intact} iced and intact");
     }
 
     #[test]
