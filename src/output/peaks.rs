@@ -561,16 +561,16 @@ struct Gate {
     tension: f64,
     /// per span: the least of the sets' largest tensions [N] and the largest of their least clearances [m]
     spans: Vec<[f64; 2]>,
-    /// per probe component: the intersection of the sets' quiet intervals [m]
-    lo: Vec<[f64; 3]>,
-    hi: Vec<[f64; 3]>,
+    /// per probe component (probe by probe, three each): the intersection of the sets' quiet intervals [m]
+    lo: Vec<f64>,
+    hi: Vec<f64>,
     /// per support: the least of the sets' largest magnitudes and of their components' largest magnitudes
     /// `|F1|, |F2|, |F3|` [N]
     supports: Vec<[f64; 4]>,
-    /// per probe component: the last level with a sign among the levels the gate admitted since the sets
-    /// were last given them (`last_d = 0`: none), and whether there are any ([`Gate::give`])
-    last_t: Vec<[f64; 3]>,
-    last_d: Vec<[f64; 3]>,
+    /// per probe component (likewise): the last level with a sign among the levels the gate admitted since
+    /// the sets were last given them (`last_d = 0`: none), and whether there are any ([`Gate::give`])
+    last_t: Vec<f64>,
+    last_d: Vec<f64>,
     pending: bool,
 }
 
@@ -578,11 +578,11 @@ impl Gate {
     fn sized(probes: usize, supports: usize, spans: usize) -> Self {
         Gate {
             spans: vec![[0.0; 2]; spans],
-            lo: vec![[0.0; 3]; probes],
-            hi: vec![[0.0; 3]; probes],
+            lo: vec![0.0; 3 * probes],
+            hi: vec![0.0; 3 * probes],
             supports: vec![[0.0; 4]; supports],
-            last_t: vec![[0.0; 3]; probes],
-            last_d: vec![[0.0; 3]; probes],
+            last_t: vec![0.0; 3 * probes],
+            last_d: vec![0.0; 3 * probes],
             ..Default::default()
         }
     }
@@ -607,8 +607,8 @@ impl Gate {
         let inf = f64::INFINITY;
         self.tension = inf;
         self.spans.fill([inf, -inf]);
-        self.lo.fill([-inf; 3]);
-        self.hi.fill([inf; 3]);
+        self.lo.fill(-inf);
+        self.hi.fill(inf);
         self.supports.fill([inf; 4]);
         for s in sets.iter().flatten() {
             self.tension = self.tension.min(s.max_tension.value_n);
@@ -616,11 +616,11 @@ impl Gate {
                 b[0] = b[0].min(p.max_tension.value_n);
                 b[1] = b[1].max(p.least_clearance.map_or(-inf, |l| l.value_m));
             }
-            for i in 0..self.lo.len() {
-                for k in 0..3 {
-                    self.lo[i][k] = self.lo[i][k].max(s.quiet.lo[i][k]);
-                    self.hi[i][k] = self.hi[i][k].min(s.quiet.hi[i][k]);
-                }
+            for (b, &q) in self.lo.iter_mut().zip(s.quiet.lo.as_flattened()) {
+                *b = b.max(q);
+            }
+            for (b, &q) in self.hi.iter_mut().zip(s.quiet.hi.as_flattened()) {
+                *b = b.min(q);
             }
             for (b, p) in self.supports.iter_mut().zip(&s.supports) {
                 b[0] = b[0].min(p.magnitude.value_n);
@@ -651,11 +651,9 @@ impl Gate {
             ok &= !(m > b[0]) & !(f[0].abs() > b[1]) & !(f[1].abs() > b[2]) & !(f[2].abs() > b[3]);
         }
         let n = self.lo.len();
-        let (lo, hi, d) = (&self.lo[..n], &self.hi[..n], &c.disp[..n]);
-        for i in 0..n {
-            for k in 0..3 {
-                ok &= (lo[i][k] <= d[i][k]) & (d[i][k] <= hi[i][k]);
-            }
+        let (lo, hi, d) = (&self.lo[..n], &self.hi[..n], &c.disp.as_flattened()[..n]);
+        for j in 0..n {
+            ok &= (lo[j] <= d[j]) & (d[j] <= hi[j]);
         }
         ok
     }
@@ -665,13 +663,12 @@ impl Gate {
     #[inline(always)]
     fn record(&mut self, t: f64, d: &[[f64; 3]]) {
         let n = self.last_d.len();
-        let (lt, ld, d) = (&mut self.last_t[..n], &mut self.last_d[..n], &d[..n]);
-        for i in 0..n {
-            for k in 0..3 {
-                if d[i][k].abs() > 0.0 {
-                    (lt[i][k], ld[i][k]) = (t, d[i][k]);
-                }
-            }
+        let (lt, ld, d) = (&mut self.last_t[..n], &mut self.last_d[..n], &d.as_flattened()[..n]);
+        for j in 0..n {
+            // (Selects, not branches: the same values.)
+            let keep = d[j].abs() > 0.0;
+            lt[j] = if keep { t } else { lt[j] };
+            ld[j] = if keep { d[j] } else { ld[j] };
         }
         self.pending = true;
     }
@@ -685,15 +682,14 @@ impl Gate {
             return;
         }
         for set in [Some(phase), self.with_run.then_some(run)].into_iter().flatten() {
-            for (c, (lt, ld)) in set.crossings.iter_mut().zip(self.last_t.iter().zip(&self.last_d)) {
-                for k in 0..3 {
-                    if ld[k] != 0.0 {
-                        (c[k].last_t, c[k].last_d) = (lt[k], ld[k]);
-                    }
+            for (c, (&lt, &ld)) in set.crossings.as_flattened_mut().iter_mut().zip(self.last_t.iter().zip(&self.last_d))
+            {
+                if ld != 0.0 {
+                    (c.last_t, c.last_d) = (lt, ld);
                 }
             }
         }
-        self.last_d.fill([0.0; 3]);
+        self.last_d.fill(0.0);
         self.pending = false;
     }
 }
@@ -788,7 +784,12 @@ impl Peaks {
             supports,
             spans,
             ground,
-            current: Current { disp: vec![[0.0; 3]; n], spans: Vec::with_capacity(k), ..Default::default() },
+            current: Current {
+                disp: vec![[0.0; 3]; n],
+                magnitudes: vec![0.0; supports],
+                spans: vec![(0.0, None); k],
+                ..Default::default()
+            },
             phase_updated: false,
             run_started: false,
             run_is_phase: false,
@@ -830,12 +831,15 @@ impl Observer for Peaks {
             let chord = ((b[0] - a[0]).powi(2) + (b[1] - a[1]).powi(2) + (b[2] - a[2]).powi(2)).sqrt();
             c.band_m = CROSSING_BAND * chord;
         }
+        let x = ProbePoint::coordinates(s.wire());
         for (d, p) in c.disp.iter_mut().zip(&self.probes) {
-            *d = p.displacement(s.wire());
+            *d = p.displacement_in(x);
         }
         s.support_forces(&mut c.forces);
-        c.magnitudes.clear();
-        c.magnitudes.extend(c.forces.iter().map(|(_, f)| (f[0] * f[0] + f[1] * f[1] + f[2] * f[2]).sqrt()));
+        // (One entry per support from the start, written in place.)
+        for (m, (_, f)) in c.magnitudes.iter_mut().zip(&c.forces) {
+            *m = (f[0] * f[0] + f[1] * f[1] + f[2] * f[2]).sqrt();
+        }
         let w = s.wire();
         c.swings.clear();
         // Without strings no support has a swing (an empty list pairs with no support in the update).
@@ -847,21 +851,24 @@ impl Observer for Peaks {
             }));
         }
         c.tension = s.max_tension_n();
-        c.spans.clear();
         let phase = self.phases.last_mut().expect("the first phase exists from the start");
         let run_level = c.t >= self.from_s - super::clock::LANDING * s.params().dt_s;
         // A span's largest `|T t|` is at most the wire's largest tension `T_max` (the kernel's, every
         // segment) times `1 + SPAN_BOUND` (module docs): below every peak it could raise, it is not formed.
         let bounded = w.law == LawKind::TensionOnly && c.tension < SPAN_BOUND_BELOW_N;
         let bound = c.tension * (1.0 + SPAN_BOUND);
-        for (k, &(first, last)) in self.spans.iter().enumerate() {
+        let with_run_peaks = run_level && !self.run_is_phase;
+        // (`c.spans` has one entry per span from the start: written in place.)
+        for (((&(first, last), out), p), r) in
+            self.spans.iter().zip(&mut c.spans).zip(&phase.peaks.spans).zip(&self.run.spans)
+        {
             let clearance = self.ground.as_ref().map(|g| g.least_clearance_m(&w.x, first..=last));
-            let mut least_peak = phase.peaks.spans[k].max_tension.value_n;
-            if run_level && !self.run_is_phase {
-                least_peak = least_peak.min(self.run.spans[k].max_tension.value_n);
+            let mut least_peak = p.max_tension.value_n;
+            if with_run_peaks {
+                least_peak = least_peak.min(r.max_tension.value_n);
             }
             let tension = if bounded && bound < least_peak { f64::NEG_INFINITY } else { s.max_tension_in(first..last) };
-            c.spans.push((tension, clearance));
+            *out = (tension, clearance);
         }
         let mut with_run = false;
         if !self.run_is_phase && run_level {
