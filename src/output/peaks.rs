@@ -62,9 +62,10 @@
 //!   recorded as the crossings' last in every set: it is recorded once, and each component's last such
 //!   level with a sign is given to the sets' crossings before a set is next updated, ends (an event) or
 //!   is read (the end of the run), the state the per-level records would have left (each overwrites the
-//!   last with a value with a sign). Strings' swings are not bounded and are updated in every set. The
-//!   bounds hold for the sets they were formed from: a level updating another choice of sets (the run's
-//!   set starting) or any event takes the sets' own updates;
+//!   last with a value with a sign; a level with a sign in every component is the last of all of them
+//!   and is kept whole, its buffer swapped with the kept one's). Strings' swings are not bounded and are
+//!   updated in every set. The bounds hold for the sets they were formed from: a level updating another
+//!   choice of sets (the run's set starting) or any event takes the sets' own updates;
 //! - the run's peaks where they are the last phase's: when the run's peaks begin at the level where the
 //!   phase's began (`peaks_from_s` at an event, or 0 without events), both sets see the same levels and
 //!   perform the same operations on the same values, so the phase's set stands for both until the next
@@ -572,6 +573,11 @@ struct Gate {
     last_t: Vec<f64>,
     last_d: Vec<f64>,
     pending: bool,
+    /// the last admitted level where every component had a sign, if after every record in `last_t`,
+    /// `last_d` (`level_pending`): kept whole, its displacements' buffer swapped with the level's
+    level_t: f64,
+    level_d: Vec<[f64; 3]>,
+    level_pending: bool,
 }
 
 impl Gate {
@@ -583,6 +589,7 @@ impl Gate {
             supports: vec![[0.0; 4]; supports],
             last_t: vec![0.0; 3 * probes],
             last_d: vec![0.0; 3 * probes],
+            level_d: vec![[0.0; 3]; probes],
             ..Default::default()
         }
     }
@@ -639,7 +646,8 @@ impl Gate {
     // `!(a > b)`, not `a <= b`: true where the update's `a > b` is false, NaN included.
     #[allow(clippy::neg_cmp_op_on_partial_ord)]
     #[inline(always)]
-    fn admits(&self, c: &Current) -> bool {
+    /// Also returns whether every probe component has a sign (is not zero; an admitted value is not NaN).
+    fn admits(&self, c: &Current) -> (bool, bool) {
         let mut ok = !(c.tension > self.tension);
         for (&(tension, clearance), b) in c.spans.iter().zip(&self.spans) {
             ok &= !(tension > b[0]);
@@ -652,25 +660,47 @@ impl Gate {
         }
         let n = self.lo.len();
         let (lo, hi, d) = (&self.lo[..n], &self.hi[..n], &c.disp.as_flattened()[..n]);
+        let mut signed = true;
         for j in 0..n {
             ok &= (lo[j] <= d[j]) & (d[j] <= hi[j]);
+            signed &= d[j] != 0.0;
         }
-        ok
+        (ok, signed)
     }
 
     /// Keep the admitted level at `t` [s] with the displacements `d` [m] as each component's last with a
-    /// sign, what [`Crossings::record`] would do in every set.
+    /// sign, what [`Crossings::record`] would do in every set. Where every component has a sign
+    /// (`signed`, nearly every level), the level is the last of every component: it is kept whole by
+    /// swapping `d`'s buffer with `level_d` (the caller writes every entry of `d` again before it is
+    /// next read), and moved into the per-component records only before a level with a zero component
+    /// is recorded or the records are given ([`Gate::settle_level`]).
     #[inline(always)]
-    fn record(&mut self, t: f64, d: &[[f64; 3]]) {
+    fn record(&mut self, t: f64, d: &mut Vec<[f64; 3]>, signed: bool) {
+        self.pending = true;
+        if signed {
+            std::mem::swap(&mut self.level_d, d);
+            self.level_t = t;
+            self.level_pending = true;
+            return;
+        }
+        self.settle_level();
         let n = self.last_d.len();
         let (lt, ld, d) = (&mut self.last_t[..n], &mut self.last_d[..n], &d.as_flattened()[..n]);
         for j in 0..n {
-            // (Selects, not branches: the same values.)
-            let keep = d[j].abs() > 0.0;
-            lt[j] = if keep { t } else { lt[j] };
-            ld[j] = if keep { d[j] } else { ld[j] };
+            if d[j].abs() > 0.0 {
+                (lt[j], ld[j]) = (t, d[j]);
+            }
         }
-        self.pending = true;
+    }
+
+    /// Move the level kept whole into the per-component records: it is the last of every component.
+    fn settle_level(&mut self) {
+        if self.level_pending {
+            for ((lt, ld), &x) in self.last_t.iter_mut().zip(&mut self.last_d).zip(self.level_d.as_flattened()) {
+                (*lt, *ld) = (self.level_t, x);
+            }
+            self.level_pending = false;
+        }
     }
 
     /// Give the sets the gate admitted levels for (the last phase's and, if it was one of them, the run's)
@@ -681,6 +711,7 @@ impl Gate {
         if !self.pending {
             return;
         }
+        self.settle_level();
         for set in [Some(phase), self.with_run.then_some(run)].into_iter().flatten() {
             for (c, (&lt, &ld)) in set.crossings.as_flattened_mut().iter_mut().zip(self.last_t.iter().zip(&self.last_d))
             {
@@ -882,9 +913,10 @@ impl Observer for Peaks {
             self.run_started = true;
         }
         let gate = &mut self.gate;
-        if gate.valid && gate.with_run == with_run && gate.admits(c) {
+        let (admitted, signed) = if gate.valid && gate.with_run == with_run { gate.admits(c) } else { (false, false) };
+        if admitted {
             // Every set updated at this level would only record it (module docs): once for all of them.
-            gate.record(c.t, &c.disp);
+            gate.record(c.t, &mut c.disp, signed);
             if !c.swings.is_empty() {
                 if with_run {
                     self.run.update_swings(c.t, c.tau, &c.swings);
@@ -1040,6 +1072,8 @@ mod tests {
                 peaks.observe(&Level { solver: &s, t_s: t, tau_per_s: 1.0 }).unwrap();
                 // Every value formed, the spans' largest tensions too.
                 let mut all = peaks.current.clone();
+                // (The gate may have swapped the level's displacements into its record: formed again.)
+                all.disp = peaks.probes.iter().map(|p| p.displacement(s.wire())).collect();
                 skipped += all.spans.iter().filter(|p| p.0 == f64::NEG_INFINITY).count();
                 all.spans = vec![(s.max_tension_in(0..20), None), (s.max_tension_in(20..40), None)];
                 if t >= from_s - crate::output::clock::LANDING * dt {
@@ -1060,6 +1094,43 @@ mod tests {
         }
         assert!(skipped > 0, "no span's largest tension was left out");
         assert!(admitted > 50, "the gate admitted {admitted} levels");
+    }
+
+    /// The gate's records ([`Gate::record`], [`Gate::give`]) leave every crossing's last level as the
+    /// per-level records do: levels without zeros (kept whole, buffers swapped), a component zero
+    /// throughout half of them and every one now and then (the level kept whole moved into the
+    /// per-component records first), given at irregular intervals to two sets.
+    #[test]
+    fn gate_records_are_the_per_level_records() {
+        let mut r: u64 = 11;
+        let mut next = move || {
+            r = r.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            (r >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let mut gate = Gate::sized(2, 0, 0);
+        gate.with_run = true;
+        let (mut phase, mut run) = (PeakSet::sized(2, 0, 0), PeakSet::sized(2, 0, 0));
+        let (mut phase_ref, mut run_ref) = (phase.clone(), run.clone());
+        let mut disp = vec![[0.0; 3]; 2];
+        let (mut zeros, mut whole) = (0, 0);
+        for n in 0..5000 {
+            let t = n as f64 * 0.01;
+            for (j, d) in disp.iter_mut().flatten().enumerate() {
+                // component 4 zero throughout the first half, each now and then
+                *d = if (j == 4 && n < 2500) || next() < 0.01 { 0.0 } else { next() - 0.5 };
+            }
+            let signed = disp.as_flattened().iter().all(|&x| x != 0.0);
+            (zeros, whole) = (zeros + usize::from(!signed), whole + usize::from(signed));
+            for set in [&mut phase_ref, &mut run_ref] {
+                record_all(&mut set.crossings, t, &disp);
+            }
+            gate.record(t, &mut disp, signed);
+            if next() < 0.1 {
+                gate.give(&mut phase, &mut run);
+                assert_eq!((&phase.crossings, &run.crossings), (&phase_ref.crossings, &run_ref.crossings), "level {n}");
+            }
+        }
+        assert!(zeros > 2500 && whole > 1000, "{zeros} levels with a zero, {whole} without");
     }
 
     /// A string's swing peaks with the angle along formed only where it could pass the peak are those
