@@ -759,7 +759,8 @@ struct Current {
     tau: f64,
     /// largest segment tension [N]
     tension: f64,
-    /// probe displacements [m]
+    /// probe displacements [m] (every entry written at every level: after a level the gate admitted, the
+    /// buffer holds an earlier level's, swapped into [`Gate::record`])
     disp: Vec<[f64; 3]>,
     /// support forces [N]
     forces: Vec<(usize, [f64; 3])>,
