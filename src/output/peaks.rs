@@ -52,6 +52,20 @@
 //!   sign (`[0, inf)` above, `(-inf, 0]` below; only up to the band where the crossing's side is the
 //!   other one or none; only zero before the first level with a sign). Empty where a bound is NaN.
 //!   Values outside it take the comparisons of the update as before;
+//! - every set's update where no set would change but for recording the level ([`Gate`]): after a level
+//!   that updated the sets, where each of them is armed with its quiet intervals and takes no full
+//!   updates, one set of bounds is formed from all of them: the least of their largest tensions (the
+//!   wire's, each span's), of their supports' largest magnitudes and components' largest magnitudes, the
+//!   largest of their least clearances, and the intersection of their probes' quiet intervals. A level
+//!   within them passes none of any set's comparisons (each bound is the extreme of the sets' values, and
+//!   each test the negation of the update's own comparison, so NaN passes as there) and would only be
+//!   recorded as the crossings' last in every set: it is recorded once, and each component's last such
+//!   level with a sign is given to the sets' crossings before a set is next updated, ends (an event) or
+//!   is read (the end of the run), the state the per-level records would have left (each overwrites the
+//!   last with a value with a sign; a level with a sign in every component is the last of all of them
+//!   and is kept whole, its buffer swapped with the kept one's). Strings' swings are not bounded and are
+//!   updated in every set. The bounds hold for the sets they were formed from: a level updating another
+//!   choice of sets (the run's set starting) or any event takes the sets' own updates;
 //! - the run's peaks where they are the last phase's: when the run's peaks begin at the level where the
 //!   phase's began (`peaks_from_s` at an event, or 0 without events), both sets see the same levels and
 //!   perform the same operations on the same values, so the phase's set stands for both until the next
@@ -421,8 +435,8 @@ impl PeakSet {
     // The negated comparisons are the full update's own (`!(a > b)` is true exactly where it changes
     // nothing, NaN included), so they are written as such.
     #[allow(clippy::neg_cmp_op_on_partial_ord)]
-    fn update(&mut self, c: &Current) {
-        let Current { t, tau, tension, ref disp, ref forces, ref swings, ref spans, band_m } = *c;
+    fn update(&mut self, cur: &Current) {
+        let Current { t, tau, tension, ref disp, ref spans, band_m, .. } = *cur;
         largest(&mut self.max_tension, tension, t, tau);
         for (p, &(tension, clearance)) in self.spans.iter_mut().zip(spans) {
             largest(&mut p.max_tension, tension, t, tau);
@@ -448,7 +462,7 @@ impl PeakSet {
             }
             if inside {
                 record_all(&mut self.crossings[..n], t, d);
-                self.update_supports(t, tau, forces, swings);
+                self.update_supports(cur);
                 return;
             }
         }
@@ -472,7 +486,7 @@ impl PeakSet {
             if quiet {
                 record_all(c, t, d);
                 self.arm(band_m);
-                self.update_supports(t, tau, forces, swings);
+                self.update_supports(cur);
                 return;
             }
             self.full_for.0 = RETRY;
@@ -498,17 +512,24 @@ impl PeakSet {
                 c[i][k].update(t, dk, band_m);
             }
         }
-        self.update_supports(t, tau, forces, swings);
+        self.update_supports(cur);
     }
 
-    /// The supports' part of [`PeakSet::update`].
-    fn update_supports(&mut self, t: f64, tau: f64, forces: &[(usize, [f64; 3])], swings: &[Option<([f64; 2], f64)>]) {
-        for (s, (_, f)) in self.supports.iter_mut().zip(forces) {
-            largest(&mut s.magnitude, (f[0] * f[0] + f[1] * f[1] + f[2] * f[2]).sqrt(), t, tau);
+    /// The supports' part of [`PeakSet::update`]: the forces with their magnitudes `|F|` (formed once per
+    /// level, [`Current::magnitudes`]), then the swings.
+    fn update_supports(&mut self, c: &Current) {
+        let (t, tau) = (c.t, c.tau);
+        for ((s, (_, f)), &m) in self.supports.iter_mut().zip(&c.forces).zip(&c.magnitudes) {
+            largest(&mut s.magnitude, m, t, tau);
             for k in 0..3 {
                 signed_force(&mut s.components[k], f[k], t, tau);
             }
         }
+        self.update_swings(t, tau, &c.swings);
+    }
+
+    /// The strings' swings, the part of [`PeakSet::update_supports`] that [`Gate`] does not bound.
+    fn update_swings(&mut self, t: f64, tau: f64, swings: &[Option<([f64; 2], f64)>]) {
         for (s, sw) in self.supports.iter_mut().zip(swings) {
             if let &Some(([y, x], across)) = sw {
                 let peaks = s.swing.get_or_insert_with(Default::default);
@@ -525,6 +546,182 @@ impl PeakSet {
                 }
             }
         }
+    }
+}
+
+/// The bounds under which a level changes no set it updates but for the crossings' last levels (module
+/// documentation), formed from those sets after a level that updated them: one check for the run's set
+/// and the last phase's together, in place of each set's quiet-interval check.
+#[derive(Clone, Debug, Default)]
+struct Gate {
+    /// whether the bounds are those of the sets as they now are (formed after they were last updated)
+    valid: bool,
+    /// whether the run's set is one of them (besides the last phase's)
+    with_run: bool,
+    /// the least of the sets' largest tensions [N]
+    tension: f64,
+    /// per span: the least of the sets' largest tensions [N] and the largest of their least clearances [m]
+    spans: Vec<[f64; 2]>,
+    /// per probe component (probe by probe, three each): the intersection of the sets' quiet intervals [m]
+    lo: Vec<f64>,
+    hi: Vec<f64>,
+    /// per support: the least of the sets' largest magnitudes and of their components' largest magnitudes
+    /// `|F1|, |F2|, |F3|` [N]
+    supports: Vec<[f64; 4]>,
+    /// per probe component (likewise): the last level with a sign among the levels the gate admitted since
+    /// the sets were last given them (`last_d = 0`: none), and whether there are any ([`Gate::give`])
+    last_t: Vec<f64>,
+    last_d: Vec<f64>,
+    pending: bool,
+    /// the last admitted level where every component had a sign, if after every record in `last_t`,
+    /// `last_d` (`level_pending`): kept whole, its displacements' buffer swapped with the level's
+    level_t: f64,
+    level_d: Vec<[f64; 3]>,
+    level_pending: bool,
+}
+
+impl Gate {
+    fn sized(probes: usize, supports: usize, spans: usize) -> Self {
+        Gate {
+            spans: vec![[0.0; 2]; spans],
+            lo: vec![0.0; 3 * probes],
+            hi: vec![0.0; 3 * probes],
+            supports: vec![[0.0; 4]; supports],
+            last_t: vec![0.0; 3 * probes],
+            last_d: vec![0.0; 3 * probes],
+            level_d: vec![[0.0; 3]; probes],
+            ..Default::default()
+        }
+    }
+
+    /// Form the bounds from the sets updated at this level: the last phase's and, `with_run`, the run's.
+    /// Valid only where every set would take the quiet-interval path at the next level (armed, no full
+    /// updates left) and, with a ground (`clearance`), has a least clearance in every span (else a level's
+    /// clearance would be its first). No peak is NaN (a peak is replaced only by a value that compares
+    /// above it), so the least and largest of them are the sets' own values.
+    fn form(&mut self, phase: &PeakSet, run: Option<&PeakSet>, clearance: bool) {
+        self.valid = false;
+        self.with_run = run.is_some();
+        let sets = [Some(phase), run];
+        for s in sets.iter().flatten() {
+            if !s.quiet.armed || s.full_for.0 != 0 {
+                return;
+            }
+            if clearance && s.spans.iter().any(|p| p.least_clearance.is_none()) {
+                return;
+            }
+        }
+        let inf = f64::INFINITY;
+        self.tension = inf;
+        self.spans.fill([inf, -inf]);
+        self.lo.fill(-inf);
+        self.hi.fill(inf);
+        self.supports.fill([inf; 4]);
+        for s in sets.iter().flatten() {
+            self.tension = self.tension.min(s.max_tension.value_n);
+            for (b, p) in self.spans.iter_mut().zip(&s.spans) {
+                b[0] = b[0].min(p.max_tension.value_n);
+                b[1] = b[1].max(p.least_clearance.map_or(-inf, |l| l.value_m));
+            }
+            for (b, &q) in self.lo.iter_mut().zip(s.quiet.lo.as_flattened()) {
+                *b = b.max(q);
+            }
+            for (b, &q) in self.hi.iter_mut().zip(s.quiet.hi.as_flattened()) {
+                *b = b.min(q);
+            }
+            for (b, p) in self.supports.iter_mut().zip(&s.supports) {
+                b[0] = b[0].min(p.magnitude.value_n);
+                for k in 0..3 {
+                    b[k + 1] = b[k + 1].min(p.components[k].value_n.abs());
+                }
+            }
+        }
+        self.valid = true;
+    }
+
+    /// Whether the level `c` lies within the bounds: then in every set it would change no peak, rise,
+    /// fall, crossing, tension or clearance and only be recorded as the crossings' last level (the
+    /// swings aside). Each test is the negation of the update's own comparison against the least
+    /// (largest) of the sets' peaks: a value that does not pass it passes none of theirs, NaN included.
+    // `!(a > b)`, not `a <= b`: true where the update's `a > b` is false, NaN included.
+    #[allow(clippy::neg_cmp_op_on_partial_ord)]
+    #[inline(always)]
+    /// Also returns whether every probe component has a sign (is not zero; an admitted value is not NaN).
+    fn admits(&self, c: &Current) -> (bool, bool) {
+        let mut ok = !(c.tension > self.tension);
+        for (&(tension, clearance), b) in c.spans.iter().zip(&self.spans) {
+            ok &= !(tension > b[0]);
+            if let Some(x) = clearance {
+                ok &= !(x < b[1]);
+            }
+        }
+        for (((_, f), &m), b) in c.forces.iter().zip(&c.magnitudes).zip(&self.supports) {
+            ok &= !(m > b[0]) & !(f[0].abs() > b[1]) & !(f[1].abs() > b[2]) & !(f[2].abs() > b[3]);
+        }
+        let n = self.lo.len();
+        let (lo, hi, d) = (&self.lo[..n], &self.hi[..n], &c.disp.as_flattened()[..n]);
+        let mut signed = true;
+        for j in 0..n {
+            ok &= (lo[j] <= d[j]) & (d[j] <= hi[j]);
+            signed &= d[j] != 0.0;
+        }
+        (ok, signed)
+    }
+
+    /// Keep the admitted level at `t` [s] with the displacements `d` [m] as each component's last with a
+    /// sign, what [`Crossings::record`] would do in every set. Where every component has a sign
+    /// (`signed`, nearly every level), the level is the last of every component: it is kept whole by
+    /// swapping `d`'s buffer with `level_d` (the caller writes every entry of `d` again before it is
+    /// next read), and moved into the per-component records only before a level with a zero component
+    /// is recorded or the records are given ([`Gate::settle_level`]).
+    #[inline(always)]
+    fn record(&mut self, t: f64, d: &mut Vec<[f64; 3]>, signed: bool) {
+        self.pending = true;
+        if signed {
+            std::mem::swap(&mut self.level_d, d);
+            self.level_t = t;
+            self.level_pending = true;
+            return;
+        }
+        self.settle_level();
+        let n = self.last_d.len();
+        let (lt, ld, d) = (&mut self.last_t[..n], &mut self.last_d[..n], &d.as_flattened()[..n]);
+        for j in 0..n {
+            if d[j].abs() > 0.0 {
+                (lt[j], ld[j]) = (t, d[j]);
+            }
+        }
+    }
+
+    /// Move the level kept whole into the per-component records: it is the last of every component.
+    fn settle_level(&mut self) {
+        if self.level_pending {
+            for ((lt, ld), &x) in self.last_t.iter_mut().zip(&mut self.last_d).zip(self.level_d.as_flattened()) {
+                (*lt, *ld) = (self.level_t, x);
+            }
+            self.level_pending = false;
+        }
+    }
+
+    /// Give the sets the gate admitted levels for (the last phase's and, if it was one of them, the run's)
+    /// each component's last admitted level with a sign as their crossings' last: the state the records
+    /// at every admitted level would have left (each overwrites the last with a value with a sign), before
+    /// a set is updated, ends or is read.
+    fn give(&mut self, phase: &mut PeakSet, run: &mut PeakSet) {
+        if !self.pending {
+            return;
+        }
+        self.settle_level();
+        for set in [Some(phase), self.with_run.then_some(run)].into_iter().flatten() {
+            for (c, (&lt, &ld)) in set.crossings.as_flattened_mut().iter_mut().zip(self.last_t.iter().zip(&self.last_d))
+            {
+                if ld != 0.0 {
+                    (c.last_t, c.last_d) = (lt, ld);
+                }
+            }
+        }
+        self.last_d.fill(0.0);
+        self.pending = false;
     }
 }
 
@@ -548,6 +745,11 @@ pub struct Peaks {
     /// seen the same levels since, so their updates are the same operations on the same values and one
     /// set is updated for both (`run` is stale then; it is the phase's until the next phase begins)
     run_is_phase: bool,
+    /// the bounds under which a level changes no set but for the crossings' last levels ([`Gate`])
+    gate: Gate,
+    /// levels the gate admitted (for the tests)
+    #[cfg(test)]
+    admitted: usize,
 }
 
 /// The tracked values at one time level.
@@ -557,10 +759,13 @@ struct Current {
     tau: f64,
     /// largest segment tension [N]
     tension: f64,
-    /// probe displacements [m]
+    /// probe displacements [m] (every entry written at every level: after a level the gate admitted, the
+    /// buffer holds an earlier level's, swapped into [`Gate::record`])
     disp: Vec<[f64; 3]>,
     /// support forces [N]
     forces: Vec<(usize, [f64; 3])>,
+    /// their magnitudes `|F| = sqrt(f1^2 + f2^2 + f3^2)` [N], formed once for every set
+    magnitudes: Vec<f64>,
     /// string swings per support (`None` without a string; the list is empty where the wire has no
     /// strings): the arguments `[y, x]` of the angle along, `atan2(y, x)` [m], and the angle across [deg]
     swings: Vec<Option<([f64; 2], f64)>>,
@@ -611,10 +816,18 @@ impl Peaks {
             supports,
             spans,
             ground,
-            current: Current { disp: vec![[0.0; 3]; n], spans: Vec::with_capacity(k), ..Default::default() },
+            current: Current {
+                disp: vec![[0.0; 3]; n],
+                magnitudes: vec![0.0; supports],
+                spans: vec![(0.0, None); k],
+                ..Default::default()
+            },
             phase_updated: false,
             run_started: false,
             run_is_phase: false,
+            gate: Gate::sized(n, supports, k),
+            #[cfg(test)]
+            admitted: 0,
         }
     }
 
@@ -631,6 +844,12 @@ impl Peaks {
     pub fn from_s(&self) -> f64 {
         self.from_s
     }
+
+    /// Give the sets the crossings' last levels the gate kept ([`Gate::give`]).
+    fn give_records(&mut self) {
+        let phase = &mut self.phases.last_mut().expect("the first phase exists from the start").peaks;
+        self.gate.give(phase, &mut self.run);
+    }
 }
 
 impl Observer for Peaks {
@@ -644,10 +863,15 @@ impl Observer for Peaks {
             let chord = ((b[0] - a[0]).powi(2) + (b[1] - a[1]).powi(2) + (b[2] - a[2]).powi(2)).sqrt();
             c.band_m = CROSSING_BAND * chord;
         }
+        let x = ProbePoint::coordinates(s.wire());
         for (d, p) in c.disp.iter_mut().zip(&self.probes) {
-            *d = p.displacement(s.wire());
+            *d = p.displacement_in(x);
         }
         s.support_forces(&mut c.forces);
+        // (One entry per support from the start, written in place.)
+        for (m, (_, f)) in c.magnitudes.iter_mut().zip(&c.forces) {
+            *m = (f[0] * f[0] + f[1] * f[1] + f[2] * f[2]).sqrt();
+        }
         let w = s.wire();
         c.swings.clear();
         // Without strings no support has a swing (an empty list pairs with no support in the update).
@@ -659,38 +883,72 @@ impl Observer for Peaks {
             }));
         }
         c.tension = s.max_tension_n();
-        c.spans.clear();
         let phase = self.phases.last_mut().expect("the first phase exists from the start");
         let run_level = c.t >= self.from_s - super::clock::LANDING * s.params().dt_s;
         // A span's largest `|T t|` is at most the wire's largest tension `T_max` (the kernel's, every
         // segment) times `1 + SPAN_BOUND` (module docs): below every peak it could raise, it is not formed.
         let bounded = w.law == LawKind::TensionOnly && c.tension < SPAN_BOUND_BELOW_N;
         let bound = c.tension * (1.0 + SPAN_BOUND);
-        for (k, &(first, last)) in self.spans.iter().enumerate() {
+        let with_run_peaks = run_level && !self.run_is_phase;
+        // (`c.spans` has one entry per span from the start: written in place.)
+        for (((&(first, last), out), p), r) in
+            self.spans.iter().zip(&mut c.spans).zip(&phase.peaks.spans).zip(&self.run.spans)
+        {
             let clearance = self.ground.as_ref().map(|g| g.least_clearance_m(&w.x, first..=last));
-            let mut least_peak = phase.peaks.spans[k].max_tension.value_n;
-            if run_level && !self.run_is_phase {
-                least_peak = least_peak.min(self.run.spans[k].max_tension.value_n);
+            let mut least_peak = p.max_tension.value_n;
+            if with_run_peaks {
+                least_peak = least_peak.min(r.max_tension.value_n);
             }
             let tension = if bounded && bound < least_peak { f64::NEG_INFINITY } else { s.max_tension_in(first..last) };
-            c.spans.push((tension, clearance));
+            *out = (tension, clearance);
         }
+        let mut with_run = false;
         if !self.run_is_phase && run_level {
             if !self.run_started && !self.phase_updated {
                 // The run's peaks begin at this level, as the phase's did: from here on they are the
                 // phase's (until the next phase begins, `event`).
                 self.run_is_phase = true;
             } else {
-                self.run.update(c);
+                with_run = true;
             }
             self.run_started = true;
         }
-        phase.peaks.update(c);
+        let gate = &mut self.gate;
+        let (admitted, signed) = if gate.valid && gate.with_run == with_run { gate.admits(c) } else { (false, false) };
+        if admitted {
+            // Every set updated at this level would only record it (module docs): once for all of them.
+            gate.record(c.t, &mut c.disp, signed);
+            if !c.swings.is_empty() {
+                if with_run {
+                    self.run.update_swings(c.t, c.tau, &c.swings);
+                }
+                phase.peaks.update_swings(c.t, c.tau, &c.swings);
+            }
+            #[cfg(test)]
+            {
+                self.admitted += 1;
+            }
+        } else {
+            gate.give(&mut phase.peaks, &mut self.run);
+            if with_run {
+                self.run.update(c);
+            }
+            phase.peaks.update(c);
+            gate.form(&phase.peaks, with_run.then_some(&self.run), self.ground.is_some());
+        }
         self.phase_updated = true;
         Ok(Control::Continue)
     }
 
+    fn finish(&mut self, _level: &Level, _ending: &crate::observer::Ending) -> Result<(), OutputError> {
+        self.give_records();
+        Ok(())
+    }
+
     fn event(&mut self, t_s: f64, what: &str) {
+        // The sets the gate was formed for end or change here.
+        self.give_records();
+        self.gate.valid = false;
         let last = self.phases.last_mut().expect("the first phase exists from the start");
         if self.run_is_phase {
             // The phase ends or starts afresh: the run's peaks go on from its values.
@@ -780,11 +1038,12 @@ mod tests {
     /// every value formed, whether they are kept apart or shared with the last phase (from an event at
     /// `from_s`, from the first level, from a later event, across several events), the crossings' and
     /// origins' state too; the phases' peaks likewise, though the spans' largest tensions are left out
-    /// where the wire's bounds them below the peaks.
+    /// where the wire's bounds them below the peaks; and with the levels the gate admits only recorded
+    /// once for both sets ([`Gate`]), the crossings' last levels given to them afterwards.
     #[test]
     fn run_peaks_shared_with_a_phase_are_the_separately_updated_ones() {
         use crate::scheme::configs::Config;
-        let mut skipped = 0;
+        let (mut skipped, mut admitted) = (0, 0);
         // (from_s, event levels)
         for (from_s, events) in [
             (0.0, vec![]),
@@ -802,7 +1061,7 @@ mod tests {
             let mut peaks = Peaks::new(from_s, probes, supports, vec![(0, 20), (20, 40)], None);
             let mut reference = PeakSet::sized(2, supports, 2);
             let mut phase = PeakSet::sized(2, supports, 2);
-            for n in 0..400 {
+            for n in 0..2000 {
                 let t = s.time_s();
                 if events.contains(&n) {
                     peaks.event(t, "event");
@@ -814,19 +1073,65 @@ mod tests {
                 peaks.observe(&Level { solver: &s, t_s: t, tau_per_s: 1.0 }).unwrap();
                 // Every value formed, the spans' largest tensions too.
                 let mut all = peaks.current.clone();
+                // (The gate may have swapped the level's displacements into its record: formed again.)
+                all.disp = peaks.probes.iter().map(|p| p.displacement(s.wire())).collect();
                 skipped += all.spans.iter().filter(|p| p.0 == f64::NEG_INFINITY).count();
                 all.spans = vec![(s.max_tension_in(0..20), None), (s.max_tension_in(20..40), None)];
                 if t >= from_s - crate::output::clock::LANDING * dt {
                     reference.update(&all);
                 }
                 phase.update(&all);
-                assert_eq!(peaks.run(), &reference, "from {from_s}, events {events:?}, level {n}");
-                assert_eq!(&peaks.phases.last().unwrap().peaks, &phase, "from {from_s}, events {events:?}, level {n}");
+                // The crossings' last levels the gate keeps, given to copies of the sets (the sets get them
+                // only before they are updated, end or are read, so they accumulate over admitted levels).
+                let (mut last, mut run) = (peaks.phases.last().unwrap().peaks.clone(), peaks.run.clone());
+                peaks.gate.clone().give(&mut last, &mut run);
+                let run = if peaks.run_is_phase { &last } else { &run };
+                assert_eq!(run, &reference, "from {from_s}, events {events:?}, level {n}");
+                assert_eq!(&last, &phase, "from {from_s}, events {events:?}, level {n}");
                 s.step(dt).unwrap();
             }
             assert_eq!(peaks.phases.len(), 1 + events.iter().filter(|&&n| n > 0).count());
+            admitted += peaks.admitted;
         }
         assert!(skipped > 0, "no span's largest tension was left out");
+        assert!(admitted > 50, "the gate admitted {admitted} levels");
+    }
+
+    /// The gate's records ([`Gate::record`], [`Gate::give`]) leave every crossing's last level as the
+    /// per-level records do: levels without zeros (kept whole, buffers swapped), a component zero
+    /// throughout half of them and every one now and then (the level kept whole moved into the
+    /// per-component records first), given at irregular intervals to two sets.
+    #[test]
+    fn gate_records_are_the_per_level_records() {
+        let mut r: u64 = 11;
+        let mut next = move || {
+            r = r.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            (r >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let mut gate = Gate::sized(2, 0, 0);
+        gate.with_run = true;
+        let (mut phase, mut run) = (PeakSet::sized(2, 0, 0), PeakSet::sized(2, 0, 0));
+        let (mut phase_ref, mut run_ref) = (phase.clone(), run.clone());
+        let mut disp = vec![[0.0; 3]; 2];
+        let (mut zeros, mut whole) = (0, 0);
+        for n in 0..5000 {
+            let t = n as f64 * 0.01;
+            for (j, d) in disp.iter_mut().flatten().enumerate() {
+                // component 4 zero throughout the first half, each now and then
+                *d = if (j == 4 && n < 2500) || next() < 0.01 { 0.0 } else { next() - 0.5 };
+            }
+            let signed = disp.as_flattened().iter().all(|&x| x != 0.0);
+            (zeros, whole) = (zeros + usize::from(!signed), whole + usize::from(signed));
+            for set in [&mut phase_ref, &mut run_ref] {
+                record_all(&mut set.crossings, t, &disp);
+            }
+            gate.record(t, &mut disp, signed);
+            if next() < 0.1 {
+                gate.give(&mut phase, &mut run);
+                assert_eq!((&phase.crossings, &run.crossings), (&phase_ref.crossings, &run_ref.crossings), "level {n}");
+            }
+        }
+        assert!(zeros > 2500 && whole > 1000, "{zeros} levels with a zero, {whole} without");
     }
 
     /// A string's swing peaks with the angle along formed only where it could pass the peak are those
@@ -852,8 +1157,13 @@ mod tests {
         for (n, &(y, x)) in levels.iter().enumerate() {
             let t = n as f64;
             let across = (n % 7) as f64 - 3.0;
-            let c =
-                Current { t, forces: vec![(0, [0.0; 3])], swings: vec![Some(([y, x], across))], ..Default::default() };
+            let c = Current {
+                t,
+                forces: vec![(0, [0.0; 3])],
+                magnitudes: vec![0.0],
+                swings: vec![Some(([y, x], across))],
+                ..Default::default()
+            };
             set.update(&c);
             let along = y.atan2(x).to_degrees();
             for (k, a) in [along, across].into_iter().enumerate() {

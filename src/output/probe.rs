@@ -93,17 +93,39 @@ impl ProbePoint {
 
     /// Position of the point [m].
     pub fn position(&self, wire: &Wire) -> [f64; 3] {
-        let (j, w) = (self.segment, self.weight);
-        if w == 0.0 {
-            return wire.position(j);
-        }
-        let (a, b) = (wire.position(j), wire.position(j + 1));
-        [0, 1, 2].map(|k| (1.0 - w) * a[k] + w * b[k])
+        self.position_in(Self::coordinates(wire))
     }
 
     /// Displacement from the chord point at the same fraction [m].
     pub fn displacement(&self, wire: &Wire) -> [f64; 3] {
-        let p = self.position(wire);
+        self.displacement_in(Self::coordinates(wire))
+    }
+
+    /// The wire's node coordinates `x_1, x_2, x_3` [m], each sliced to the nodes: a caller that follows
+    /// several probes slices them once, and one test of a node's index bounds its reads in all three.
+    #[inline(always)]
+    pub fn coordinates(wire: &Wire) -> [&[f64]; 3] {
+        let n = wire.nodes();
+        [&wire.x[0][..n], &wire.x[1][..n], &wire.x[2][..n]]
+    }
+
+    /// [`ProbePoint::position`] from the coordinates `x` ([`ProbePoint::coordinates`]).
+    #[inline(always)]
+    pub fn position_in(&self, x: [&[f64]; 3]) -> [f64; 3] {
+        let (j, w) = (self.segment, self.weight);
+        let [x1, x2, x3] = x;
+        let a = [x1[j], x2[j], x3[j]];
+        if w == 0.0 {
+            return a;
+        }
+        let b = [x1[j + 1], x2[j + 1], x3[j + 1]];
+        [(1.0 - w) * a[0] + w * b[0], (1.0 - w) * a[1] + w * b[1], (1.0 - w) * a[2] + w * b[2]]
+    }
+
+    /// [`ProbePoint::displacement`] from the coordinates `x` ([`ProbePoint::coordinates`]).
+    #[inline(always)]
+    pub fn displacement_in(&self, x: [&[f64]; 3]) -> [f64; 3] {
+        let p = self.position_in(x);
         [0, 1, 2].map(|k| p[k] - self.reference_m[k])
     }
 }

@@ -813,16 +813,19 @@ impl Explicit {
     /// node released since (the list never changes during a run, so output columns stay aligned). At a
     /// static equilibrium their sum is the total external load on the line (weight, wind, uniform load).
     /// Requires [`Explicit::evaluate_forces`] at this level (panics otherwise: internal misuse). Writes
-    /// into `out` (cleared first).
+    /// into `out` (its previous contents replaced).
     pub fn support_forces(&self, out: &mut Vec<(usize, [f64; 3])>) {
         assert!(self.fresh, "support_forces needs evaluate_forces at this time level");
-        out.clear();
-        // (One `extend` from the supports' slice: its length is reserved once, not checked per push. The
-        // arrays are sliced once to the nodes, so that the test of `free[i]` bounds every read of node
-        // `i` in them.)
+        // (Written in place where `out` already has one entry per support, as from the second call of a
+        // caller that keeps it: no length to reserve or store. The arrays are sliced once to the nodes,
+        // so that the test of `free[i]` bounds every read of node `i` in them.)
+        if out.len() != self.supports.len() {
+            out.clear();
+            out.resize(self.supports.len(), (0, [0.0; 3]));
+        }
         let own = self.own_force();
         let free = &self.wire.free[..self.wire.nodes()];
-        out.extend(self.supports.iter().map(|&i| {
+        for (o, &i) in out.iter_mut().zip(&self.supports) {
             let f = if free[i] <= 0.0 {
                 self.node_force3_with(&own, i)
             } else if let Some(&(_, p)) = self.point_force.iter().find(|(n, _)| *n == i) {
@@ -832,8 +835,8 @@ impl Explicit {
                 // Released: no longer held.
                 [0.0; 3]
             };
-            (i, f)
-        }));
+            *o = (i, f);
+        }
     }
 
     /// Length of the last step `dt_{n-1/2}` [s].
