@@ -1103,11 +1103,7 @@ mod tests {
     /// per-component records first), given at irregular intervals to two sets.
     #[test]
     fn gate_records_are_the_per_level_records() {
-        let mut r: u64 = 11;
-        let mut next = move || {
-            r = r.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
-            (r >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut next = crate::test_rng::uniform(11);
         let mut gate = Gate::sized(2, 0, 0);
         gate.with_run = true;
         let (mut phase, mut run) = (PeakSet::sized(2, 0, 0), PeakSet::sized(2, 0, 0));
@@ -1196,11 +1192,7 @@ mod tests {
     /// rounded sum is above or below the exact one), with zeros and infinities.
     #[test]
     fn rounded_edges_keep_the_difference_on_their_side() {
-        let mut r: u64 = 7;
-        let mut next = move || {
-            r = r.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
-            (r >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut next = crate::test_rng::uniform(7);
         let (mut above, mut below) = (0, 0);
         for _ in 0..200_000 {
             let a = (next() - 0.5) * 10f64.powi((next() * 12.0) as i32 - 6);
