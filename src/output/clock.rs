@@ -29,7 +29,7 @@ impl SampleClock {
     /// after `t_s + tol_s`, i.e. at the next level. So the clock never samples twice at one time and never
     /// stops sampling.
     pub fn due(&mut self, t_s: f64, tol_s: f64) -> bool {
-        if t_s < self.next_s - tol_s {
+        if t_s < self.quiet_until_s(tol_s) {
             return false;
         }
         let reached = t_s + tol_s;
@@ -43,6 +43,13 @@ impl SampleClock {
     /// The next sample time [s] (strictly after the last sample's time plus the tolerance).
     pub fn next_s(&self) -> f64 {
         self.next_s
+    }
+
+    /// The level time [s] below which [`SampleClock::due`] with the tolerance `tol_s` [s] is false: its
+    /// own test, `t_s < next - tol_s`.
+    #[inline(always)]
+    pub fn quiet_until_s(&self, tol_s: f64) -> f64 {
+        self.next_s - tol_s
     }
 }
 

@@ -643,10 +643,10 @@ impl Gate {
     /// fall, crossing, tension or clearance and only be recorded as the crossings' last level (the
     /// swings aside). Each test is the negation of the update's own comparison against the least
     /// (largest) of the sets' peaks: a value that does not pass it passes none of theirs, NaN included.
+    /// Also returns whether every probe component has a sign (is not zero; an admitted value is not NaN).
     // `!(a > b)`, not `a <= b`: true where the update's `a > b` is false, NaN included.
     #[allow(clippy::neg_cmp_op_on_partial_ord)]
     #[inline(always)]
-    /// Also returns whether every probe component has a sign (is not zero; an admitted value is not NaN).
     fn admits(&self, c: &Current) -> (bool, bool) {
         let mut ok = !(c.tension > self.tension);
         for (&(tension, clearance), b) in c.spans.iter().zip(&self.spans) {

@@ -244,8 +244,7 @@ impl Observer for Timeseries {
             f.end_row();
             f.commit().map_err(OutputError::at(f.path()))?;
         }
-        // The clock's own test (`t < next - tol`: not due), the same operation on the same numbers.
-        Ok(Control::QuietUntil(self.clock.next_s() - tol))
+        Ok(Control::QuietUntil(self.clock.quiet_until_s(tol)))
     }
 
     fn finish(&mut self, _level: &Level, _ending: &Ending) -> Result<(), OutputError> {

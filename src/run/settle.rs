@@ -60,28 +60,24 @@ impl Observer for Settle {
         // would most likely be open again.
         let threshold = self.fraction * self.peak_j;
         let (lo, hi) = level.solver.kinetic_energy_quick_bounds();
-        let below = match verdict(lo, hi, self.peak_j, threshold) {
-            Some(below) => below,
-            None => {
-                let (lo, hi) = if self.exact_for == 0 {
-                    level.solver.kinetic_energy_half_step_bounds()
-                } else {
-                    self.exact_for -= 1;
-                    (f64::NAN, f64::NAN)
-                };
-                match verdict(lo, hi, self.peak_j, threshold) {
-                    Some(below) => below,
-                    None => {
-                        if !hi.is_nan() {
-                            self.exact_for = RETRY;
-                        }
-                        let ke = level.solver.kinetic_energy_half_step();
-                        self.peak_j = self.peak_j.max(ke);
-                        ke <= self.fraction * self.peak_j
-                    }
-                }
+        let mut below = verdict(lo, hi, self.peak_j, threshold);
+        if below.is_none() {
+            let (lo, hi) = if self.exact_for == 0 {
+                level.solver.kinetic_energy_half_step_bounds()
+            } else {
+                self.exact_for -= 1;
+                (f64::NAN, f64::NAN)
+            };
+            below = verdict(lo, hi, self.peak_j, threshold);
+            if below.is_none() && !hi.is_nan() {
+                self.exact_for = RETRY;
             }
-        };
+        }
+        let below = below.unwrap_or_else(|| {
+            let ke = level.solver.kinetic_energy_half_step();
+            self.peak_j = self.peak_j.max(ke);
+            ke <= self.fraction * self.peak_j
+        });
         if below {
             let since = *self.below_since_s.get_or_insert(level.t_s);
             if level.t_s - since >= self.window_s {
@@ -153,9 +149,8 @@ mod tests {
                     }
                     s.evaluate_forces();
                     let t = s.time_s();
-                    let (lo, hi) = s.kinetic_energy_half_step_bounds();
                     let peak = settle.peak_j;
-                    if hi < peak && (hi <= fraction * peak || lo > fraction * peak) {
+                    if verdict_given(s.kinetic_energy_half_step_bounds(), peak, fraction) {
                         decided += 1;
                     } else {
                         open += 1;

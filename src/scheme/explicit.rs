@@ -385,6 +385,15 @@ unsafe fn kinetic_sum_lanes_of_avx2(m: &[f64], s2: &[f64]) -> f64 {
     kinetic_sum_lanes_of(m, s2)
 }
 
+/// The relative margin `4 n u` (`u = 2^-53`) that the kinetic-energy bounds put around a sum of `n`
+/// non-negative terms formed in another order ([`Explicit::kinetic_energy_half_step_bounds`],
+/// [`Explicit::kinetic_energy_quick_bounds`] derive it); `None` from `4 n u >= 1e-3` (about `2e12` terms),
+/// where the first-order bound it stands for no longer holds.
+fn sum_rounding_margin(n: usize) -> Option<f64> {
+    let delta = 4.0 * n as f64 * f64::EPSILON * 0.5;
+    (delta < 1e-3).then_some(delta)
+}
+
 /// A number not given before in this process ([`Explicit::wire_stamp`]).
 fn next_wire_stamp() -> u64 {
     static NEXT: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(1);
@@ -1232,10 +1241,7 @@ impl Explicit {
         };
         #[cfg(not(target_arch = "x86_64"))]
         let s = if fresh { kinetic_sum_lanes_of(m, s2) } else { kinetic_sum_lanes(m, v1, v2, v3) };
-        let delta = 4.0 * n1 as f64 * f64::EPSILON * 0.5;
-        if !s.is_finite() || delta >= 1e-3 {
-            return (f64::NAN, f64::NAN);
-        }
+        let Some(delta) = sum_rounding_margin(n1).filter(|_| s.is_finite()) else { return (f64::NAN, f64::NAN) };
         (0.5 * (s * (1.0 - delta)), 0.5 * (s * (1.0 + delta)))
     }
 
@@ -1260,10 +1266,7 @@ impl Explicit {
     pub fn kinetic_energy_quick_bounds(&self) -> (f64, f64) {
         let s2 = self.speed2_max;
         let n1 = self.wire.nodes();
-        let delta = 4.0 * n1 as f64 * f64::EPSILON * 0.5;
-        if !s2.is_finite() || delta >= 1e-3 {
-            return (f64::NAN, f64::NAN);
-        }
+        let Some(delta) = sum_rounding_margin(n1).filter(|_| s2.is_finite()) else { return (f64::NAN, f64::NAN) };
         let &(m_min, m_sum) = self.mass_range.get_or_init(|| {
             let m = &self.wire.mass[..n1];
             (m.iter().copied().fold(f64::INFINITY, f64::min), m.iter().sum::<f64>())
