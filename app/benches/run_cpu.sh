@@ -8,6 +8,8 @@
 #
 # usage: app/benches/run_cpu.sh OLD_BINARY NEW_BINARY [REPS] [CSV]   (writes "scenario,old_cpu_s,new_cpu_s,old_over_new")
 # e.g.   app/benches/run_cpu.sh /tmp/ohl-060d9f9 target/release/ohl 5 figures/bench/run_cpu.csv
+# ONLY="name name ..." restricts the runs to those scenarios (file names without .toml), e.g. for a pass
+# with more repetitions of the short runs.
 set -euo pipefail
 old="$(realpath "$1")"
 new="$(realpath "$2")"
@@ -32,6 +34,7 @@ median() { tr ' ' '\n' | grep -v '^$' | sort -g | awk '{ a[NR] = $1 } END { if (
 [ "$csv" = /dev/stdout ] || echo "scenario,old_cpu_s,new_cpu_s,old_over_new" > "$csv"
 for f in cases/*.toml examples/mechanical/*.toml; do
   n="$(basename "$f" .toml)"
+  if [ -n "${ONLY:-}" ] && [[ " $ONLY " != *" $n "* ]]; then continue; fi
   o="" w=""
   for _ in $(seq "$reps"); do
     o="$o $(cpu "$old" "$f")"
