@@ -43,10 +43,16 @@ pub mod sagtension;
 pub mod scenario;
 pub mod scheme;
 pub mod shortcircuit;
+pub mod staggered_alloc;
 pub mod statics;
 pub mod thermal;
 pub mod verify;
 pub mod wire;
+
+/// The unit tests run under the allocator the applications use (`staggered_alloc`), exercising it.
+#[cfg(test)]
+#[global_allocator]
+static ALLOC: staggered_alloc::StaggeredAlloc = staggered_alloc::StaggeredAlloc;
 
 #[cfg(test)]
 mod test_rng;

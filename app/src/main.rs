@@ -24,6 +24,11 @@
 
 mod cli;
 
+/// The kernel's arrays spread over the page (`ohl::staggered_alloc`: otherwise, at some lengths, they
+/// alias in the low address bits; results are bitwise the same).
+#[global_allocator]
+static ALLOC: ohl::staggered_alloc::StaggeredAlloc = ohl::staggered_alloc::StaggeredAlloc;
+
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};

@@ -30,6 +30,7 @@ use crate::conductor::History;
 use crate::element::aero::{Downwind, NoWind, SegmentLoad};
 use crate::element::segment;
 use crate::element::tension::{LawKind, Linear, TensionLaw, TensionOnly, from_order_key, order_key};
+use crate::staggered_alloc;
 use crate::wire::Wire;
 use crate::wire::insulator::Insulator;
 use crate::wire::material::segment_tension;
@@ -524,7 +525,7 @@ impl Explicit {
         let pad = wire.segments() + 2;
         let z = || [vec![0.0; pad], vec![0.0; pad], vec![0.0; pad]];
         let supports = wire.supports().into_iter().map(|(i, _)| i).collect();
-        Explicit {
+        let mut solver = Explicit {
             wire,
             loads,
             params,
@@ -553,7 +554,54 @@ impl Explicit {
             point_scratch: Vec::new(),
             supports,
             isa: detected_isa(),
-        }
+        };
+        solver.spread_arrays();
+        solver
+    }
+
+    /// The arrays the kernel streams, spread evenly over the page ([`staggered_alloc::spread_evenly`]:
+    /// a layout, under the `StaggeredAlloc` global allocator, in which no two of them start within a few
+    /// doubles of each other modulo 4 KiB, where the processor takes loads for stores they are not).
+    fn spread_arrays(&mut self) {
+        staggered_alloc::spread_evenly(&mut self.kernel_arrays());
+    }
+
+    /// The arrays the kernel's loops stream, in the order [`Self::spread_arrays`] places them.
+    fn kernel_arrays(&mut self) -> [&mut Vec<f64>; 26] {
+        let w = &mut self.wire;
+        let [x1, x2, x3] = &mut w.x;
+        let [v1, v2, v3] = &mut w.v;
+        let [f1, f2, f3] = &mut self.fs;
+        let [e1, e2, e3] = &mut self.es;
+        let [w1, w2] = &mut w.smoothing_weight;
+        [
+            x1,
+            x2,
+            x3,
+            v1,
+            v2,
+            v3,
+            f1,
+            f2,
+            f3,
+            e1,
+            e2,
+            e3,
+            &mut self.seg_len,
+            &mut self.inv_rest_length,
+            &mut self.speed2,
+            &mut w.inv_mass,
+            &mut w.free,
+            &mut w.exposed,
+            &mut w.axial_stiffness_n,
+            &mut w.internal_friction_n_s,
+            &mut w.intact,
+            &mut w.reference_length,
+            &mut w.wind_diameter_factor,
+            &mut w.mass,
+            w1,
+            w2,
+        ]
     }
 
     /// Advance by one step of length `dt` [s] (at most the nominal step; shorter to land on a time).
@@ -1892,6 +1940,30 @@ mod tests {
         assert!(!s.wire.uniform_smoothing);
         cases.push(("weighted smoothing".into(), s));
         cases
+    }
+
+    /// The kernel's arrays start spread evenly over the page (the unit tests run under
+    /// `StaggeredAlloc`): the `i`-th of the 26 arrays long enough to be placed at `64 floor(64 i / 26)`
+    /// bytes modulo 4 KiB, at a length (1025 doubles, N = 1024) where the system allocator would start
+    /// them all within a few cache lines of each other. The steps after it are those of any solver.
+    #[test]
+    fn kernel_arrays_are_spread_over_the_page() {
+        let mut s = Config::Wind3d.solver(1024);
+        s.params.smoothing = 0.02;
+        let mut slot = 0;
+        let arrays = s.kernel_arrays();
+        let m = arrays.len();
+        for (i, a) in arrays.into_iter().enumerate() {
+            if a.len() * 8 < staggered_alloc::MIN_SIZE {
+                continue;
+            }
+            assert_eq!(a.as_ptr() as usize % staggered_alloc::PAGE, 64 * (64 * slot / m), "array {i}");
+            slot += 1;
+        }
+        assert!(slot >= 24, "only {slot} arrays placed");
+        for _ in 0..10 {
+            s.step(s.params.dt_s).unwrap();
+        }
     }
 
     /// The passes' shortcuts for a plain wire (every segment intact at the conductor's diameter: the

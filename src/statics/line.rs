@@ -58,7 +58,10 @@ pub fn solve_line(line: &mut LineExplicit, opts: &StaticOptions) -> Result<Stati
         return first;
     }
     for (c, x) in wires.into_iter().enumerate() {
-        line.conductor_mut(c).wire_mut().x = x;
+        // Copied into the wire's own arrays, which keep their place (`staggered_alloc`).
+        for (to, from) in line.conductor_mut(c).wire_mut().x.iter_mut().zip(&x) {
+            to.copy_from_slice(from);
+        }
     }
     for (s, p) in supports.into_iter().enumerate() {
         line.set_support_position(s, p);

@@ -17,6 +17,10 @@ use std::process::ExitCode;
 use verification::report::{Budget, full_report};
 use verification::studies::{STUDIES, Study, find, run_study};
 
+/// The kernel's arrays spread over the page (`ohl::staggered_alloc`; results are bitwise the same).
+#[global_allocator]
+static ALLOC: ohl::staggered_alloc::StaggeredAlloc = ohl::staggered_alloc::StaggeredAlloc;
+
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let mut budget = Budget::Full;
