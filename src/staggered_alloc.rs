@@ -21,9 +21,10 @@
 //! with or without it; only the time changes.
 //!
 //! A binary opts in with
-//! ```ignore
+//! ```no_run
 //! #[global_allocator]
 //! static ALLOC: ohl::staggered_alloc::StaggeredAlloc = ohl::staggered_alloc::StaggeredAlloc;
+//! # fn main() {}
 //! ```
 //! (the `ohl` command, the `verify` harness and the Python extension do).
 

@@ -548,3 +548,15 @@ fn a_load_case_refuses_to_guess_and_prints_a_valid_scenario_when_complete() {
     let k = plan.solver.wire().wind_diameter_factor[0];
     assert_eq!(k, (0.02814 + 0.025) / 0.02814);
 }
+
+/// `ohl bench --fixed` past the episode length that keeps an undamped configuration stable (plane_weight
+/// at N = 5000 goes unstable near step 3730, docs/paper_notes.md): an error naming the time and node, exit
+/// code 1 as for an unstable run, not a panic.
+#[test]
+fn bench_fixed_beyond_an_episode_reports_the_instability() {
+    let (code, _out, err) = ohl(&["bench", "--fixed", "plane_weight:5000:6000"]);
+    assert_eq!(code, 1, "{err}");
+    assert!(err.contains("unstable at t =") && err.contains("node"), "{err}");
+    assert!(err.contains("4000 steps"), "{err}");
+    assert!(!err.contains("panicked"), "{err}");
+}

@@ -97,7 +97,17 @@ fn fixed(spec: &str) -> ExitCode {
     };
     match parsed {
         Some(((c, n), steps)) if n >= 2 => {
-            let s = bench::run_fixed_steps(c, n, steps);
+            let s = match bench::run_fixed_steps(c, n, steps) {
+                Ok(s) => s,
+                Err(e) => {
+                    err!(
+                        "error: --fixed {spec}: {e} (undamped runs longer than one episode of `ohl bench`, {} steps, \
+                         can go unstable)",
+                        bench::EPISODE_STEPS
+                    );
+                    return ExitCode::from(1);
+                }
+            };
             out!(
                 "{} N = {n}: {} steps, t = {:.6e} s, x3[N/2] = {:.15e} m, state hash {:016x}",
                 c.name(),
