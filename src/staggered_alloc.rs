@@ -58,12 +58,15 @@ pub struct StaggeredAlloc;
 /// arrays starts at `64 floor(64 i / m)` bytes within the page: the arrays of one kernel spread evenly
 /// over the page, neighbours `4096 / m` bytes apart (about 20 doubles for a wire's 26 arrays) instead
 /// of wherever their lengths and allocation order put them. Contents and lengths are unchanged; under
-/// another global allocator it only copies the arrays. Arrays shorter than [`MIN_SIZE`] bytes stay
-/// where the system allocator puts them, and the slots of the ones skipped stay free. An array later
-/// replaced by a new `Vec` (rather than written in place) loses its place.
+/// another global allocator it only copies the arrays. Arrays shorter than [`MIN_SIZE`] bytes are left
+/// where they are (not copied), and the slots of the ones skipped stay free. An array later replaced by
+/// a new `Vec` (rather than written in place) loses its place.
 pub fn spread_evenly(arrays: &mut [&mut Vec<f64>]) {
     SPREAD.with(|s| s.set((0, arrays.len())));
     for a in arrays.iter_mut() {
+        if std::mem::size_of_val(a.as_slice()) < MIN_SIZE {
+            continue;
+        }
         let mut fresh = Vec::with_capacity(a.len());
         fresh.extend_from_slice(a);
         **a = fresh;

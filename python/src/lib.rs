@@ -22,11 +22,11 @@ mod thermal;
 
 use pyo3::prelude::*;
 
-/// The Rust extension of the `ohl` package (use `import ohl`, not this module).
 /// The kernel's arrays spread over the page (`ohl::staggered_alloc`; results are bitwise the same).
 #[global_allocator]
 static ALLOC: ohl::staggered_alloc::StaggeredAlloc = ohl::staggered_alloc::StaggeredAlloc;
 
+/// The Rust extension of the `ohl` package (use `import ohl`, not this module).
 #[pymodule]
 fn _ohl(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<scenario::Scenario>()?;

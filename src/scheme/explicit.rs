@@ -1954,7 +1954,7 @@ mod tests {
         let arrays = s.kernel_arrays();
         let m = arrays.len();
         for (i, a) in arrays.into_iter().enumerate() {
-            if a.len() * 8 < staggered_alloc::MIN_SIZE {
+            if std::mem::size_of_val(a.as_slice()) < staggered_alloc::MIN_SIZE {
                 continue;
             }
             assert_eq!(a.as_ptr() as usize % staggered_alloc::PAGE, 64 * (64 * slot / m), "array {i}");
