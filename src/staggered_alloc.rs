@@ -187,6 +187,29 @@ unsafe impl GlobalAlloc for StaggeredAlloc {
             // SAFETY: a system block of `layout` that stays one.
             return unsafe { System.realloc(ptr, layout, new_size) };
         }
+        if large(layout) && large(new_layout) {
+            // SAFETY: a large block: its header names its system allocation.
+            let (raw, outer) = unsafe { outer_of(ptr) };
+            if ptr as usize - raw as usize == HEADER {
+                // Not placed (the block follows its header): the system allocation grows or shrinks with
+                // it, header and all, and the header is written again for the new one.
+                let Some(size) = new_size.checked_add(HEADER) else { return std::ptr::null_mut() };
+                // SAFETY: `raw` was allocated by `System` with `outer`; `size` is non-zero and, with
+                // `outer`'s alignment, a valid layout (checked above for overflow; far below `isize::MAX`
+                // for any allocation that succeeds).
+                unsafe {
+                    let grown = System.realloc(raw, outer, size);
+                    if grown.is_null() {
+                        return grown;
+                    }
+                    let block = grown.add(HEADER);
+                    let header = block.cast::<usize>().sub(2);
+                    header.write(grown as usize);
+                    header.add(1).write(size);
+                    return block;
+                }
+            }
+        }
         // SAFETY: a new block of the new layout (never placed: growth is not a kernel's array), the
         // common prefix copied, the old block freed with its own layout.
         unsafe {
@@ -224,10 +247,16 @@ mod tests {
             unsafe { p.write_bytes(i as u8, layout.size()) };
         }
         for (i, &p) in blocks.iter().enumerate() {
-            // SAFETY: as above.
+            // SAFETY: as above; every other block is grown first (a placed block moves to a plain one).
             unsafe {
                 assert!(std::slice::from_raw_parts(p, layout.size()).iter().all(|&b| b == i as u8));
-                a.dealloc(p, layout);
+                if i % 2 == 0 {
+                    a.dealloc(p, layout);
+                } else {
+                    let q = a.realloc(p, layout, 3 * layout.size());
+                    assert!(std::slice::from_raw_parts(q, layout.size()).iter().all(|&b| b == i as u8));
+                    a.dealloc(q, Layout::array::<f64>(3 * 1025).unwrap());
+                }
             }
         }
         // SAFETY: as above.
@@ -241,7 +270,8 @@ mod tests {
     }
 
     /// Blocks of every class around the threshold: the alignment asked, zeroed when asked, contents kept
-    /// through `realloc` across the threshold both ways.
+    /// through `realloc` across the threshold both ways and within the large class (the system's
+    /// `realloc` under the header).
     #[test]
     fn blocks_are_aligned_and_round_trip() {
         let a = StaggeredAlloc;
@@ -254,7 +284,7 @@ mod tests {
                 assert_eq!(p as usize % align, 0, "size {size} align {align}");
                 assert!(std::slice::from_raw_parts(p, size).iter().all(|&b| b == 0));
                 a.dealloc(p, layout);
-                for &new_size in &[size / 2 + 1, size * 3, 100, 2500] {
+                for &new_size in &[size / 2 + 1, size * 3, 100, 2500, 100_000] {
                     let p = a.alloc(layout);
                     for i in 0..size {
                         p.add(i).write((i % 251) as u8);
