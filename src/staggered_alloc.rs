@@ -59,8 +59,9 @@ pub struct StaggeredAlloc;
 /// over the page, neighbours `4096 / m` bytes apart (about 20 doubles for a wire's 26 arrays) instead
 /// of wherever their lengths and allocation order put them. Contents and lengths are unchanged; under
 /// another global allocator it only copies the arrays. Arrays shorter than [`MIN_SIZE`] bytes are left
-/// where they are (not copied), and the slots of the ones skipped stay free. An array later replaced by
-/// a new `Vec` (rather than written in place) loses its place.
+/// where they are (not copied); the ones moved take the slots `i = 0, 1, ...` in order, so with some
+/// skipped the last slots stay free. An array later replaced by a new `Vec` (rather than written in
+/// place) loses its place.
 pub fn spread_evenly(arrays: &mut [&mut Vec<f64>]) {
     SPREAD.with(|s| s.set((0, arrays.len())));
     for a in arrays.iter_mut() {
