@@ -9,8 +9,9 @@
 //! The system allocator places a run of equal-sized arrays one chunk apart, so the offsets depend on
 //! the array length: with 1025 doubles (N = 1024) every chunk is 8208 bytes, 16 bytes past two pages,
 //! and all of the arrays start within a few cache lines of each other (figures/bench/README.md, issue
-//! 27's seventh round, measured on a Zen 3: 1.9e8 node-steps/s at N = 1024 against 3.0e8 at N = 1100,
-//! and 1.4-1.8e8 at every N when every array is page-aligned).
+//! 27's seventh round, measured on a Zen 3: 1.8e8 node-steps/s at N = 1024 against 2.4-2.8e8 at N = 1000,
+//! 1100, 1500, 2000, and 1.5-1.8e8 at every N when every array is page-aligned;
+//! `figures/bench/issue27_r7_page_aligned.log`).
 //!
 //! [`spread_evenly`] moves a kernel's arrays into fresh allocations; under [`StaggeredAlloc`] the
 //! `i`-th of `m` of them then starts `64 floor(64 i / m)` bytes into a page, so no two start within
