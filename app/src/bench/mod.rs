@@ -71,14 +71,36 @@ pub fn run_fixed_steps(config: Config, n: usize, steps: usize) -> Result<Explici
     Ok(s)
 }
 
+/// Run `steps` nominal steps of the workload `w` at `n` segments (per span for a section or line) from
+/// its initial state and return the solver: [`run_fixed_steps`] for every workload of `ohl bench`
+/// (`ohl bench --fixed`, the workload `app/benches/executed_limit.py` counts). An instability is
+/// returned as its message.
+pub fn run_fixed_workload(w: Workload, n: usize, steps: usize) -> Result<workload::Solver, String> {
+    if let Workload::Kernel(c) = w {
+        return run_fixed_steps(c, n, steps).map(workload::Solver::Wire).map_err(|e| e.to_string());
+    }
+    let mut s = w.solver(n);
+    for _ in 0..steps {
+        s.try_step()?;
+    }
+    Ok(s)
+}
+
 /// FNV-1a hash of the bit patterns of every position and velocity: equal hashes mean (up to a 2^-64
 /// chance) bitwise identical states, the check that an optimised kernel computes what the old one did.
 pub fn state_hash(s: &Explicit) -> u64 {
+    wires_hash(&[s.wire()])
+}
+
+/// [`state_hash`] of several wires, one after the other (every conductor of a line).
+pub fn wires_hash(wires: &[&ohl::wire::Wire]) -> u64 {
     let mut h: u64 = 0xcbf2_9ce4_8422_2325;
-    for a in s.wire().x.iter().chain(&s.wire().v) {
-        for v in a {
-            for b in v.to_bits().to_le_bytes() {
-                h = (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3);
+    for w in wires {
+        for a in w.x.iter().chain(&w.v) {
+            for v in a {
+                for b in v.to_bits().to_le_bytes() {
+                    h = (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3);
+                }
             }
         }
     }
@@ -690,6 +712,27 @@ mod tests {
             }
             assert_eq!(Config::from_name(c.name()), Some(c));
         }
+    }
+
+    /// `ohl bench --fixed` on every workload: a kernel configuration is `run_fixed_steps` (the hash the
+    /// scripts have always printed), a section or a line steps its solver; the line's hash covers every
+    /// conductor, in order, so it differs from the first conductor's alone, and 0 steps leaves the
+    /// initial state.
+    #[test]
+    fn fixed_workloads_step_the_solver_of_every_workload() {
+        let k = run_fixed_workload(Workload::Kernel(Config::Wind3d), 20, 50).unwrap();
+        let direct = run_fixed_steps(Config::Wind3d, 20, 50).unwrap();
+        assert_eq!(wires_hash(&k.wires()), state_hash(&direct));
+        let w = Workload::ShortCircuit { forces: false };
+        let (start, stepped) = (run_fixed_workload(w, 10, 0).unwrap(), run_fixed_workload(w, 10, 30).unwrap());
+        assert_eq!(wires_hash(&start.wires()), wires_hash(&w.solver(10).wires()));
+        assert_eq!(stepped.nodes(), 33);
+        // (30 additions of dt: equal to 30 dt up to their roundings, a few eps each.)
+        assert!((stepped.time_s() - 30.0 * stepped.dt_s()).abs() <= 1e-13 * stepped.time_s());
+        let wires = stepped.wires();
+        assert_eq!(wires.len(), 3);
+        assert_ne!(wires_hash(&wires), wires_hash(&wires[..1]));
+        assert_ne!(wires_hash(&wires), wires_hash(&start.wires()));
     }
 
     #[test]

@@ -233,14 +233,36 @@ impl Solver {
 
     /// One nominal step; panics if it goes unstable (for these workloads a bug).
     pub fn step(&mut self, what: &str) {
+        self.try_step().unwrap_or_else(|e| panic!("{what}: {e}"));
+    }
+
+    /// One nominal step, or the instability's message.
+    pub fn try_step(&mut self) -> Result<(), String> {
         let dt = self.dt_s();
         match self {
-            Solver::Wire(s) => s.step(dt).unwrap_or_else(|e| panic!("{what}: {e}")),
-            Solver::Line(l) => l.step(dt).unwrap_or_else(|e| panic!("{what}: {e}")),
+            Solver::Wire(s) => s.step(dt).map_err(|e| e.to_string()),
+            Solver::Line(l) => l.step(dt).map_err(|e| e.to_string()),
             Solver::LineClearances(l, c) => {
-                l.step(dt).unwrap_or_else(|e| panic!("{what}: {e}"));
+                l.step(dt).map_err(|e| e.to_string())?;
                 c.observe(&l.wires(), l.time_s());
+                Ok(())
             }
+        }
+    }
+
+    /// Time reached [s].
+    pub fn time_s(&self) -> f64 {
+        match self {
+            Solver::Wire(s) => s.time_s(),
+            Solver::Line(l) | Solver::LineClearances(l, _) => l.time_s(),
+        }
+    }
+
+    /// The wires stepped, in order (one, or every conductor's).
+    pub fn wires(&self) -> Vec<&ohl::wire::Wire> {
+        match self {
+            Solver::Wire(s) => vec![s.wire()],
+            Solver::Line(l) | Solver::LineClearances(l, _) => l.wires(),
         }
     }
 

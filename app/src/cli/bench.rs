@@ -92,41 +92,52 @@ fn replot(args: &BenchArgs, current: &std::path::Path) -> ExitCode {
 fn fixed(spec: &str) -> ExitCode {
     let parts: Vec<&str> = spec.split(':').collect();
     let parsed = match parts.as_slice() {
-        [c, n, s] => Config::from_name(c).zip(n.parse::<usize>().ok()).zip(s.parse::<usize>().ok()),
+        [c, n, s] => bench::Workload::from_name(c).zip(n.parse::<usize>().ok()).zip(s.parse::<usize>().ok()),
         _ => None,
     };
-    match parsed {
-        Some(((c, n), steps)) if n >= 2 => {
-            let s = match bench::run_fixed_steps(c, n, steps) {
-                Ok(s) => s,
-                Err(e) => {
-                    err!(
-                        "error: --fixed {spec}: {e} (undamped runs longer than one episode of `ohl bench`, {} steps, \
-                         can go unstable)",
-                        bench::EPISODE_STEPS
-                    );
-                    return ExitCode::from(1);
-                }
-            };
-            out!(
-                "{} N = {n}: {} steps, t = {:.6e} s, x3[N/2] = {:.15e} m, state hash {:016x}",
-                c.name(),
-                s.steps(),
-                s.time_s(),
-                s.wire().x[2][n / 2],
-                bench::state_hash(&s)
-            );
-            ExitCode::SUCCESS
+    let Some(((w, n), steps)) = parsed.filter(|((_, n), _)| *n >= 2) else {
+        let mut names: Vec<&str> = Vec::new();
+        for w in bench::workload::WIRE.into_iter().chain(bench::workload::LINE).chain(bench::workload::COSTS) {
+            if !names.contains(&w.name()) {
+                names.push(w.name());
+            }
         }
-        _ => {
-            let names: Vec<&str> = Config::ALL.iter().map(|c| c.name()).collect();
+        err!(
+            "error: --fixed {spec}: expected CONFIG:N:STEPS with CONFIG one of {}, N >= 2 and STEPS >= 0",
+            names.join(", ")
+        );
+        return ExitCode::from(2);
+    };
+    let s = match bench::run_fixed_workload(w, n, steps) {
+        Ok(s) => s,
+        Err(e) => {
             err!(
-                "error: --fixed {spec}: expected CONFIG:N:STEPS with CONFIG one of {}, N >= 2 and STEPS >= 0",
-                names.join(", ")
+                "error: --fixed {spec}: {e} (undamped runs longer than one episode of `ohl bench`, {} steps, can go \
+                 unstable)",
+                bench::EPISODE_STEPS
             );
-            ExitCode::from(2)
+            return ExitCode::from(1);
         }
-    }
+    };
+    let wires = s.wires();
+    let steps_done = match &s {
+        bench::Solver::Wire(e) => e.steps(),
+        bench::Solver::Line(l) | bench::Solver::LineClearances(l, _) => l.steps(),
+    };
+    // (One wire: the line the instruction and CPU scripts have always printed; a line adds its nodes.)
+    let nodes = if wires.len() > 1 || !matches!(w, bench::Workload::Kernel(_)) {
+        format!(", {} nodes", s.nodes())
+    } else {
+        String::new()
+    };
+    out!(
+        "{} N = {n}: {steps_done} steps{nodes}, t = {:.6e} s, x3[N/2] = {:.15e} m, state hash {:016x}",
+        w.name(),
+        s.time_s(),
+        wires[0].x[2][n / 2],
+        bench::wires_hash(&wires)
+    );
+    ExitCode::SUCCESS
 }
 
 /// `ohl bench --costs`: the constants of the line's cost model ([`ohl::scenario::work`]) on this core,
