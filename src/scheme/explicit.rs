@@ -499,6 +499,11 @@ pub struct Explicit {
     /// half the segment load `P / 2` [N], padded like `fs` (between the segment pass's two loops, the
     /// unit tangent `t`)
     es: [Vec<f64>; 3],
+    /// every entry of `es` is `+0.0`: the last segment pass had no distributed load (no wind, `q = 0`),
+    /// whose share `0 * intact / 2` is `+0.0` in every segment, and `es` was filled with it once rather than
+    /// written at every pass. The node pass then leaves `es` and the exposure out: `f + (+0 + +0) ex` is
+    /// `f + 0` exactly for an exposure `ex` of 1 or 0.
+    es_zero: bool,
     /// each segment's length `|r_{i+1} - r_i|` [m] from the segment pass's tension loop for its load loop
     /// (index `j` for segment `j`)
     seg_len: Vec<f64>,
@@ -548,6 +553,7 @@ impl Explicit {
             mass_range: std::sync::OnceLock::new(),
             fs: z(),
             es: z(),
+            es_zero: false,
             seg_len: vec![0.0; pad],
             point_force: Vec::new(),
             external_force: Vec::new(),
@@ -978,6 +984,7 @@ impl Explicit {
         let (eta, intact, kd) = (&w.internal_friction_n_s[..n], &w.intact[..n], &w.wind_diameter_factor[..n]);
         let [fs0, fs1, fs2] = &mut self.fs;
         let [es0, es1, es2] = &mut self.es;
+        self.es_zero = false;
         let (fs0, fs1, fs2) = (&mut fs0[1..=n], &mut fs1[1..=n], &mut fs2[1..=n]);
         let (es0, es1, es2) = (&mut es0[1..=n], &mut es1[1..=n], &mut es2[1..=n]);
         let mut kmax = order_key(0.0);
@@ -1036,6 +1043,17 @@ impl Explicit {
             let w = &self.wire;
             (w.intact.iter().all(|&x| x == 1.0), w.wind_diameter_factor.iter().all(|&k| k == 1.0))
         });
+        // No load: the shares are `+0.0` (`0 * intact / 2`, intact 1 or 0), written into `es` once.
+        if W::ZERO && !UNIFORM {
+            if !self.es_zero {
+                for e in &mut self.es {
+                    e.fill(0.0);
+                }
+                self.es_zero = true;
+            }
+        } else {
+            self.es_zero = false;
+        }
         let w = &self.wire;
         let ea = &w.axial_stiffness_n[..n];
         let eta = &w.internal_friction_n_s[..n];
@@ -1058,11 +1076,8 @@ impl Explicit {
         // instructions fewer per step of plane_weight with both passes, 56.5 -> 38.9 per node-step at
         // N = 50). The operations and their order are the loops' as they were: the same bits.
         if W::ZERO && !UNIFORM {
-            // No load: one loop, the tension and a zero share.
-            let kmax = segment_loop::<L, W, UNIFORM, VISCOUS>(
-                load, q, kmax, x1, x2, x3, v1, v2, v3, inv_l0, ea, eta, intact, lref, dfac, fs1, fs2, fs3, es1, es2,
-                es3,
-            );
+            // No load: one loop, the tension alone (the zero shares are in `es` already).
+            let kmax = segment_loop::<L, VISCOUS>(kmax, x1, x2, x3, v1, v2, v3, inv_l0, ea, eta, intact, fs1, fs2, fs3);
             self.max_tension_n = from_order_key(kmax);
             return;
         }
@@ -1147,12 +1162,16 @@ impl Explicit {
         let [x1, x2, x3] = &mut w.x;
         let (x1, x2, x3) = (&mut x1[..n1], &mut x2[..n1], &mut x3[..n1]);
         // One slice per argument, as in the segment pass (no run-time overlap checks).
-        let mut kmax = if bare {
-            node_loop::<EXTRA, DAMP, SMOOTH, true>(
+        let mut kmax = if self.es_zero {
+            node_loop::<EXTRA, DAMP, SMOOTH, true, false>(
+                kick, dt, zeta, g, inv_m, free, exposed, f1, f2, f3, e1, e2, e3, ex1, ex2, ex3, v1, v2, v3, x1, x2, x3,
+            )
+        } else if bare {
+            node_loop::<EXTRA, DAMP, SMOOTH, true, true>(
                 kick, dt, zeta, g, inv_m, free, exposed, f1, f2, f3, e1, e2, e3, ex1, ex2, ex3, v1, v2, v3, x1, x2, x3,
             )
         } else {
-            node_loop::<EXTRA, DAMP, SMOOTH, false>(
+            node_loop::<EXTRA, DAMP, SMOOTH, false, true>(
                 kick, dt, zeta, g, inv_m, free, exposed, f1, f2, f3, e1, e2, e3, ex1, ex2, ex3, v1, v2, v3, x1, x2, x3,
             )
         };
@@ -1558,14 +1577,12 @@ impl OwnForce<'_> {
     }
 }
 
-/// The segment element's tension and load of each segment, in one loop (no distributed load but a
-/// zero share): [`Explicit::segment_pass_body`]'s loop, with the largest tension's order key folded into
-/// `kmax` (returned). Every slice has the length of `fs1`.
+/// The segment element's tension of each segment, without a distributed load (its share, `+0.0`, is in
+/// `es` already: [`Explicit::segment_pass_body`]), with the largest tension's order key folded into `kmax`
+/// (returned). Every slice has the length of `fs1`.
 #[inline(always)]
 #[allow(clippy::too_many_arguments)]
-fn segment_loop<L: TensionLaw, W: SegmentLoad, const UNIFORM: bool, const VISCOUS: bool>(
-    load: &W,
-    q: [f64; 3],
+fn segment_loop<L: TensionLaw, const VISCOUS: bool>(
     mut kmax: i64,
     x1: &[f64],
     x2: &[f64],
@@ -1577,22 +1594,16 @@ fn segment_loop<L: TensionLaw, W: SegmentLoad, const UNIFORM: bool, const VISCOU
     ea: &[f64],
     eta: &[f64],
     intact: &[f64],
-    lref: &[f64],
-    dfac: &[f64],
     fs1: &mut [f64],
     fs2: &mut [f64],
     fs3: &mut [f64],
-    es1: &mut [f64],
-    es2: &mut [f64],
-    es3: &mut [f64],
 ) -> i64 {
     let n = fs1.len();
     // Each pair of neighbours from one array (one base address, two offsets: fewer registers).
     let (x1a, x1b, x2a, x2b, x3a, x3b) = (&x1[..n], &x1[1..n + 1], &x2[..n], &x2[1..n + 1], &x3[..n], &x3[1..n + 1]);
     let (v1a, v1b, v2a, v2b, v3a, v3b) = (&v1[..n], &v1[1..n + 1], &v2[..n], &v2[1..n + 1], &v3[..n], &v3[1..n + 1]);
-    let (inv_l0, ea, eta, intact, lref, dfac) =
-        (&inv_l0[..n], &ea[..n], &eta[..n], &intact[..n], &lref[..n], &dfac[..n]);
-    let (fs2, fs3, es1, es2, es3) = (&mut fs2[..n], &mut fs3[..n], &mut es1[..n], &mut es2[..n], &mut es3[..n]);
+    let (inv_l0, ea, eta, intact) = (&inv_l0[..n], &ea[..n], &eta[..n], &intact[..n]);
+    let (fs2, fs3) = (&mut fs2[..n], &mut fs3[..n]);
     for j in 0..n {
         // The segment element (`element::segment`) on f64, piece by piece: the same operations in the
         // same order as its dual-number evaluation in the static Jacobian.
@@ -1608,10 +1619,6 @@ fn segment_loop<L: TensionLaw, W: SegmentLoad, const UNIFORM: bool, const VISCOU
         fs1[j] = tension * t[0];
         fs2[j] = tension * t[1];
         fs3[j] = tension * t[2];
-        let e = segment::share::<f64, W, UNIFORM>(load, &st, va, vb, q, lref[j], intact[j], dfac[j]);
-        es1[j] = e[0];
-        es2[j] = e[1];
-        es3[j] = e[2];
     }
     kmax
 }
@@ -1718,10 +1725,12 @@ fn load_loop<W: SegmentLoad, const UNIFORM: bool, const INTACT: bool, const UNIT
 /// (the `ex` only with `EXTRA`).
 ///
 /// Each operation is the one of the unfused passes, in the same order, so the result is identical:
-/// `a = (F / m + g_k) - zeta v`, `v + (kick free) a`, `x + dt v`.
+/// `a = (F / m + g_k) - zeta v`, `v + (kick free) a`, `x + dt v`. `LOADED = false`: every share in `e` is
+/// `+0.0` ([`Explicit::segment_pass_body`] without a load) and every exposure 1 or 0, so `(e_hi + e_lo) ex`
+/// is `+0.0` and the sum `f + 0.0` is formed without reading them (`e`, `exposed` and `BARE` unused).
 #[inline(always)]
 #[allow(clippy::too_many_arguments)]
-fn node_loop<const EXTRA: bool, const DAMP: bool, const SMOOTH: bool, const BARE: bool>(
+fn node_loop<const EXTRA: bool, const DAMP: bool, const SMOOTH: bool, const BARE: bool, const LOADED: bool>(
     kick: f64,
     dt: f64,
     zeta: f64,
@@ -1757,7 +1766,9 @@ fn node_loop<const EXTRA: bool, const DAMP: bool, const SMOOTH: bool, const BARE
     for i in 0..n1 {
         let (im, kf) = (inv_m[i], kick * free[i]);
         // `BARE` (every exposure 1): `(e_hi + e_lo) * 1` is `e_hi + e_lo` exactly, so the product is left out.
-        let mut f = if BARE {
+        let mut f = if !LOADED {
+            [f1hi[i] - f1lo[i] + 0.0, f2hi[i] - f2lo[i] + 0.0, f3hi[i] - f3lo[i] + 0.0]
+        } else if BARE {
             [
                 f1hi[i] - f1lo[i] + (e1hi[i] + e1lo[i]),
                 f2hi[i] - f2lo[i] + (e2hi[i] + e2lo[i]),
@@ -2012,6 +2023,35 @@ mod tests {
                 assert_eq!(fused.step(h).is_ok(), ok, "{name}: stability verdicts differ at step {step}");
             }
             assert_bitwise(&fused, &reference, &name);
+        }
+    }
+
+    /// The shares of a pass without a load are not written but filled once ([`Explicit::es_zero`]): a wind
+    /// switched off, on and off again (with a ground, a break and smoothing, and without smoothing) steps
+    /// bitwise as the unfused reference, which reads `es` at every node, and after each calm stretch `es`
+    /// holds `+0.0` in every entry (no share of the windy stretch left behind).
+    #[test]
+    fn zero_shares_filled_once_follow_the_wind_on_and_off() {
+        for smoothing in [0.0, 0.03] {
+            let mut fused = Config::Wind3d.solver(41);
+            fused.params.smoothing = smoothing;
+            fused.ground = Some(Ground::level(-0.05, 0.6, 0.0));
+            fused.wire.break_segment(17);
+            let wind = fused.loads.wind;
+            let mut reference = fused.clone();
+            let dt = fused.params.dt_s;
+            for (stretch, w) in [None, wind, None].into_iter().enumerate() {
+                fused.loads.wind = w;
+                reference.loads.wind = w;
+                for step in 0..150 {
+                    let ok = reference_step(&mut reference, dt);
+                    assert_eq!(fused.step(dt).is_ok(), ok, "stretch {stretch}, step {step}");
+                }
+                assert_bitwise(&fused, &reference, &format!("smoothing {smoothing}, stretch {stretch}"));
+                assert_eq!(fused.es_zero, w.is_none());
+                let zeros = fused.es.iter().flatten().all(|e| e.to_bits() == 0);
+                assert_eq!(zeros, w.is_none(), "stretch {stretch}: es all +0 exactly when calm");
+            }
         }
     }
 
