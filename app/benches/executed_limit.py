@@ -9,6 +9,8 @@ Usage: app/benches/executed_limit.py BIN WORKLOAD:N[,WORKLOAD:N...] [--csv OUT] 
 e.g.   app/benches/executed_limit.py target/release/ohl plane_weight:1000,short_circuit:100
            --measured 'figures/bench/issue27_r8_kernel_now_*.csv'
 
+Needs valgrind, llvm-objdump and llvm-mca (Debian: `apt-get install valgrind llvm`; LLVM 14 was used).
+
 Derivation (stated in figures/bench/README.md, "Issue 27, eighth round"):
 
 1. Instruction counts. `valgrind --tool=callgrind --dump-instr=yes BIN bench --fixed WORKLOAD:N:S` for two
@@ -47,6 +49,7 @@ import glob
 import itertools
 import os
 import re
+import shutil
 import statistics
 import subprocess
 import sys
@@ -271,6 +274,9 @@ def main():
                   f"{float(r['cycles_per_node_step']):>7.2f} {r['busiest']:<14} {lim:>10.4g} "
                   f"{(f'{mv:.4g}' if mv else '-'):>10} {(f'{100 * mv / lim:.0f} %' if mv else '-'):>8}")
         return
+    for tool in ("valgrind", "llvm-objdump", "llvm-mca"):
+        if shutil.which(tool) is None:
+            sys.exit(f"{tool} is not installed (Debian: apt-get install valgrind llvm)")
     prim = {"div": a.div, "sqrt": a.sqrt, "div_mul": a.div_mul, "sqrt_mul": a.sqrt_mul}
     ins = disassemble(a.binary)
     meas = measured(a.measured) if a.measured else {}
