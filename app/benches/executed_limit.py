@@ -5,7 +5,8 @@ fraction.
 
 Usage: app/benches/executed_limit.py BIN WORKLOAD:N[,WORKLOAD:N...] [--csv OUT] [--measured CSV[,CSV...]]
                                      [--clock-ghz G] [--div C --sqrt C --div-mul C --sqrt-mul C] [--mcpu CPU]
-       app/benches/executed_limit.py - - --limits CSV --measured CSV[,CSV...]   (no counting: the fractions)
+       app/benches/executed_limit.py - - --limits CSV[,CSV] --measured 'GLOB[;GLOB]'   (no counting: a markdown
+           table of the limits and the fractions the measured CSVs reach, two binaries side by side)
 e.g.   app/benches/executed_limit.py target/release/ohl plane_weight:1000,short_circuit:100
            --measured 'figures/bench/issue27_r8_kernel_now_*.csv'
 
@@ -262,17 +263,26 @@ def main():
     ap.add_argument("--sqrt-mul", type=float, default=4.13, help="multiply-pipe cycles of a square root")
     ap.add_argument("--mcpu", default="znver3")
     ap.add_argument("--node-steps", type=float, default=2e6, help="node-steps counted per cell")
-    ap.add_argument("--limits", help="a CSV this script wrote: count nothing, divide its limits into --measured")
+    ap.add_argument("--limits", help="CSVs this script wrote (one, or before,after): count nothing, tabulate")
     a = ap.parse_args()
     if a.limits:
-        meas = measured(a.measured) if a.measured else {}
-        print(f"{'workload':<20} {'N':>5} {'nodes':>6} {'instr/ns':>9} {'cycles':>7} {'busiest':<14} {'limit':>10} "
-              f"{'measured':>10} {'of limit':>8}")
-        for r in csv.DictReader(open(a.limits)):
-            lim, mv = float(r["limit_node_steps_per_s"]), meas.get((r["workload"], int(r["n"])))
-            print(f"{r['workload']:<20} {r['n']:>5} {r['nodes']:>6} {float(r['instructions_per_node_step']):>9.2f} "
-                  f"{float(r['cycles_per_node_step']):>7.2f} {r['busiest']:<14} {lim:>10.4g} "
-                  f"{(f'{mv:.4g}' if mv else '-'):>10} {(f'{100 * mv / lim:.0f} %' if mv else '-'):>8}")
+        # One or two limit CSVs (before,after) with as many --measured sets (separated by ';'): a markdown
+        # table, before and after side by side.
+        lims = [list(csv.DictReader(open(f))) for f in a.limits.split(",")]
+        meas = [measured(m) for m in (a.measured or "").split(";")] if a.measured else [{} for _ in lims]
+        cols = ["instructions per node-step", "busiest unit", "limit [node-steps/s]", "measured", "of limit"]
+        head = ["workload", "N", "nodes"] + [c + (f" ({k + 1})" if len(lims) > 1 else "") for k in range(len(lims))
+                                              for c in cols]
+        print("| " + " | ".join(head) + " |")
+        print("|" + "---|" * len(head))
+        for i, r in enumerate(lims[-1]):
+            cells = [r["workload"], r["n"], r["nodes"]]
+            for rows, m in zip(lims, meas):
+                q = rows[i]
+                lim, mv = float(q["limit_node_steps_per_s"]), m.get((q["workload"], int(q["n"])))
+                cells += [f"{float(q['instructions_per_node_step']):.2f}", q["busiest"], f"{lim:.3e}",
+                          f"{mv:.3e}" if mv else "-", f"{100 * mv / lim:.0f} %" if mv else "-"]
+            print("| " + " | ".join(cells) + " |")
         return
     for tool in ("valgrind", "llvm-objdump", "llvm-mca"):
         if shutil.which(tool) is None:
