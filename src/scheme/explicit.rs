@@ -504,6 +504,10 @@ pub struct Explicit {
     /// written at every pass. The node pass then leaves `es` and the exposure out: `f + (+0 + +0) ex` is
     /// `f + 0` exactly for an exposure `ex` of 1 or 0.
     es_zero: bool,
+    /// the wire lies in its plane `x1 = c` and stays there: every `x1` the same finite value `c` (not
+    /// `-0`), every `v1` `+0` (`None`: not known since the wire last changed or left the plane;
+    /// [`Explicit::planar_state`]). A pass without a load then leaves the `x1` component out (`PLANAR`).
+    planar: Option<bool>,
     /// each segment's length `|r_{i+1} - r_i|` [m] from the segment pass's tension loop for its load loop
     /// (index `j` for segment `j`)
     seg_len: Vec<f64>,
@@ -554,6 +558,7 @@ impl Explicit {
             fs: z(),
             es: z(),
             es_zero: false,
+            planar: None,
             seg_len: vec![0.0; pad],
             point_force: Vec::new(),
             external_force: Vec::new(),
@@ -691,6 +696,7 @@ impl Explicit {
     /// current level are evaluated again before they are next used.
     pub fn wire_mut(&mut self) -> &mut Wire {
         self.fresh = false;
+        self.planar = None;
         self.viscous = None;
         self.all_exposed = None;
         self.plain = None;
@@ -1054,6 +1060,7 @@ impl Explicit {
         } else {
             self.es_zero = false;
         }
+        let planar = W::ZERO && !UNIFORM && *self.planar.get_or_insert_with(|| planar_wire(&self.wire));
         let w = &self.wire;
         let ea = &w.axial_stiffness_n[..n];
         let eta = &w.internal_friction_n_s[..n];
@@ -1076,8 +1083,13 @@ impl Explicit {
         // instructions fewer per step of plane_weight with both passes, 56.5 -> 38.9 per node-step at
         // N = 50). The operations and their order are the loops' as they were: the same bits.
         if W::ZERO && !UNIFORM {
-            // No load: one loop, the tension alone (the zero shares are in `es` already).
-            let kmax = segment_loop::<L, VISCOUS>(kmax, x1, x2, x3, v1, v2, v3, inv_l0, ea, eta, intact, fs1, fs2, fs3);
+            // No load: one loop, the tension alone (the zero shares are in `es` already); in the plane
+            // `x1 = c` with the `x1` differences the constant `+0` they are (`c - c`, `+0 - +0`).
+            let kmax = if planar {
+                segment_loop::<L, VISCOUS, true>(kmax, x1, x2, x3, v1, v2, v3, inv_l0, ea, eta, intact, fs1, fs2, fs3)
+            } else {
+                segment_loop::<L, VISCOUS, false>(kmax, x1, x2, x3, v1, v2, v3, inv_l0, ea, eta, intact, fs1, fs2, fs3)
+            };
             self.max_tension_n = from_order_key(kmax);
             return;
         }
@@ -1122,16 +1134,24 @@ impl Explicit {
         kick: f64,
         dt: f64,
     ) -> i64 {
-        if self.es_zero {
-            self.node_pass::<EXTRA, DAMP, SMOOTH, false>(kick, dt)
+        if !self.es_zero {
+            return self.node_pass::<EXTRA, DAMP, SMOOTH, true, false>(kick, dt);
+        }
+        // In the plane (the segment pass found it so: `planar` is known wherever `es_zero` is) with no
+        // force across it, the `x1` component stays as it is (module docs of `PLANAR` in `node_loop`).
+        let across = |f: &[(usize, [f64; 3])]| f.iter().any(|(_, f)| f[0] != 0.0);
+        if self.planar == Some(true) && !EXTRA && !across(&self.point_force) && !across(&self.external_force) {
+            self.node_pass::<EXTRA, DAMP, SMOOTH, false, true>(kick, dt)
         } else {
-            self.node_pass::<EXTRA, DAMP, SMOOTH, true>(kick, dt)
+            // A force across the plane: the wire may leave it.
+            self.planar = None;
+            self.node_pass::<EXTRA, DAMP, SMOOTH, false, false>(kick, dt)
         }
     }
 
     isa_dispatch! {
         /// The node pass ([`Explicit::kick_drift`]), from the widest copy the processor runs.
-        fn node_pass[const EXTRA: bool, const DAMP: bool, const SMOOTH: bool, const LOADED: bool][EXTRA, DAMP, SMOOTH, LOADED](
+        fn node_pass[const EXTRA: bool, const DAMP: bool, const SMOOTH: bool, const LOADED: bool, const PLANAR: bool][EXTRA, DAMP, SMOOTH, LOADED, PLANAR](
             kick: f64, dt: f64) -> i64
             = kick_drift;
     }
@@ -1151,7 +1171,7 @@ impl Explicit {
     /// `kick F / m` is added after the node loop (and, without smoothing, its drift `dt kick F / m`), which
     /// is the same update up to rounding and leaves the loop over all nodes untouched.
     #[inline(always)]
-    fn kick_drift<const EXTRA: bool, const DAMP: bool, const SMOOTH: bool, const LOADED: bool>(
+    fn kick_drift<const EXTRA: bool, const DAMP: bool, const SMOOTH: bool, const LOADED: bool, const PLANAR: bool>(
         &mut self,
         kick: f64,
         dt: f64,
@@ -1185,15 +1205,15 @@ impl Explicit {
         let (x1, x2, x3) = (&mut x1[..n1], &mut x2[..n1], &mut x3[..n1]);
         // One slice per argument, as in the segment pass (no run-time overlap checks).
         let mut kmax = if !LOADED {
-            node_loop::<EXTRA, DAMP, SMOOTH, true, false>(
+            node_loop::<EXTRA, DAMP, SMOOTH, true, false, PLANAR>(
                 kick, dt, zeta, g, inv_m, free, exposed, f1, f2, f3, e1, e2, e3, ex1, ex2, ex3, v1, v2, v3, x1, x2, x3,
             )
         } else if bare {
-            node_loop::<EXTRA, DAMP, SMOOTH, true, true>(
+            node_loop::<EXTRA, DAMP, SMOOTH, true, true, false>(
                 kick, dt, zeta, g, inv_m, free, exposed, f1, f2, f3, e1, e2, e3, ex1, ex2, ex3, v1, v2, v3, x1, x2, x3,
             )
         } else {
-            node_loop::<EXTRA, DAMP, SMOOTH, false, true>(
+            node_loop::<EXTRA, DAMP, SMOOTH, false, true, false>(
                 kick, dt, zeta, g, inv_m, free, exposed, f1, f2, f3, e1, e2, e3, ex1, ex2, ex3, v1, v2, v3, x1, x2, x3,
             )
         };
@@ -1217,7 +1237,9 @@ impl Explicit {
         // segment tension forces are no longer needed: their arrays hold the differences.
         let b = self.params.smoothing * (dt / self.params.dt_s);
         let intact = &w.intact;
-        smoothing::differences(v1, fs1, intact);
+        if !PLANAR {
+            smoothing::differences(v1, fs1, intact);
+        }
         smoothing::differences(v2, fs2, intact);
         smoothing::differences(v3, fs3, intact);
         let (d1, d2, d3) = (&fs1[..n1 + 1], &fs2[..n1 + 1], &fs3[..n1 + 1]);
@@ -1225,10 +1247,26 @@ impl Explicit {
         // instructions per step before the loop, measured at 81 nodes).
         if w.uniform_smoothing {
             // Every weight is 1: the paper's (3.3) exactly.
-            smooth_drift_loop::<false>(b, dt, free, &[], &[], d1, d2, d3, v1, v2, v3, x1, x2, x3, &mut self.speed2)
+            smooth_drift_loop::<false, PLANAR>(
+                b,
+                dt,
+                free,
+                &[],
+                &[],
+                d1,
+                d2,
+                d3,
+                v1,
+                v2,
+                v3,
+                x1,
+                x2,
+                x3,
+                &mut self.speed2,
+            )
         } else {
             let [wl, wr] = &w.smoothing_weight;
-            smooth_drift_loop::<true>(b, dt, free, wl, wr, d1, d2, d3, v1, v2, v3, x1, x2, x3, &mut self.speed2)
+            smooth_drift_loop::<true, PLANAR>(b, dt, free, wl, wr, d1, d2, d3, v1, v2, v3, x1, x2, x3, &mut self.speed2)
         }
     }
 
@@ -1604,7 +1642,7 @@ impl OwnForce<'_> {
 /// (returned). Every slice has the length of `fs1`.
 #[inline(always)]
 #[allow(clippy::too_many_arguments)]
-fn segment_loop<L: TensionLaw, const VISCOUS: bool>(
+fn segment_loop<L: TensionLaw, const VISCOUS: bool, const PLANAR: bool>(
     mut kmax: i64,
     x1: &[f64],
     x2: &[f64],
@@ -1629,8 +1667,11 @@ fn segment_loop<L: TensionLaw, const VISCOUS: bool>(
     for j in 0..n {
         // The segment element (`element::segment`) on f64, piece by piece: the same operations in the
         // same order as its dual-number evaluation in the static Jacobian.
-        let (va, vb) = ([v1a[j], v2a[j], v3a[j]], [v1b[j], v2b[j], v3b[j]]);
-        let st = segment::stretch_by_inverse([x1a[j], x2a[j], x3a[j]], [x1b[j], x2b[j], x3b[j]], va, vb, inv_l0[j]);
+        // `PLANAR`: `x1 = c` and `v1 = +0` at both ends, whose differences `c - c` and `+0 - +0` are the
+        // constant `+0` that `0.0 - 0.0` gives (the rest of the element, `0 * inv_len` included, as it is).
+        let (xa1, xb1, va1, vb1) = if PLANAR { (0.0, 0.0, 0.0, 0.0) } else { (x1a[j], x1b[j], v1a[j], v1b[j]) };
+        let (va, vb) = ([va1, v2a[j], v3a[j]], [vb1, v2b[j], v3b[j]]);
+        let st = segment::stretch_by_inverse([xa1, x2a[j], x3a[j]], [xb1, x2b[j], x3b[j]], va, vb, inv_l0[j]);
         let tension = if VISCOUS {
             L::tension(ea[j], eta[j], st.e, st.edot) * intact[j]
         } else {
@@ -1643,6 +1684,17 @@ fn segment_loop<L: TensionLaw, const VISCOUS: bool>(
         fs3[j] = tension * t[2];
     }
     kmax
+}
+
+/// Whether `w` lies in its plane `x1 = c` at rest across it ([`Explicit::planar`]): every `x1` has the
+/// bits of one finite `c` that is not `-0` (`c + 0` is `c`), every `v1` is `+0`.
+fn planar_wire(w: &Wire) -> bool {
+    let (x1, v1) = (&w.x[0], &w.v[0]);
+    let c = x1[0];
+    c.is_finite()
+        && c.to_bits() != (-0.0_f64).to_bits()
+        && x1.iter().all(|x| x.to_bits() == c.to_bits())
+        && v1.iter().all(|v| v.to_bits() == 0)
 }
 
 /// The tension loop of [`Explicit::segment_pass_body`] under a load: each segment's tension force into
@@ -1752,7 +1804,14 @@ fn load_loop<W: SegmentLoad, const UNIFORM: bool, const INTACT: bool, const UNIT
 /// is `+0.0` and the sum `f + 0.0` is formed without reading them (`e`, `exposed` and `BARE` unused).
 #[inline(always)]
 #[allow(clippy::too_many_arguments)]
-fn node_loop<const EXTRA: bool, const DAMP: bool, const SMOOTH: bool, const BARE: bool, const LOADED: bool>(
+fn node_loop<
+    const EXTRA: bool,
+    const DAMP: bool,
+    const SMOOTH: bool,
+    const BARE: bool,
+    const LOADED: bool,
+    const PLANAR: bool,
+>(
     kick: f64,
     dt: f64,
     zeta: f64,
@@ -1815,12 +1874,19 @@ fn node_loop<const EXTRA: bool, const DAMP: bool, const SMOOTH: bool, const BARE
             a[1] -= zeta * v2[i];
             a[2] -= zeta * v3[i];
         }
-        let v = [v1[i] + kf * a[0], v2[i] + kf * a[1], v3[i] + kf * a[2]];
-        v1[i] = v[0];
+        // `PLANAR`: `v1 = +0` stays `+0` (`a1 = f1 / m + 0.0` is `+0` for the zero `f1` of a wire in its
+        // plane, `+0 - zeta +0` too, and `+0 + kf +0` is `+0`), and `x1 = c` stays `c`: neither is written.
+        let v0 = if PLANAR { 0.0 } else { v1[i] + kf * a[0] };
+        let v = [v0, v2[i] + kf * a[1], v3[i] + kf * a[2]];
+        if !PLANAR {
+            v1[i] = v[0];
+        }
         v2[i] = v[1];
         v3[i] = v[2];
         if !SMOOTH {
-            x1[i] += dt * v[0];
+            if !PLANAR {
+                x1[i] += dt * v[0];
+            }
             x2[i] += dt * v[1];
             x3[i] += dt * v[2];
             kmax = kmax.max(speed2_key(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]));
@@ -1837,7 +1903,7 @@ fn node_loop<const EXTRA: bool, const DAMP: bool, const SMOOTH: bool, const BARE
 /// in the same order: the result is identical.
 #[inline(always)]
 #[allow(clippy::too_many_arguments)]
-fn smooth_drift_loop<const WEIGHTED: bool>(
+fn smooth_drift_loop<const WEIGHTED: bool, const PLANAR: bool>(
     b: f64,
     dt: f64,
     free: &[f64],
@@ -1881,10 +1947,14 @@ fn smooth_drift_loop<const WEIGHTED: bool>(
                 smoothing::smoothed(v3[i], bf, d3lo[i], d3hi[i]),
             ]
         };
-        v1[i] = v[0];
+        // `PLANAR`: the differences of `v1 = +0` are `+0` and its smoothed value `+0` (`d1` is not formed).
+        let v = if PLANAR { [0.0, v[1], v[2]] } else { v };
+        if !PLANAR {
+            v1[i] = v[0];
+            x1[i] += dt * v[0];
+        }
         v2[i] = v[1];
         v3[i] = v[2];
-        x1[i] += dt * v[0];
         x2[i] += dt * v[1];
         x3[i] += dt * v[2];
         let s2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
@@ -2074,6 +2144,58 @@ mod tests {
                 let zeros = fused.es.iter().flatten().all(|e| e.to_bits() == 0);
                 assert_eq!(zeros, w.is_none(), "stretch {stretch}: es all +0 exactly when calm");
             }
+        }
+    }
+
+    /// A wire in its plane `x1 = c` without a load steps with the `x1` component left out (`PLANAR`) and
+    /// gives the bits of the passes that form it: each case stepped 300 times (a step in 7 shortened) and
+    /// a copy forced through the general passes at every step, compared in `x`, `v` and the forces the
+    /// observers read. The planar cases (plain; smoothing, damping, Kelvin-Voigt, a ground and a break;
+    /// `c = 0.25` m with mass-weighted smoothing) stay planar to the end; a nodal force across the plane
+    /// and a point force across it from step 100 take the wire out of it (and the copy with them).
+    #[test]
+    fn planar_passes_leave_out_the_x1_component_bit_for_bit() {
+        let plane = || Config::PlaneWeight.solver(40);
+        let mut cases: Vec<(&str, Explicit, bool)> = vec![("plain", plane(), true)];
+        let mut s = plane();
+        s.params.smoothing = 0.03;
+        s.params.mass_damping_per_s = 0.3;
+        s.wire.internal_friction_n_s.fill(3.0);
+        s.ground = Some(Ground::level(-0.05, 0.6, 0.4));
+        s.wire.break_segment(25);
+        cases.push(("smoothing, damping, viscous, ground, break", s, true));
+        let mut s = plane();
+        s.params.smoothing = 0.03;
+        s.wire.x[0].fill(0.25);
+        s.wire.point_mass_kg[10] = 20.0 * s.wire.mass[10];
+        s.wire.update_node_masses();
+        cases.push(("c = 0.25 m, weighted smoothing", s, true));
+        let mut s = plane();
+        s.nodal_force = Some([vec![0.1; 41], vec![0.0; 41], vec![0.0; 41]]);
+        cases.push(("nodal force across", s, false));
+        cases.push(("point force across from step 100", plane(), false));
+        for (name, mut fast, stays) in cases {
+            let mut general = fast.clone();
+            let dt = fast.params.dt_s;
+            for step in 0..300 {
+                if name.starts_with("point") && step == 100 {
+                    fast.set_point_forces(&[(12, [0.5, 0.0, 0.0])]);
+                    general.set_point_forces(&[(12, [0.5, 0.0, 0.0])]);
+                }
+                general.planar = Some(false);
+                let h = if step % 7 == 3 { 0.37 * dt } else { dt };
+                assert_eq!(fast.step(h).is_ok(), general.step(h).is_ok(), "{name}: step {step}");
+            }
+            fast.evaluate_forces();
+            general.evaluate_forces();
+            assert_bitwise(&fast, &general, name);
+            for k in 0..3 {
+                let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+                assert_eq!(bits(&fast.fs[k]), bits(&general.fs[k]), "{name}: fs{k}");
+            }
+            assert_eq!(fast.planar == Some(true), stays, "{name}: {:?}", fast.planar);
+            let moved = fast.wire.v[0].iter().any(|v| *v != 0.0);
+            assert_eq!(moved, !stays, "{name}: the wire left the plane exactly when pushed across it");
         }
     }
 
