@@ -505,8 +505,9 @@ pub struct Explicit {
     /// `f + 0` exactly for an exposure `ex` of 1 or 0.
     es_zero: bool,
     /// the wire lies in its plane `x1 = c` and stays there: every `x1` the same finite value `c` (not
-    /// `-0`), every `v1` `+0` (`None`: not known since the wire last changed or left the plane;
-    /// [`Explicit::planar_state`]). A pass without a load then leaves the `x1` component out (`PLANAR`).
+    /// `-0`), every `v1` `+0` (`None`: not known since the wire last changed; `Some(false)` also after a
+    /// step with a force across the plane, until the wire changes). A pass without a load then leaves the
+    /// `x1` component out (`PLANAR`).
     planar: Option<bool>,
     /// each segment's length `|r_{i+1} - r_i|` [m] from the segment pass's tension loop for its load loop
     /// (index `j` for segment `j`)
@@ -1143,8 +1144,10 @@ impl Explicit {
         if self.planar == Some(true) && !EXTRA && !across(&self.point_force) && !across(&self.external_force) {
             self.node_pass::<EXTRA, DAMP, SMOOTH, false, true>(kick, dt)
         } else {
-            // A force across the plane: the wire may leave it.
-            self.planar = None;
+            // A force across the plane: the wire may leave it. It is not looked for again until the wire
+            // changes (a wire pulled out of its plane by a string or a link stays out, and a scan at
+            // every step would walk its arrays up to the first node that moved).
+            self.planar = Some(false);
             self.node_pass::<EXTRA, DAMP, SMOOTH, false, false>(kick, dt)
         }
     }

@@ -131,9 +131,7 @@ const NODE_PLANAR: Ops = ops(10, 11, 0, 0, 10, 4);
 /// The operations of one node-step of `w` (module doc), or `None` where no vector limit applies.
 pub fn budget(w: Workload) -> Option<OpBudget> {
     match w {
-        Workload::Kernel(Config::PlaneWeight) => {
-            Some(OpBudget { segment: ops(14, 5, 1, 1, 7, 3), node: NODE_PLANAR })
-        }
+        Workload::Kernel(Config::PlaneWeight) => Some(OpBudget { segment: ops(14, 5, 1, 1, 7, 3), node: NODE_PLANAR }),
         Workload::Kernel(Config::Wind3d) => Some(OpBudget { segment: ops(51, 24, 2, 2, 21, 10), node: NODE }),
         Workload::Kernel(Config::ViscousSmoothed) => {
             Some(OpBudget { segment: ops(48, 25, 2, 2, 29, 10), node: ops(24, 29, 0, 0, 38, 12) })
