@@ -1125,10 +1125,12 @@ impl Explicit {
         self.max_tension_n = from_order_key(kmax);
     }
 
-    /// The node pass with the shares (`LOADED`) or without them ([`Explicit::es_zero`]): a copy of its own
-    /// for each, so that no compiled pass holds two copies of the node loop without smoothing (which left
-    /// the compiler moving the arrays' addresses between registers at every iteration: callgrind, wind_3d
-    /// at N = 1000, 42.3 -> 46.3 instructions per node-step with both loops in one pass).
+    /// The node pass with the shares (`LOADED`) or without them ([`Explicit::es_zero`]), and without them
+    /// in the plane (`PLANAR`, [`Explicit::planar`]): a copy of its own for each, so that no compiled pass
+    /// holds two copies of the node loop without smoothing (which left the compiler moving the arrays'
+    /// addresses between registers at every iteration: callgrind, wind_3d at N = 1000, 42.3 -> 46.3
+    /// instructions per node-step with both loops in one pass). Every pass but the plane's may move the
+    /// wire out of its plane, so each of them gives up what `planar` knew.
     #[inline(always)]
     fn node_pass_of_shares<const EXTRA: bool, const DAMP: bool, const SMOOTH: bool>(
         &mut self,
@@ -1136,10 +1138,13 @@ impl Explicit {
         dt: f64,
     ) -> i64 {
         if !self.es_zero {
+            // A load (a wind across the plane) may move the wire out of it: looked for again (once) when the
+            // load is gone.
+            self.planar = None;
             return self.node_pass::<EXTRA, DAMP, SMOOTH, true, false>(kick, dt);
         }
         // In the plane (the segment pass found it so: `planar` is known wherever `es_zero` is) with no
-        // force across it, the `x1` component stays as it is (module docs of `PLANAR` in `node_loop`).
+        // force across it, the `x1` component stays as it is (the argument at `PLANAR` in `node_loop`).
         let across = |f: &[(usize, [f64; 3])]| f.iter().any(|(_, f)| f[0] != 0.0);
         if self.planar == Some(true) && !EXTRA && !across(&self.point_force) && !across(&self.external_force) {
             self.node_pass::<EXTRA, DAMP, SMOOTH, false, true>(kick, dt)
@@ -2154,8 +2159,9 @@ mod tests {
     /// gives the bits of the passes that form it: each case stepped 300 times (a step in 7 shortened) and
     /// a copy forced through the general passes at every step, compared in `x`, `v` and the forces the
     /// observers read. The planar cases (plain; smoothing, damping, Kelvin-Voigt, a ground and a break;
-    /// `c = 0.25` m with mass-weighted smoothing) stay planar to the end; a nodal force across the plane
-    /// and a point force across it from step 100 take the wire out of it (and the copy with them).
+    /// `c = 0.25` m with mass-weighted smoothing) stay planar to the end; a nodal force across the plane,
+    /// a point force across it from step 100, and a wind across it from step 100 to 200 (the calm after it
+    /// must not take the plane's pass again) take the wire out of it (and the copy with them).
     #[test]
     fn planar_passes_leave_out_the_x1_component_bit_for_bit() {
         let plane = || Config::PlaneWeight.solver(40);
@@ -2177,6 +2183,9 @@ mod tests {
         s.nodal_force = Some([vec![0.1; 41], vec![0.0; 41], vec![0.0; 41]]);
         cases.push(("nodal force across", s, false));
         cases.push(("point force across from step 100", plane(), false));
+        cases.push(("wind across from step 100 to 200", plane(), false));
+        let wind = Config::Wind3d.solver(40).loads.wind;
+        assert!(wind.is_some());
         for (name, mut fast, stays) in cases {
             let mut general = fast.clone();
             let dt = fast.params.dt_s;
@@ -2184,6 +2193,11 @@ mod tests {
                 if name.starts_with("point") && step == 100 {
                     fast.set_point_forces(&[(12, [0.5, 0.0, 0.0])]);
                     general.set_point_forces(&[(12, [0.5, 0.0, 0.0])]);
+                }
+                if name.starts_with("wind") && (step == 100 || step == 200) {
+                    let w = if step == 100 { wind } else { None };
+                    fast.loads_mut().wind = w;
+                    general.loads_mut().wind = w;
                 }
                 general.planar = Some(false);
                 let h = if step % 7 == 3 { 0.37 * dt } else { dt };
