@@ -258,6 +258,14 @@ impl Solver {
         }
     }
 
+    /// Steps taken.
+    pub fn steps(&self) -> u64 {
+        match self {
+            Solver::Wire(s) => s.steps(),
+            Solver::Line(l) | Solver::LineClearances(l, _) => l.steps(),
+        }
+    }
+
     /// The wires stepped, in order (one, or every conductor's).
     pub fn wires(&self) -> Vec<&ohl::wire::Wire> {
         match self {

@@ -120,10 +120,6 @@ fn fixed(spec: &str) -> ExitCode {
         }
     };
     let wires = s.wires();
-    let steps_done = match &s {
-        bench::Solver::Wire(e) => e.steps(),
-        bench::Solver::Line(l) | bench::Solver::LineClearances(l, _) => l.steps(),
-    };
     // (One wire: the line the instruction and CPU scripts have always printed; a line adds its nodes.)
     let nodes = if wires.len() > 1 || !matches!(w, bench::Workload::Kernel(_)) {
         format!(", {} nodes", s.nodes())
@@ -131,8 +127,9 @@ fn fixed(spec: &str) -> ExitCode {
         String::new()
     };
     out!(
-        "{} N = {n}: {steps_done} steps{nodes}, t = {:.6e} s, x3[N/2] = {:.15e} m, state hash {:016x}",
+        "{} N = {n}: {} steps{nodes}, t = {:.6e} s, x3[N/2] = {:.15e} m, state hash {:016x}",
         w.name(),
+        s.steps(),
         s.time_s(),
         wires[0].x[2][n / 2],
         bench::wires_hash(&wires)
