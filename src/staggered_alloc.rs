@@ -128,19 +128,31 @@ unsafe fn alloc_large(layout: Layout, offset: Option<usize>, zeroed: bool) -> *m
     // inside `outer`, just before the block.
     unsafe {
         let block = raw.add(shift);
+        write_header(block, raw, outer.size());
+        block
+    }
+}
+
+/// Writes the header of the large block at `block`: its system allocation `raw` of `size` bytes
+/// (aligned to `HEADER`), read back by [`outer_of`].
+///
+/// # Safety
+/// The `HEADER` bytes before `block` lie inside that allocation, and `block` is aligned to 16.
+unsafe fn write_header(block: *mut u8, raw: *mut u8, size: usize) {
+    // SAFETY: the two words before `block`, inside the allocation (the caller's contract).
+    unsafe {
         let header = block.cast::<usize>().sub(2);
         header.write(raw as usize);
-        header.add(1).write(outer.size());
-        block
+        header.add(1).write(size);
     }
 }
 
 /// The system allocation of a large block (from its header).
 ///
 /// # Safety
-/// `ptr` was returned by [`alloc_large`] and not freed.
+/// `ptr` is a large block of this allocator ([`alloc_large`], or grown in place by `realloc`), not freed.
 unsafe fn outer_of(ptr: *mut u8) -> (*mut u8, Layout) {
-    // SAFETY: the header written by `alloc_large`.
+    // SAFETY: the header written by `write_header` for `alloc_large` or `realloc`.
     unsafe {
         let header = ptr.cast::<usize>().sub(2);
         let raw = header.read() as *mut u8;
@@ -205,9 +217,7 @@ unsafe impl GlobalAlloc for StaggeredAlloc {
                         return grown;
                     }
                     let block = grown.add(HEADER);
-                    let header = block.cast::<usize>().sub(2);
-                    header.write(grown as usize);
-                    header.add(1).write(size);
+                    write_header(block, grown, size);
                     return block;
                 }
             }
