@@ -96,4 +96,8 @@ pub trait Observer {
     fn finish(&mut self, _level: &Level, _ending: &Ending) -> Result<(), OutputError> {
         Ok(())
     }
+    /// The observer's type, for diagnostics (the cycles per phase of a run, `phase-timing`).
+    fn name(&self) -> &'static str {
+        std::any::type_name::<Self>()
+    }
 }

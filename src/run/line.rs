@@ -30,6 +30,7 @@ use crate::output::cpu_time::{CpuStopwatch, per_second};
 use crate::output::peaks::Peak;
 use crate::output::rows::{RowFile, write_atomically};
 use crate::output::{Peaks, ProbePoint, Snapshots, Timeseries};
+use crate::run::phase_cycles::PhaseClock;
 use crate::scenario::build::Stop;
 use crate::scenario::line::LinePlan;
 use crate::scenario::work::{
@@ -578,6 +579,19 @@ pub fn run_line_observed<'o>(
     let started = Instant::now();
     let cpu = CpuStopwatch::start();
     let mut failure: Option<LineInstability> = None;
+    // Cycles per phase, with the feature `phase-timing` only ([`super::phase_cycles`]).
+    let mut phases = PhaseClock::new(
+        [
+            "forces of a level (every conductor's segment pass, the links)",
+            "short-circuit forces",
+            "every conductor's outputs (peaks, time series, settle, ...)",
+            "clearances between conductors",
+            "links' and towers' peaks, line samples",
+            "step (every conductor's node pass, ground contact, links)",
+        ]
+        .into_iter()
+        .map(String::from),
+    );
     let ending = loop {
         let t = line.time_s();
         for c in 0..n {
@@ -593,10 +607,15 @@ pub fn run_line_observed<'o>(
             }
             timelines[c].before_step(line.conductor_mut(c), t);
         }
+        let from = phases.mark();
         line.evaluate_forces();
+        phases.add(0, from);
+        let from = phases.mark();
         if let Some(sc) = short.as_mut() {
             sc.observe(&line, t)?;
         }
+        phases.add(1, from);
+        let from = phases.mark();
         let mut all_settled = true;
         for c in 0..n {
             let level = Level { solver: &line.conductors()[c], t_s: t, tau_per_s: plan.plans[c].tau(1.0) };
@@ -606,10 +625,14 @@ pub fn run_line_observed<'o>(
             }
             all_settled &= settled;
         }
+        phases.add(2, from);
+        let from = phases.mark();
         let sampling = files.is_some() || samples.is_some();
         let sample_due = sampling && clock.next_s() <= t + tol;
         let first = line.steps() == 0;
         clearance.observe_bounded(line.conductors(), t, sample_due || first);
+        phases.add(3, from);
+        let from = phases.mark();
         if first {
             initial_clearance = clearance.current().iter().map(|c| c.map(|c| c.closest.distance_m)).collect();
         }
@@ -658,6 +681,7 @@ pub fn run_line_observed<'o>(
                 }
             }
         }
+        phases.add(4, from);
         let pending = timelines.iter().any(|tl| tl.next_time().is_some());
         if all_settled && !pending {
             break Ending::Settled;
@@ -668,7 +692,11 @@ pub fn run_line_observed<'o>(
         let next = timelines.iter().filter_map(|tl| tl.next_time()).fold(horizon, f64::min);
         let target = next.min(horizon);
         let h = if target - t <= dt * (1.0 + 1.0e-12) { target - t } else { dt };
-        if let Err(e) = line.step(h) {
+        let from = phases.mark();
+        let stepped = line.step(h);
+        phases.add(5, from);
+        phases.count_step();
+        if let Err(e) = stepped {
             let source = e.source.clone();
             failure = Some(e);
             break Ending::Unstable(source);
@@ -680,6 +708,7 @@ pub fn run_line_observed<'o>(
             timelines[c].after_step(line.conductor_mut(c), h);
         }
     };
+    phases.report();
     line.evaluate_forces();
     if failure.is_none() {
         // The final values are measured (the last level may have been skipped by the bound).

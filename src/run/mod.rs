@@ -11,6 +11,7 @@
 //! criterion holds and no event is pending.
 
 pub mod line;
+pub(crate) mod phase_cycles;
 pub mod settle;
 pub mod short_circuit;
 pub mod shortcircuit_case;
@@ -32,6 +33,7 @@ use crate::output::{Peaks, ProbePoint, Recorder, Sample, Snapshots, Summary, Tim
 use crate::scenario::Plan;
 use crate::scenario::build::Stop;
 use crate::scheme::{Explicit, Instability};
+use phase_cycles::PhaseClock;
 
 pub use crate::observer::{Control, Ending, Level, Observer, OutputError};
 pub use crate::output::{Probe, Shape};
@@ -50,6 +52,13 @@ pub fn run_loop<'o>(
     let tol = LANDING * dt;
     // Each observer's time before which it has nothing to do ([`Control::QuietUntil`]).
     let mut quiet_until = vec![f64::NEG_INFINITY; observers.len()];
+    // Cycles per phase, with the feature `phase-timing` only ([`phase_cycles`]).
+    let fixed = ["forces of a level (segment pass, strings)", "step (node pass, ground contact)"];
+    let names = observers.iter().map(|o| format!("observer {}", o.name()));
+    let mut phases = PhaseClock::new(fixed.into_iter().map(String::from).chain(names));
+    const FORCES: usize = 0;
+    const STEP: usize = 1;
+    const OBSERVER: usize = 2;
     let ending = loop {
         let t = solver.time_s();
         let applied = timeline.apply_due(solver, t, tol);
@@ -59,14 +68,19 @@ pub fn run_loop<'o>(
             observers.iter_mut().for_each(|o| o.event(t, &what));
         }
         timeline.before_step(solver, t);
+        let from = phases.mark();
         solver.evaluate_forces();
+        phases.add(FORCES, from);
         let level = Level { solver, t_s: t, tau_per_s };
         let mut settled = false;
-        for (o, quiet) in observers.iter_mut().zip(&mut quiet_until) {
+        for (k, (o, quiet)) in observers.iter_mut().zip(&mut quiet_until).enumerate() {
             if t < *quiet {
                 continue;
             }
-            match o.observe(&level)? {
+            let from = phases.mark();
+            let control = o.observe(&level)?;
+            phases.add(OBSERVER + k, from);
+            match control {
                 Control::Settled => settled = true,
                 Control::QuietUntil(until) => *quiet = until,
                 Control::Continue => {}
@@ -80,7 +94,11 @@ pub fn run_loop<'o>(
         }
         let target = timeline.next_time().unwrap_or(horizon).min(horizon);
         let h = if target - t <= dt * (1.0 + 1.0e-12) { target - t } else { dt };
-        if let Err(e) = solver.step(h) {
+        let from = phases.mark();
+        let stepped = solver.step(h);
+        phases.add(STEP, from);
+        phases.count_step();
+        if let Err(e) = stepped {
             break Ending::Unstable(e);
         }
         if h < dt {
@@ -88,6 +106,7 @@ pub fn run_loop<'o>(
         }
         timeline.after_step(solver, h);
     };
+    phases.report();
     if matches!(ending, Ending::Unstable(_)) {
         solver.evaluate_forces();
     }
