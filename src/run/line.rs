@@ -582,8 +582,8 @@ pub fn run_line_observed<'o>(
     // Cycles per phase, with the feature `phase-timing` only ([`super::phase_cycles`]).
     let mut phases = PhaseClock::new(
         [
-            "forces of a level (every conductor's segment pass, the links)",
-            "short-circuit forces",
+            "forces of a level (every conductor's segment pass, the links, the short-circuit pair forces)",
+            "short-circuit observer (the IEC 60865 quantities)",
             "every conductor's outputs (peaks, time series, settle, ...)",
             "clearances between conductors",
             "links' and towers' peaks, line samples",

@@ -2,16 +2,18 @@
 //! to standard error when the loop ends. [`super::run_loop`] (a conductor or a section) counts the forces
 //! of a level ([`crate::scheme::Explicit::evaluate_forces`]: the segment pass and the strings), the step
 //! ([`crate::scheme::Explicit::step`]: the node pass and the ground contact) and each observer by its type;
-//! [`super::line::run_line_observed`] (a line) counts the line's forces, the short-circuit forces, the
-//! conductors' outputs, the clearances between conductors, the links' and towers' peaks with the line's
-//! samples, and the step. What no phase holds (events, the step length, the readings themselves) is
-//! printed as the rest of the loop.
+//! [`super::line::run_line_observed`] (a line) counts the line's forces (with the links and the
+//! short-circuit pair forces), the short-circuit observer, the conductors' outputs, the clearances
+//! between conductors, the links' and towers' peaks with the line's samples, and the step. What no phase
+//! holds (events, the step length, the readings themselves) is printed as the rest of the loop.
+//! `app/benches/phase_table.sh` tabulates them for every case and example.
 //!
 //! Compiled only with the cargo feature `phase-timing` (`cargo build --release -p ohl-app --features
 //! ohl/phase-timing`); without it [`PhaseClock`] is an empty type whose methods do nothing (the phases'
 //! names are not even formed), so a normal build's loop carries no trace of it: the instructions of a run
-//! are those of a build without the counters (callgrind, the IEC ice-and-wind example: 3,118,992,803 and
-//! 3,118,998,023). A reading is one `rdtsc` on x86-64 (some tens of cycles; it does not wait for the
+//! are those of a build without the counters (callgrind, the IEC ice-and-wind example's whole run:
+//! 3,118,992,808 before the counters were written, 3,118,998,082 after, none of the difference per step).
+//! A reading is one `rdtsc` on x86-64 (some tens of cycles; it does not wait for the
 //! instructions before it, so a phase of a few hundred cycles is read to within some tens), elsewhere the
 //! monotonic clock in nanoseconds. The counter runs at a fixed rate (the nominal clock, not the boosted
 //! one): the phases' shares are what it is for, and the readings add a few percent to the loop. Counting
@@ -22,6 +24,7 @@ mod on {
     /// The counters of one run loop: one per phase.
     pub struct PhaseClock {
         start: u64,
+        started: std::time::Instant,
         phases: Vec<(String, u64)>,
         steps: u64,
     }
@@ -45,7 +48,8 @@ mod on {
     impl PhaseClock {
         /// Counters for the phases `names` (indexed in that order by [`PhaseClock::add`]), started now.
         pub fn new(names: impl Iterator<Item = String>) -> Self {
-            PhaseClock { start: now(), phases: names.map(|n| (n, 0)).collect(), steps: 0 }
+            let started = std::time::Instant::now();
+            PhaseClock { start: now(), started, phases: names.map(|n| (n, 0)).collect(), steps: 0 }
         }
 
         /// A reading, to pass to [`PhaseClock::add`] after the phase.
@@ -69,10 +73,15 @@ mod on {
         /// Print the counters per step, each with its share of the loop, to standard error.
         pub fn report(&self) {
             let total = now() - self.start;
+            let seconds = self.started.elapsed().as_secs_f64();
             let steps = self.steps.max(1) as f64;
             let share = |c: u64| 100.0 * c as f64 / total.max(1) as f64;
             let line = |what: &str, c: u64| eprintln!("  {:>10.1} ({:5.1} %)  {what}", c as f64 / steps, share(c));
-            eprintln!("phase cycles per step ({} steps; time-stamp counter):", self.steps);
+            eprintln!(
+                "phase cycles per step ({} steps; time-stamp counter, {:.4} GHz over the loop's wall time):",
+                self.steps,
+                total as f64 / seconds.max(1e-9) / 1e9
+            );
             let mut rest = total as i128;
             for (name, c) in &self.phases {
                 rest -= *c as i128;
