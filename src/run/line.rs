@@ -592,6 +592,12 @@ pub fn run_line_observed<'o>(
         .into_iter()
         .map(String::from),
     );
+    const FORCES: usize = 0;
+    const SHORT_CIRCUIT: usize = 1;
+    const OUTPUTS: usize = 2;
+    const CLEARANCES: usize = 3;
+    const LINKS_TOWERS: usize = 4;
+    const STEP: usize = 5;
     let ending = loop {
         let t = line.time_s();
         for c in 0..n {
@@ -609,12 +615,12 @@ pub fn run_line_observed<'o>(
         }
         let from = phases.mark();
         line.evaluate_forces();
-        phases.add(0, from);
+        phases.add(FORCES, from);
         let from = phases.mark();
         if let Some(sc) = short.as_mut() {
             sc.observe(&line, t)?;
         }
-        phases.add(1, from);
+        phases.add(SHORT_CIRCUIT, from);
         let from = phases.mark();
         let mut all_settled = true;
         for c in 0..n {
@@ -625,13 +631,13 @@ pub fn run_line_observed<'o>(
             }
             all_settled &= settled;
         }
-        phases.add(2, from);
+        phases.add(OUTPUTS, from);
         let from = phases.mark();
         let sampling = files.is_some() || samples.is_some();
         let sample_due = sampling && clock.next_s() <= t + tol;
         let first = line.steps() == 0;
         clearance.observe_bounded(line.conductors(), t, sample_due || first);
-        phases.add(3, from);
+        phases.add(CLEARANCES, from);
         let from = phases.mark();
         if first {
             initial_clearance = clearance.current().iter().map(|c| c.map(|c| c.closest.distance_m)).collect();
@@ -681,7 +687,7 @@ pub fn run_line_observed<'o>(
                 }
             }
         }
-        phases.add(4, from);
+        phases.add(LINKS_TOWERS, from);
         let pending = timelines.iter().any(|tl| tl.next_time().is_some());
         if all_settled && !pending {
             break Ending::Settled;
@@ -694,7 +700,7 @@ pub fn run_line_observed<'o>(
         let h = if target - t <= dt * (1.0 + 1.0e-12) { target - t } else { dt };
         let from = phases.mark();
         let stepped = line.step(h);
-        phases.add(5, from);
+        phases.add(STEP, from);
         phases.count_step();
         if let Err(e) = stepped {
             let source = e.source.clone();
