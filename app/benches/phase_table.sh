@@ -39,33 +39,20 @@ for line in open(path):
 if steps is None:
     print(f"| {name} | (no report: the run failed) |")
     sys.exit()
-share = {k: 0.0 for k in ["forces", "step", "peaks", "series", "settle", "other", "clear", "short", "links", "rest"]}
+# Each phase's column: the first rule whose text the phase's name holds (`^`: begins with).
+rules = [("^forces of a level", "forces"), ("^step (", "step"), ("Peaks", "peaks"), ("Timeseries", "series"),
+         ("Settle", "settle"), ("^observer", "other"), ("^every conductor's outputs", "other"),
+         ("^clearances", "clear"), ("^short-circuit observer", "short"), ("^links'", "links"), ("^rest", "rest")]
+share = {k: 0.0 for _, k in rules}
 total = 0.0
 for c, s, what in rows:
     if what == "whole loop":
         total = c
-    elif what.startswith("forces of a level"):
-        share["forces"] += s
-    elif what.startswith("step ("):
-        share["step"] += s
-    elif "Peaks" in what:
-        share["peaks"] += s
-    elif "Timeseries" in what:
-        share["series"] += s
-    elif "Settle" in what:
-        share["settle"] += s
-    elif what.startswith("observer"):
-        share["other"] += s
-    elif what.startswith("every conductor's outputs"):
-        share["other"] += s
-    elif what.startswith("clearances"):
-        share["clear"] += s
-    elif what.startswith("short-circuit observer"):
-        share["short"] += s
-    elif what.startswith("links'"):
-        share["links"] += s
-    elif what.startswith("rest"):
-        share["rest"] += s
+        continue
+    for text, key in rules:
+        if (what.startswith(text[1:]) if text.startswith("^") else text in what):
+            share[key] += s
+            break
 cells = " | ".join(f"{share[k]:.1f} %" for k in share)
 print(f"| {name} | {steps} | {total:.0f} | {cells} |")
 PY
