@@ -29,39 +29,38 @@ mod on {
         steps: u64,
     }
 
-    /// The counter now: `rdtsc` on x86-64, the monotonic clock in nanoseconds elsewhere.
-    #[inline(always)]
-    fn now() -> u64 {
-        #[cfg(target_arch = "x86_64")]
-        {
-            // SAFETY: `rdtsc` exists on every x86-64 processor and has no memory effects.
-            unsafe { core::arch::x86_64::_rdtsc() }
-        }
-        #[cfg(not(target_arch = "x86_64"))]
-        {
-            use std::sync::OnceLock;
-            static ORIGIN: OnceLock<std::time::Instant> = OnceLock::new();
-            ORIGIN.get_or_init(std::time::Instant::now).elapsed().as_nanos() as u64
-        }
-    }
-
     impl PhaseClock {
         /// Counters for the phases `names` (indexed in that order by [`PhaseClock::add`]), started now.
         pub fn new(names: impl Iterator<Item = String>) -> Self {
-            let started = std::time::Instant::now();
-            PhaseClock { start: now(), started, phases: names.map(|n| (n, 0)).collect(), steps: 0 }
+            let mut clock = PhaseClock {
+                start: 0,
+                started: std::time::Instant::now(),
+                phases: names.map(|n| (n, 0)).collect(),
+                steps: 0,
+            };
+            clock.start = clock.mark();
+            clock
         }
 
-        /// A reading, to pass to [`PhaseClock::add`] after the phase.
+        /// A reading, to pass to [`PhaseClock::add`] after the phase: `rdtsc` on x86-64, elsewhere the
+        /// nanoseconds since the clock started.
         #[inline(always)]
         pub fn mark(&self) -> u64 {
-            now()
+            #[cfg(target_arch = "x86_64")]
+            {
+                // SAFETY: `rdtsc` exists on every x86-64 processor and has no memory effects.
+                unsafe { core::arch::x86_64::_rdtsc() }
+            }
+            #[cfg(not(target_arch = "x86_64"))]
+            {
+                self.started.elapsed().as_nanos() as u64
+            }
         }
 
         /// Phase `k` took the time since `from`.
         #[inline(always)]
         pub fn add(&mut self, k: usize, from: u64) {
-            self.phases[k].1 += now() - from;
+            self.phases[k].1 += self.mark() - from;
         }
 
         /// One more step (the divisor of the report).
@@ -72,7 +71,7 @@ mod on {
 
         /// Print the counters per step, each with its share of the loop, to standard error.
         pub fn report(&self) {
-            let total = now() - self.start;
+            let total = self.mark() - self.start;
             let seconds = self.started.elapsed().as_secs_f64();
             let steps = self.steps.max(1) as f64;
             let share = |c: u64| 100.0 * c as f64 / total.max(1) as f64;
