@@ -265,6 +265,10 @@ pub struct PeakSet {
     /// levels left that take the full update without the comparisons first ([`PeakSet::update`])
     #[serde(skip)]
     full_for: CostHint,
+    /// the levels the next failed comparisons give the full update to at once: 0 after comparisons that
+    /// passed, then 1, 2, 4, ... up to [`RETRY`] while they keep failing ([`PeakSet::update`])
+    #[serde(skip)]
+    backoff: CostHint,
     /// each probe component's quiet interval (module documentation)
     #[serde(skip)]
     quiet: QuietIntervals,
@@ -351,7 +355,8 @@ impl PartialEq for CostHint {
     }
 }
 
-/// Levels that take the full update after one that changed a probe's peak, rise, fall or crossing.
+/// The most levels that take the full update at once after one that changed a probe's peak, rise, fall
+/// or crossing ([`PeakSet::backoff`]).
 const RETRY: u32 = 16;
 
 /// One phase: the time between two events.
@@ -406,6 +411,7 @@ impl PeakSet {
             supports: vec![SupportPeaks::default(); supports],
             spans: vec![SpanPeaks::default(); spans],
             full_for: CostHint::default(),
+            backoff: CostHint::default(),
             quiet: QuietIntervals { lo: vec![[0.0; 3]; probes], hi: vec![[0.0; 3]; probes], armed: false },
         }
     }
@@ -461,6 +467,7 @@ impl PeakSet {
                 }
             }
             if inside {
+                self.backoff.0 = 0;
                 record_all(&mut self.crossings[..n], t, d);
                 self.update_supports(cur);
                 return;
@@ -468,9 +475,13 @@ impl PeakSet {
         }
         // At most levels no probe's peak, rise, fall or crossing changes: the level is then at most
         // recorded as each component's crossings' last one, which is all the full update would do with it.
-        // One pass of comparisons finds that out; after a level where it did not hold (a displacement
-        // growing from level to level, as under heating), the next `RETRY` levels take the full update at
-        // once. (Indexed slices of one length: a zip of five iterators cost more than the comparisons.)
+        // One pass of comparisons finds that out. Where it does not hold at level after level (a
+        // displacement growing from level to level, as under heating), the comparisons are left out for
+        // the next 1, 2, 4, ... `RETRY` levels, which take the full update at once; where it fails once
+        // (a component at rounding level about the chord point, as the mid-span probe's along the line in
+        // a symmetric span, changing its sign inside the crossing band), the next level compares again, and
+        // the sets return to the quiet intervals and the gate at once. (Indexed slices of one length: a
+        // zip of five iterators cost more than the comparisons.)
         if self.full_for.0 == 0 {
             let (p, r, f, c) = (&self.probes[..n], &self.rises[..n], &self.falls[..n], &mut self.crossings[..n]);
             let mut quiet = true;
@@ -484,12 +495,14 @@ impl PeakSet {
                 }
             }
             if quiet {
+                self.backoff.0 = 0;
                 record_all(c, t, d);
                 self.arm(band_m);
                 self.update_supports(cur);
                 return;
             }
-            self.full_for.0 = RETRY;
+            self.full_for.0 = self.backoff.0;
+            self.backoff.0 = (2 * self.backoff.0).clamp(1, RETRY);
         } else {
             self.full_for.0 -= 1;
         }
@@ -1206,6 +1219,53 @@ mod tests {
         assert!(above > 1000 && below > 1000, "{above} rounded sums above the exact one, {below} below");
         assert_eq!((sum_floor(0.0, 0.0), sum_ceil(-0.0, 0.0)), (0.0, 0.0));
         assert!(sum_floor(f64::INFINITY, 1.0).is_nan() && sum_ceil(1.0, f64::NEG_INFINITY).is_nan());
+    }
+
+    /// The comparisons' back-off: a component at rounding level about the chord point that changes its
+    /// sign inside the crossing band at one level (the mid-span probe's along-line displacement of a
+    /// symmetric span) costs that level's full update and one more level of comparisons, after which the
+    /// set is on its quiet intervals again; a component that changes at every level (a steady growth)
+    /// leaves the comparisons out for 1, 2, 4, ... 16 levels. Either way the peaks are those of a set
+    /// that takes the full update at every level.
+    #[test]
+    fn comparisons_back_off_only_while_they_keep_failing() {
+        let band = 1e-9 * 400.0;
+        let (mut set, mut reference) = (PeakSet::sized(1, 0, 0), PeakSet::sized(1, 0, 0));
+        let level = |set: &mut PeakSet, reference: &mut PeakSet, n: usize, d: [f64; 3]| {
+            let t = n as f64 * 0.01;
+            let c = Current { t, tau: t, disp: vec![d], band_m: band, ..Default::default() };
+            set.update(&c);
+            reference.full_for.0 = u32::MAX;
+            reference.update(&c);
+            assert_eq!(set, reference, "level {n}");
+            set.quiet.armed && set.full_for.0 == 0
+        };
+        // Quiet: a fixed blow-out and sag, the along-line component at +-3e-13 m (inside the band).
+        let mut n = 0;
+        for _ in 0..10 {
+            level(&mut set, &mut reference, n, [5.0, 3e-13, -12.0]);
+            n += 1;
+        }
+        for cycle in 0..6 {
+            // A sign change inside the band: this level takes the full update, the next compares and arms.
+            let d = [5.0, if cycle % 2 == 0 { -3e-13 } else { 3e-13 }, -12.0];
+            assert!(!level(&mut set, &mut reference, n, d), "level {n}");
+            assert!(level(&mut set, &mut reference, n + 1, d), "level {}", n + 1);
+            assert!(level(&mut set, &mut reference, n + 2, d), "level {}", n + 2);
+            n += 3;
+        }
+        // Growth at every level: the full update at every level, the comparisons at levels 1, 2, 4, 8, 16
+        // and then every 17th level apart from the first failing one.
+        let mut compared = Vec::new();
+        for m in 0..80 {
+            let before = set.full_for.0;
+            level(&mut set, &mut reference, n, [5.0 + 1e-3 * (m + 1) as f64, 3e-13, -12.0]);
+            if before == 0 {
+                compared.push(m);
+            }
+            n += 1;
+        }
+        assert_eq!(&compared[..7], &[0, 1, 3, 6, 11, 20, 37], "levels with comparisons: {compared:?}");
     }
 
     /// A set updated as the runs do it (quiet intervals, the comparisons, the full update after a change)
