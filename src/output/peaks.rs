@@ -381,6 +381,14 @@ fn record_all(c: &mut [[Crossings; 3]], t: f64, d: &[[f64; 3]]) {
     }
 }
 
+/// A support force's magnitude `|F| = sqrt(f1^2 + f2^2 + f3^2)` [N], formed where it is compared: the
+/// gate and each set's update form the same value (a loop forming every support's once per level cost
+/// more than the square roots it saves, for the two supports of a span).
+#[inline(always)]
+fn magnitude(f: &[f64; 3]) -> f64 {
+    (f[0] * f[0] + f[1] * f[1] + f[2] * f[2]).sqrt()
+}
+
 fn signed(p: &mut Peak, v: f64, t: f64, tau: f64) {
     if v.abs() > p.value_m.abs() {
         *p = Peak { value_m: v, time_s: t, tau };
@@ -528,12 +536,12 @@ impl PeakSet {
         self.update_supports(cur);
     }
 
-    /// The supports' part of [`PeakSet::update`]: the forces with their magnitudes `|F|` (formed once per
-    /// level, [`Current::magnitudes`]), then the swings.
+    /// The supports' part of [`PeakSet::update`]: the forces with their magnitudes `|F|`
+    /// ([`magnitude`]), then the swings.
     fn update_supports(&mut self, c: &Current) {
         let (t, tau) = (c.t, c.tau);
-        for ((s, (_, f)), &m) in self.supports.iter_mut().zip(&c.forces).zip(&c.magnitudes) {
-            largest(&mut s.magnitude, m, t, tau);
+        for (s, (_, f)) in self.supports.iter_mut().zip(&c.forces) {
+            largest(&mut s.magnitude, magnitude(f), t, tau);
             for k in 0..3 {
                 signed_force(&mut s.components[k], f[k], t, tau);
             }
@@ -668,8 +676,8 @@ impl Gate {
                 ok &= !(x < b[1]);
             }
         }
-        for (((_, f), &m), b) in c.forces.iter().zip(&c.magnitudes).zip(&self.supports) {
-            ok &= !(m > b[0]) & !(f[0].abs() > b[1]) & !(f[1].abs() > b[2]) & !(f[2].abs() > b[3]);
+        for ((_, f), b) in c.forces.iter().zip(&self.supports) {
+            ok &= !(magnitude(f) > b[0]) & !(f[0].abs() > b[1]) & !(f[1].abs() > b[2]) & !(f[2].abs() > b[3]);
         }
         let n = self.lo.len();
         let (lo, hi, d) = (&self.lo[..n], &self.hi[..n], &c.disp.as_flattened()[..n]);
@@ -777,8 +785,6 @@ struct Current {
     disp: Vec<[f64; 3]>,
     /// support forces [N]
     forces: Vec<(usize, [f64; 3])>,
-    /// their magnitudes `|F| = sqrt(f1^2 + f2^2 + f3^2)` [N], formed once for every set
-    magnitudes: Vec<f64>,
     /// string swings per support (`None` without a string; the list is empty where the wire has no
     /// strings): the arguments `[y, x]` of the angle along, `atan2(y, x)` [m], and the angle across [deg]
     swings: Vec<Option<([f64; 2], f64)>>,
@@ -831,7 +837,6 @@ impl Peaks {
             ground,
             current: Current {
                 disp: vec![[0.0; 3]; n],
-                magnitudes: vec![0.0; supports],
                 spans: vec![(0.0, None); k],
                 ..Default::default()
             },
@@ -881,10 +886,6 @@ impl Observer for Peaks {
             *d = p.displacement_in(x);
         }
         s.support_forces(&mut c.forces);
-        // (One entry per support from the start, written in place.)
-        for (m, (_, f)) in c.magnitudes.iter_mut().zip(&c.forces) {
-            *m = (f[0] * f[0] + f[1] * f[1] + f[2] * f[2]).sqrt();
-        }
         let w = s.wire();
         c.swings.clear();
         // Without strings no support has a swing (an empty list pairs with no support in the update).
@@ -1169,7 +1170,6 @@ mod tests {
             let c = Current {
                 t,
                 forces: vec![(0, [0.0; 3])],
-                magnitudes: vec![0.0],
                 swings: vec![Some(([y, x], across))],
                 ..Default::default()
             };
