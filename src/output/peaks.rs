@@ -835,11 +835,7 @@ impl Peaks {
             supports,
             spans,
             ground,
-            current: Current {
-                disp: vec![[0.0; 3]; n],
-                spans: vec![(0.0, None); k],
-                ..Default::default()
-            },
+            current: Current { disp: vec![[0.0; 3]; n], spans: vec![(0.0, None); k], ..Default::default() },
             phase_updated: false,
             run_started: false,
             run_is_phase: false,
@@ -1167,12 +1163,8 @@ mod tests {
         for (n, &(y, x)) in levels.iter().enumerate() {
             let t = n as f64;
             let across = (n % 7) as f64 - 3.0;
-            let c = Current {
-                t,
-                forces: vec![(0, [0.0; 3])],
-                swings: vec![Some(([y, x], across))],
-                ..Default::default()
-            };
+            let c =
+                Current { t, forces: vec![(0, [0.0; 3])], swings: vec![Some(([y, x], across))], ..Default::default() };
             set.update(&c);
             let along = y.atan2(x).to_degrees();
             for (k, a) in [along, across].into_iter().enumerate() {
