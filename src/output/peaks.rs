@@ -74,6 +74,7 @@
 use serde::Serialize;
 
 use super::probe::ProbePoint;
+use crate::element::scalar::dot3;
 use crate::element::tension::LawKind;
 use crate::observer::{Control, Level, Observer, OutputError};
 use crate::scheme::Ground;
@@ -381,12 +382,12 @@ fn record_all(c: &mut [[Crossings; 3]], t: f64, d: &[[f64; 3]]) {
     }
 }
 
-/// A support force's magnitude `|F| = sqrt(f1^2 + f2^2 + f3^2)` [N], formed where it is compared: the
-/// gate and each set's update form the same value (a loop forming every support's once per level cost
-/// more than the square roots it saves, for the two supports of a span).
+/// A support force's magnitude `|F| = sqrt(f1^2 + f2^2 + f3^2)` [N] (the elements' [`dot3`]), formed
+/// where it is compared: the gate and each set's update form the same value (a loop forming every
+/// support's once per level cost more than the square roots it saves, for the two supports of a span).
 #[inline(always)]
 fn magnitude(f: &[f64; 3]) -> f64 {
-    (f[0] * f[0] + f[1] * f[1] + f[2] * f[2]).sqrt()
+    dot3(*f, *f).sqrt()
 }
 
 fn signed(p: &mut Peak, v: f64, t: f64, tau: f64) {

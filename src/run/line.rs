@@ -22,6 +22,7 @@ use std::time::Instant;
 
 use serde::Serialize;
 
+use crate::element::scalar::dot3;
 use crate::events::EventState;
 use crate::line::clearance::{ClearanceTracker, LeastClearance};
 use crate::line::{LinkKind, Role};
@@ -653,7 +654,7 @@ pub fn run_line_observed<'o>(
         resultants.clear();
         resultants.extend((0..towers.len()).map(|s| line.support_resultant_into(s, &mut reactions)));
         for (s, &f) in resultants.iter().enumerate() {
-            let m = (f[0] * f[0] + f[1] * f[1] + f[2] * f[2]).sqrt();
+            let m = dot3(f, f).sqrt();
             if m > tower_peak[s].1 {
                 tower_peak[s] = (f, m, t);
             }
