@@ -33,6 +33,9 @@ pub trait Scalar:
     fn abs(self) -> Self;
     /// `max(self, lo)` for a constant `lo` (derivative 0 where the constant is taken)
     fn max_c(self, lo: f64) -> Self;
+    /// A zero with the sign of the product `self * o` (a constant: no derivative), which is what the
+    /// product of `self`, `+0` and `o` is for finite numbers, without the multiplications.
+    fn zero_signed_by(self, o: Self) -> Self;
 }
 
 impl Scalar for f64 {
@@ -60,6 +63,10 @@ impl Scalar for f64 {
     fn max_c(self, lo: f64) -> Self {
         self.max(lo)
     }
+    #[inline(always)]
+    fn zero_signed_by(self, o: Self) -> Self {
+        f64::from_bits((self.to_bits() ^ o.to_bits()) & (1 << 63))
+    }
 }
 
 impl<const S: usize> Scalar for Dual<S> {
@@ -86,6 +93,10 @@ impl<const S: usize> Scalar for Dual<S> {
     #[inline(always)]
     fn max_c(self, lo: f64) -> Self {
         Dual::max_c(self, lo)
+    }
+    #[inline(always)]
+    fn zero_signed_by(self, o: Self) -> Self {
+        Dual::c(self.v.zero_signed_by(o.v))
     }
 }
 

@@ -472,9 +472,10 @@ pub struct Explicit {
     /// whether every node's exposure (the ground contact's share of its load, [`contact`]) is 1 (`None`:
     /// not known since the wire or the ground last changed; only asked without a ground)
     all_exposed: Option<bool>,
-    /// whether every segment is intact (`intact = 1`: no break), and whether every segment is at the
-    /// conductor's own wind diameter (factor 1: no ice); `None`: not known since the wire last changed
-    plain: Option<(bool, bool)>,
+    /// whether every segment is intact (`intact = 1`: no break), and the wind diameter factor every
+    /// segment shares, if they share one (1 bare, `(d + 2 t) / d` under a uniform ice shell); `None`: not
+    /// known since the wire last changed
+    plain: Option<(bool, Option<f64>)>,
     /// `1.0 / l0` of every segment [1/m], for the segment pass; valid while `inv_rest_length_fresh`
     inv_rest_length: Vec<f64>,
     /// `inv_rest_length` holds the wire's stress-free lengths (false once the wire may have changed)
@@ -942,7 +943,12 @@ impl Explicit {
             Some(WindLoad::Aerodynamic(mut a)) => {
                 a.qd_cn *= scale;
                 a.qd_ct *= scale;
-                self.dispatch_gate(a, a.direction, q);
+                // Without a tangential coefficient (the codes' drag), the law without its tangential
+                // term: the same bits, fewer operations ([`NormalDrag`]).
+                match a.normal_only() {
+                    Some(n) => self.dispatch_gate(n, a.direction, q),
+                    None => self.dispatch_gate(a, a.direction, q),
+                }
             }
         }
     }
@@ -1044,11 +1050,15 @@ impl Explicit {
             }
             self.inv_rest_length_fresh = true;
         }
-        // No break (and no ice): the factors `intact = 1` (and `k = 1`) enter as constants, whose products
-        // (`T * 1`, `0.5 * 1`, `q d c * 1`) are the other factor exactly, and are left out.
-        let (intact_all, unit_k) = *self.plain.get_or_insert_with(|| {
+        // No break: the factor `intact = 1` enters as a constant, whose products (`T * 1`, `0.5 * 1`) are
+        // the other factor exactly, and are left out. One diameter factor `k` on every segment (1 bare, or
+        // a uniform ice shell): the law on that diameter is formed once (its `q d c * k`, the products
+        // each segment formed) and evaluated at `k = 1` (`q d c k * 1` is `q d c k`): the same bits.
+        let (intact_all, shared_k) = *self.plain.get_or_insert_with(|| {
             let w = &self.wire;
-            (w.intact.iter().all(|&x| x == 1.0), w.wind_diameter_factor.iter().all(|&k| k == 1.0))
+            let k0 = w.wind_diameter_factor.first().copied().unwrap_or(1.0);
+            let shared = w.wind_diameter_factor.iter().all(|k| k.to_bits() == k0.to_bits());
+            (w.intact.iter().all(|&x| x == 1.0), shared.then_some(k0))
         });
         // No load: the shares are `+0.0` (`0 * intact / 2`, intact 1 or 0), written into `es` once.
         if W::ZERO && !UNIFORM {
@@ -1099,15 +1109,16 @@ impl Explicit {
         // the one the single loop forms (stored and loaded as it is), so the result is bitwise the same;
         // two shorter dependency chains per iteration let the processor overlap more segments.
         let len = &mut self.seg_len[..n];
-        let kmax = match (intact_all, unit_k) {
-            (true, true) => {
+        let kmax = match (intact_all, shared_k) {
+            (true, Some(k)) => {
                 let kmax = tension_loop::<L, VISCOUS, true>(
                     kmax, x1, x2, x3, v1, v2, v3, inv_l0, ea, eta, intact, fs1, fs2, fs3, es1, es2, es3, len,
                 );
-                load_loop::<W, UNIFORM, true, true>(load, q, v1, v2, v3, len, lref, intact, dfac, es1, es2, es3);
+                let load = load.at_diameter_factor(k);
+                load_loop::<W, UNIFORM, true, true>(&load, q, v1, v2, v3, len, lref, intact, dfac, es1, es2, es3);
                 kmax
             }
-            (true, false) => {
+            (true, None) => {
                 let kmax = tension_loop::<L, VISCOUS, true>(
                     kmax, x1, x2, x3, v1, v2, v3, inv_l0, ea, eta, intact, fs1, fs2, fs3, es1, es2, es3, len,
                 );
@@ -1765,7 +1776,9 @@ fn tension_loop<L: TensionLaw, const VISCOUS: bool, const INTACT: bool>(
 }
 
 /// The load loop of [`Explicit::segment_pass_body`]: each segment's load share from its tangent (in `es`)
-/// and length (`len`) into `es`. Every slice has the length of `es1`.
+/// and length (`len`) into `es`. `UNIT_K`: `load` is the law on the diameter every segment shares
+/// ([`SegmentLoad::at_diameter_factor`]), evaluated at `k = 1`; else each segment's factor from `dfac`.
+/// Every slice has the length of `es1`.
 #[inline(always)]
 #[allow(clippy::too_many_arguments)]
 fn load_loop<W: SegmentLoad, const UNIFORM: bool, const INTACT: bool, const UNIT_K: bool>(
@@ -1790,7 +1803,7 @@ fn load_loop<W: SegmentLoad, const UNIFORM: bool, const INTACT: bool, const UNIT
         let (va, vb) = ([v1a[j], v2a[j], v3a[j]], [v1b[j], v2b[j], v3b[j]]);
         // `e` and `edot` are not read by the load.
         let st = segment::Stretch { len: len[j], t: [es1[j], es2[j], es3[j]], e: 0.0, edot: 0.0 };
-        // `INTACT`, `UNIT_K`: every segment intact, at the conductor's own diameter; the factor the constant 1.
+        // `INTACT`, `UNIT_K`: every segment intact, at the diameter of `load`; the factor the constant 1.
         let it = if INTACT { 1.0 } else { intact[j] };
         let k = if UNIT_K { 1.0 } else { dfac[j] };
         let e = segment::share::<f64, W, UNIFORM>(load, &st, va, vb, q, lref[j], it, k);
@@ -1975,6 +1988,7 @@ fn smooth_drift_loop<const WEIGHTED: bool, const PLANAR: bool>(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::element::aero::Aerodynamic;
     use crate::scheme::configs::Config;
 
     /// The step as first written (three unfused passes: kick, smoothing, drift), kept as the reference
@@ -2077,10 +2091,12 @@ mod tests {
         }
     }
 
-    /// The passes' shortcuts for a plain wire (every segment intact at the conductor's diameter: the
-    /// factors 1 left out) and for full exposure (no ground: `* 1` left out) give the bits of the general
-    /// passes: the option cases stepped 300 times with the shortcuts and with the general passes forced,
-    /// and an iced case (wind diameter factor 1.4 on every third segment), which is not plain.
+    /// The passes' shortcuts for a plain wire (every segment intact, at one diameter: the factors 1 left
+    /// out, the law on the shared diameter formed once) and for full exposure (no ground: `* 1` left out)
+    /// give the bits of the general passes: the option cases stepped 300 times with the shortcuts and with
+    /// the general passes forced, an iced case (wind diameter factor 1.4 on every third segment), whose
+    /// diameters differ, and a uniformly iced one (1.35 on every segment, in a wind without a tangential
+    /// coefficient: the IEC combined case), whose law is formed once.
     #[test]
     fn plain_wire_and_full_exposure_shortcuts_change_no_bit() {
         let mut cases = option_cases();
@@ -2090,12 +2106,19 @@ mod tests {
             iced.wire.wind_diameter_factor[j] = 1.4;
         }
         cases.push(("iced".into(), iced));
-        let (mut shortcuts, mut iced_intact) = (0, 0);
+        let mut uniform = Config::Wind3d.solver(41);
+        uniform.params.smoothing = 0.02;
+        uniform.wire.wind_diameter_factor.fill(1.35);
+        if let Some(WindLoad::Aerodynamic(a)) = &mut uniform.loads.wind {
+            a.qd_ct = 0.0;
+        }
+        cases.push(("uniformly iced".into(), uniform));
+        let (mut shortcuts, mut iced_intact, mut uniformly_iced) = (0, 0, 0);
         for (name, mut fast) in cases {
             let mut general = fast.clone();
             let dt = fast.params.dt_s;
             for step in 0..300 {
-                (general.plain, general.all_exposed) = (Some((false, false)), Some(false));
+                (general.plain, general.all_exposed) = (Some((false, None)), Some(false));
                 assert_eq!(fast.step(dt).is_ok(), general.step(dt).is_ok(), "{name}: step {step}");
             }
             for k in 0..3 {
@@ -2104,10 +2127,15 @@ mod tests {
                 assert_eq!(bits(&fast.es[k]), bits(&general.es[k]), "{name}: es{k}");
             }
             assert_bitwise(&fast, &general, &name);
-            shortcuts += usize::from(fast.plain == Some((true, true))) + usize::from(fast.all_exposed == Some(true));
-            iced_intact += usize::from(fast.plain == Some((true, false)));
+            shortcuts +=
+                usize::from(fast.plain == Some((true, Some(1.0)))) + usize::from(fast.all_exposed == Some(true));
+            iced_intact += usize::from(fast.plain == Some((true, None)));
+            uniformly_iced += usize::from(fast.plain == Some((true, Some(1.35))));
         }
-        assert!(shortcuts >= 6 && iced_intact == 1, "{shortcuts} shortcuts taken, {iced_intact} iced and intact");
+        assert!(
+            shortcuts >= 6 && iced_intact == 1 && uniformly_iced == 1,
+            "{shortcuts} shortcuts taken, {iced_intact} iced and intact, {uniformly_iced} uniformly iced"
+        );
     }
 
     #[test]
@@ -2152,6 +2180,55 @@ mod tests {
                 let zeros = fused.es.iter().flatten().all(|e| e.to_bits() == 0);
                 assert_eq!(zeros, w.is_none(), "stretch {stretch}: es all +0 exactly when calm");
             }
+        }
+    }
+
+    /// The kernel takes an aerodynamic wind without a tangential coefficient as a
+    /// [`crate::element::aero::NormalDrag`]; its
+    /// segment pass gives the general law's bits. Three wires in that wind (plain; Kelvin-Voigt with
+    /// smoothing and a third of the segments iced, `k = 1.35`; a broken segment with the downwind gate of
+    /// the paper's gust), each stepped 400 times from the straight chord with the wind ramped on over the
+    /// first 100 steps (its zero start included); at every level a copy evaluates the forces through the
+    /// general law, compared in the tension forces and the load shares.
+    #[test]
+    fn normal_drag_pass_gives_the_general_laws_bits() {
+        let mut cases = Vec::new();
+        let mut plain = Config::Wind3d.solver(40);
+        if let Some(WindLoad::Aerodynamic(a)) = &mut plain.loads.wind {
+            a.qd_ct = 0.0;
+        }
+        cases.push(("plain", plain.clone()));
+        let mut iced = plain.clone();
+        iced.params.smoothing = 0.02;
+        for j in 0..iced.wire.segments() {
+            iced.wire.internal_friction_n_s[j] = 2.0;
+            if j % 3 == 0 {
+                iced.wire.wind_diameter_factor[j] = 1.35;
+            }
+        }
+        cases.push(("iced, Kelvin-Voigt, smoothing", iced));
+        let mut broken = plain;
+        broken.wire.break_segment(13);
+        broken.loads.wind_gate = WindGate::Downwind;
+        cases.push(("broken, downwind", broken));
+        for (name, mut s) in cases {
+            let Some(WindLoad::Aerodynamic(law)) = s.loads.wind else { unreachable!() };
+            let dt = s.params.dt_s;
+            for step in 0..400 {
+                s.loads.wind_scale = (step as f64 / 100.0).min(1.0);
+                let mut general = s.clone();
+                s.evaluate_forces();
+                let scale = s.loads.wind_scale;
+                let a = Aerodynamic { qd_cn: law.qd_cn * scale, qd_ct: law.qd_ct * scale, ..law };
+                assert!(a.normal_only().is_some());
+                general.dispatch_gate(a, a.direction, s.loads.uniform_load_n_per_m);
+                let bits = |x: &[Vec<f64>; 3]| x.iter().flatten().map(|v| v.to_bits()).collect::<Vec<_>>();
+                assert_eq!(bits(&s.fs), bits(&general.fs), "{name}, step {step}: tension forces");
+                assert_eq!(bits(&s.es), bits(&general.es), "{name}, step {step}: load shares");
+                s.step(dt).unwrap();
+            }
+            // The wire has left its chord across the wind.
+            assert!(s.wire.x[0].iter().any(|&x| x.abs() > 1e-3), "{name}");
         }
     }
 
