@@ -2184,8 +2184,7 @@ mod tests {
     }
 
     /// The kernel takes an aerodynamic wind without a tangential coefficient as a
-    /// [`crate::element::aero::NormalDrag`]; its
-    /// segment pass gives the general law's bits. Three wires in that wind (plain; Kelvin-Voigt with
+    /// [`crate::element::aero::NormalDrag`]; its segment pass gives the general law's bits. Three wires in that wind (plain; Kelvin-Voigt with
     /// smoothing and a third of the segments iced, `k = 1.35`; a broken segment with the downwind gate of
     /// the paper's gust), each stepped 400 times from the straight chord with the wind ramped on over the
     /// first 100 steps (its zero start included); at every level a copy evaluates the forces through the
