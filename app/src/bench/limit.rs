@@ -24,10 +24,10 @@
 //! division and a square root also take `o_div`, `o_sqrt` cycles of a multiply pipe per instruction,
 //! measured ([`super::pipes`]): the multiply pipes count `mul + cmp + div o_div + sqrt o_sqrt`
 //! multiplications' worth.
-//! Loads and stores are not measured: a core of AMD family 17h-19h or Intel since Haswell issues two
+//! Loads and stores are not measured: a core of AMD family 17h-1Ah or Intel since Haswell issues two
 //! vector loads and one vector store per cycle, so `c_load = 1 / (2 w)`, `c_store = 1 / w` for `w`
-//! doubles per vector of the instruction set (4 for AVX2 and for AVX-512 on Zen 4, which splits a 512-bit
-//! access in two; 2 for the SSE2 baseline). Everything outside the core (L2, L3, memory bandwidth,
+//! doubles per access ([`super::access_doubles`]: 8 for AVX-512, but 4 on Zen 4, which splits a 512-bit
+//! access in two; 4 for AVX2; 2 for the SSE2 baseline). Everything outside the core (L2, L3, memory bandwidth,
 //! latency chains, loop overhead) is what the fraction measures the kernel's distance by: the limit is
 //! the core's, the same at every `N`.
 //!
@@ -155,18 +155,9 @@ pub struct Limit {
     pub passes_node_steps_per_s: f64,
 }
 
-/// Doubles per vector of the kernel's instruction set (`"avx512"`, `"avx2"` or the baseline's SSE2).
-fn doubles_per_access(isa: &str) -> f64 {
-    match isa {
-        // Zen 4 executes a 512-bit load or store as two 256-bit ones.
-        "avx512" | "avx2" => 4.0,
-        _ => 2.0,
-    }
-}
-
 /// The busiest unit of `o` and its cycles on a core with the primitives `p`.
 fn busiest(o: &Ops, p: &Primitives) -> (&'static str, f64) {
-    let w = doubles_per_access(p.isa);
+    let w = p.access_doubles;
     let units = [
         (
             "multiply pipes",
@@ -215,6 +206,7 @@ mod tests {
             // The write-up's derivation takes the divider as a unit of its own.
             div_mul_cycles: 0.0,
             sqrt_mul_cycles: 0.0,
+            access_doubles: 4.0,
         };
         for (c, total, unit, cycles, expect) in [
             (Config::PlaneWeight, ops(24, 16, 1, 1, 17, 7), "divider", 3.5, 1.0446e9),

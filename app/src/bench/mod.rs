@@ -275,8 +275,9 @@ pub fn measure_run(n: usize, reps: usize, out_dir: &Path) -> Result<RunTiming, R
 /// Measured costs of the primitive operations on this core, for the limit estimate.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Primitives {
-    /// core clock [Hz], from a chain of dependent double additions (latency 3 cycles on AMD Zen 2-4 and
-    /// Intel Skylake and later, Agner Fog's instruction tables)
+    /// core clock [Hz], from a chain of dependent integer additions of two registers ([`add_chain`]:
+    /// latency 1 cycle on every x86-64 core, Agner Fog's instruction tables; a double addition's latency
+    /// is not the same everywhere: 3 cycles on AMD Zen 2-4, 2 on Zen 5, 4 on Intel Skylake)
     pub clock_hz: f64,
     /// the instruction set the square roots and divisions were compiled for: the kernel's
     /// ([`ohl::scheme::explicit::kernel_instruction_set`])
@@ -294,6 +295,35 @@ pub struct Primitives {
     pub div_mul_cycles: f64,
     /// multiply-pipe cycles a packed square root takes ([`pipes`]; 0 where not measured) [cycles]
     pub sqrt_mul_cycles: f64,
+    /// doubles one load or store instruction of the kernel's instruction set moves at the core's full
+    /// rate of two loads and one store per cycle ([`access_doubles`]) [doubles]
+    pub access_doubles: f64,
+}
+
+/// Doubles per load or store at full rate in the instruction set `isa`: a vector's (8 for AVX-512, 4
+/// for AVX2, 2 for SSE2), except that AMD family 19h (Zen 4) executes a 512-bit access as two 256-bit
+/// ones (AMD's Software Optimization Guide for family 19h), so 4 there; Zen 5 (family 1Ah) and Intel's
+/// AVX-512 cores move 512 bits per access. Read from `/proc/cpuinfo`'s vendor and family.
+pub fn access_doubles(isa: &str) -> f64 {
+    access_doubles_of(isa, &std::fs::read_to_string("/proc/cpuinfo").unwrap_or_default())
+}
+
+/// [`access_doubles`] of a processor whose `/proc/cpuinfo` is `cpuinfo`.
+fn access_doubles_of(isa: &str, cpuinfo: &str) -> f64 {
+    let field = |name: &str| {
+        cpuinfo
+            .lines()
+            .find(|l| l.split(':').next().is_some_and(|k| k.trim() == name))
+            .and_then(|l| l.split(':').nth(1))
+            .map(str::trim)
+    };
+    let amd_family_19h = field("vendor_id") == Some("AuthenticAMD") && field("cpu family") == Some("25");
+    match isa {
+        "avx512" if amd_family_19h => 4.0,
+        "avx512" => 8.0,
+        "avx2" => 4.0,
+        _ => 2.0,
+    }
 }
 
 #[inline(always)]
@@ -311,9 +341,13 @@ fn div_body(a: &[f64], out: &mut [f64]) {
 }
 
 /// `body` compiled for the baseline, AVX2 and AVX-512 (F, DQ, VL), as the kernel's passes are
-/// (`src/scheme/explicit.rs`), and a function running the copy of the instruction set named.
+/// (`src/scheme/explicit.rs`), and a function running the copy of the instruction set named; with a
+/// third argument the AVX-512 copy runs that body instead (more accumulators, [`lanes`]).
 macro_rules! isa_copies {
     ($name:ident, $body:ident) => {
+        isa_copies!($name, $body, $body);
+    };
+    ($name:ident, $body:expr, $wide:expr) => {
         fn $name(isa: &str, a: &[f64], out: &mut [f64]) {
             #[inline(never)]
             fn baseline(a: &[f64], out: &mut [f64]) {
@@ -329,7 +363,7 @@ macro_rules! isa_copies {
             #[inline(never)]
             #[target_feature(enable = "avx2,avx512f,avx512dq,avx512vl")]
             fn avx512(a: &[f64], out: &mut [f64]) {
-                $body(a, out)
+                $wide(a, out)
             }
             #[cfg(target_arch = "x86_64")]
             match isa {
@@ -343,47 +377,78 @@ macro_rules! isa_copies {
     };
 }
 
-/// Independent accumulators of the multiply and add throughput loops: 8 vectors of 4 (AVX2) or 4 of 8
-/// (AVX-512), more than the pipes' latency (3-4 cycles) times their number (2) in vectors in flight, so
-/// the loop is bound by throughput, not by the dependent chain of each accumulator.
-const LANES: usize = 32;
+/// Independent accumulators of the multiply and add throughput loops [doubles]: 8 vectors of 4 (AVX2)
+/// or of 8 (AVX-512; 64 doubles), at least the pipes' latency (2-4 cycles) times their number (2) in
+/// vectors in flight, so that the loop is bound by throughput, not by the dependent chain of each
+/// accumulator. (Four 512-bit accumulators were enough on Zen 4, whose pipes take a 512-bit operation in
+/// two halves; on Zen 5's full-width pipes they held the multiplications to 4 per 3 cycles, 2/3 of
+/// the throughput.)
+fn lanes(isa: &str) -> usize {
+    if isa == "avx512" { 64 } else { 32 }
+}
 
-/// `rounds` times `a *= k` on every accumulator (`out` holds them; `a[0]` is the factor).
+/// `rounds` times `a *= k` on each of `L` accumulators (`out` holds them; `a[0]` is the factor).
 #[inline(always)]
-fn mul_body(a: &[f64], out: &mut [f64]) {
+fn mul_body<const L: usize>(a: &[f64], out: &mut [f64]) {
     let (k, rounds) = (a[0], a.len());
-    let mut acc = [1.0; LANES];
+    let mut acc = [1.0; L];
     for _ in 0..rounds {
         for x in acc.iter_mut() {
             *x *= k;
         }
     }
-    out[..LANES].copy_from_slice(&acc);
+    out[..L].copy_from_slice(&acc);
 }
 
-/// `rounds` times `a += k` on every accumulator (as [`mul_body`]).
+/// `rounds` times `a += k` on each of `L` accumulators (as [`mul_body`]).
 #[inline(always)]
-fn add_body(a: &[f64], out: &mut [f64]) {
+fn add_body<const L: usize>(a: &[f64], out: &mut [f64]) {
     let (k, rounds) = (a[0], a.len());
-    let mut acc = [0.0; LANES];
+    let mut acc = [0.0; L];
     for _ in 0..rounds {
         for x in acc.iter_mut() {
             *x += k;
         }
     }
-    out[..LANES].copy_from_slice(&acc);
+    out[..L].copy_from_slice(&acc);
 }
 
 isa_copies!(sqrt_array, sqrt_body);
 isa_copies!(div_array, div_body);
-isa_copies!(mul_lanes, mul_body);
-isa_copies!(add_lanes, add_body);
+isa_copies!(mul_lanes, mul_body::<32>, mul_body::<64>);
+isa_copies!(add_lanes, add_body::<32>, add_body::<64>);
 
+/// Cycles per step of [`add_chain`]'s chain.
+#[cfg(target_arch = "x86_64")]
+const CHAIN_LATENCY: f64 = 1.0;
+#[cfg(not(target_arch = "x86_64"))]
+const CHAIN_LATENCY: f64 = 3.0;
+
+/// A chain of `n` (a multiple of 8) dependent additions. On x86-64 integer additions of two registers,
+/// eight per iteration in `asm!` so that the compiler can neither fold nor reorder them: one cycle
+/// each on every core (no core eliminates `add r, r` at renaming), and the loop's counter and branch run
+/// on other ALUs beside the chain. Elsewhere double additions, taken as 3 cycles ([`CHAIN_LATENCY`]).
 #[inline(never)]
-fn add_chain(n: usize, y: f64) -> f64 {
-    let mut x = 0.0;
-    for _ in 0..n {
-        x += y;
+fn add_chain(n: usize, y: u64) -> u64 {
+    let mut x = 0u64;
+    for _ in 0..n / 8 {
+        #[cfg(target_arch = "x86_64")]
+        // SAFETY: register arithmetic only (the flags are clobbered, which `asm!` assumes by default).
+        unsafe {
+            std::arch::asm!(
+                "add {x}, {y}", "add {x}, {y}", "add {x}, {y}", "add {x}, {y}",
+                "add {x}, {y}", "add {x}, {y}", "add {x}, {y}", "add {x}, {y}",
+                x = inout(reg) x, y = in(reg) y, options(nomem, nostack),
+            );
+        }
+        #[cfg(not(target_arch = "x86_64"))]
+        {
+            let mut f = f64::from_bits(x);
+            for _ in 0..8 {
+                f += y as f64;
+            }
+            x = f.to_bits();
+        }
     }
     x
 }
@@ -406,9 +471,9 @@ pub(crate) fn median_of(reps: usize, mut f: impl FnMut()) -> f64 {
 pub fn measure_primitives() -> Primitives {
     let chain = 20_000_000;
     let t_add = median_of(7, || {
-        std::hint::black_box(add_chain(std::hint::black_box(chain), std::hint::black_box(1.0)));
+        std::hint::black_box(add_chain(std::hint::black_box(chain), std::hint::black_box(1)));
     });
-    let clock_hz = 3.0 * chain as f64 / t_add;
+    let clock_hz = CHAIN_LATENCY * chain as f64 / t_add;
     // 1024 doubles: 8 KiB in and out, resident in L1, so the divider is the bottleneck.
     let a: Vec<f64> = (0..1024).map(|i| 1.0 + i as f64 * 1e-3).collect();
     let mut out = vec![0.0; a.len()];
@@ -425,7 +490,7 @@ pub fn measure_primitives() -> Primitives {
             div_array(isa, std::hint::black_box(&a), &mut out);
         }
     });
-    // Multiply and add throughput: LANES accumulators, `a.len()` rounds each (the factor 1 + 2^-40 and
+    // Multiply and add throughput: `lanes(isa)` accumulators, `a.len()` rounds each (the factor 1 + 2^-40 and
     // the increment 1 keep every value finite and normal).
     let k = vec![1.0 + f64::EPSILON * 4096.0; 1024];
     let t_mul = median_of(7, || {
@@ -439,9 +504,9 @@ pub fn measure_primitives() -> Primitives {
             add_lanes(isa, std::hint::black_box(&ones), &mut out);
         }
     });
-    let per_lane = |t: f64| t * clock_hz / (rounds * k.len() * LANES) as f64;
+    let per_lane = |t: f64| t * clock_hz / (rounds * k.len() * lanes(isa)) as f64;
     std::hint::black_box(&out);
-    let (div_mul_cycles, sqrt_mul_cycles) = match pipes::occupancy(clock_hz) {
+    let (div_mul_cycles, sqrt_mul_cycles) = match pipes::occupancy(isa) {
         Some((d, s)) if d.is_finite() && s.is_finite() => (d, s),
         _ => (0.0, 0.0),
     };
@@ -454,6 +519,7 @@ pub fn measure_primitives() -> Primitives {
         div_cycles: per(t_div),
         mul_cycles: per_lane(t_mul),
         add_cycles: per_lane(t_sum),
+        access_doubles: access_doubles(isa),
     }
 }
 
@@ -698,6 +764,31 @@ pub fn scratch_dir() -> PathBuf {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Zen 4 (family 19h, 25) moves a 512-bit access in two halves, Zen 5 (1Ah, 26) and Intel in one;
+    /// AVX2 and SSE2 move their vector's 4 and 2 doubles everywhere.
+    #[test]
+    fn doubles_per_access_follow_the_processor() {
+        let cpu =
+            |vendor: &str, family: u32| format!("processor\t: 0\nvendor_id\t: {vendor}\ncpu family\t: {family}\n");
+        assert_eq!(access_doubles_of("avx512", &cpu("AuthenticAMD", 25)), 4.0);
+        assert_eq!(access_doubles_of("avx512", &cpu("AuthenticAMD", 26)), 8.0);
+        assert_eq!(access_doubles_of("avx512", &cpu("GenuineIntel", 6)), 8.0);
+        assert_eq!(access_doubles_of("avx2", &cpu("AuthenticAMD", 26)), 4.0);
+        assert_eq!(access_doubles_of("baseline", &cpu("AuthenticAMD", 25)), 2.0);
+        assert_eq!(access_doubles_of("avx512", ""), 8.0);
+    }
+
+    /// The primitives of this core are positive and finite, and the clock is a processor's (0.5-7 GHz):
+    /// the integer chain's latency of one cycle is what every x86-64 core has.
+    #[test]
+    fn primitives_are_plausible() {
+        let p = measure_primitives();
+        assert!(p.clock_hz > 0.5e9 && p.clock_hz < 7e9, "{:e}", p.clock_hz);
+        for c in [p.sqrt_cycles, p.div_cycles, p.mul_cycles, p.add_cycles] {
+            assert!(c.is_finite() && c > 0.0, "{p:?}");
+        }
+    }
 
     #[test]
     fn configurations_run_and_stay_in_their_planes() {

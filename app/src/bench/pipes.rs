@@ -1,5 +1,5 @@
 //! How many cycles of the multiply pipes a packed division and a packed square root take from the
-//! multiplications issued beside them (measured, in AVX2 instructions).
+//! multiplications issued beside them (measured, in the kernel's instruction set: AVX-512 or AVX2).
 //!
 //! AMD family 19h has one divide / square-root unit beside its two multiply pipes; LLVM's scheduling
 //! model (`X86ScheduleZnver3.td`) charges a division's whole occupancy (5 cycles for `vdivpd` ymm, 9 for
@@ -9,79 +9,121 @@
 //!
 //! ```text
 //! t_mix = max( t_div,  (M + D o) / 2 )      (two multiply pipes, one slot per vmulpd)
-//! =>  o = (2 t_mix - M) / D                 [multiply-pipe cycles per vdivpd or vsqrtpd]
+//! =>  o = (2 t_mix - M) / D = M (t_mix - t_mul) / (D t_mul)
+//!                                           [multiply-pipe cycles per vdivpd or vsqrtpd]
 //! ```
 //!
 //! with `M` large enough that the multiplications bind (`M / 2 > t_div`): `M = 128`, `D = 8` divisions
-//! or 4 square roots. `o = 0` means the unit runs beside the pipes, `o = 4.5` or `9` LLVM's reading.
-//! The limit ([`super::limit`]) then counts a division as `o_div` multiplications' worth of the multiply
-//! pipes and a square root as `o_sqrt`.
+//! or 4 square roots. The second form takes the cycle from the multiplications alone (`t_mul = M / 2`
+//! cycles), so no clock enters. `o = 0` means the unit runs beside the pipes, `o = 4.5` or `9` LLVM's
+//! reading. The limit ([`super::limit`]) then counts a division as `o_div` multiplications' worth of the
+//! multiply pipes and a square root as `o_sqrt`.
 
 /// Multiply-pipe cycles taken by one packed division and by one packed square root, `(o_div, o_sqrt)`,
-/// from the thread's CPU time and the clock `clock_hz`; `None` without AVX2 (the kernel's baseline copy
-/// runs there, and no such measurement is made).
-pub fn occupancy(clock_hz: f64) -> Option<(f64, f64)> {
+/// in the copy of the instruction set `isa` names (`"avx512"` or `"avx2"`, the kernel's,
+/// [`ohl::scheme::explicit::kernel_instruction_set`]), from the thread's CPU time; `None` for the
+/// baseline (its kernel copy runs without AVX2, and no such measurement is made).
+pub fn occupancy(isa: &str) -> Option<(f64, f64)> {
     #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("avx2") {
-        let cycles = |f: &dyn Fn(usize) -> f64| {
-            let iters = 100_000;
-            super::median_of(7, || {
-                std::hint::black_box(f(iters));
-            }) * clock_hz
-                / iters as f64
+    if isa == "avx512" || isa == "avx2" {
+        // mul, div, div + mul, sqrt, sqrt + mul
+        type Mix = unsafe fn(usize) -> f64;
+        let copies: [Mix; 5] = if isa == "avx512" {
+            use avx512::mix;
+            [mix::<0, 0, 128>, mix::<8, 0, 0>, mix::<8, 0, 128>, mix::<0, 4, 0>, mix::<0, 4, 128>]
+        } else {
+            use avx2::mix;
+            [mix::<0, 0, 128>, mix::<8, 0, 0>, mix::<8, 0, 128>, mix::<0, 4, 0>, mix::<0, 4, 128>]
         };
-        // SAFETY: AVX2 was detected above.
-        let mul = cycles(&|n| unsafe { avx2::mix::<0, 0, 128>(n) });
-        let div = cycles(&|n| unsafe { avx2::mix::<8, 0, 0>(n) });
-        let div_mul = cycles(&|n| unsafe { avx2::mix::<8, 0, 128>(n) });
-        let sqrt = cycles(&|n| unsafe { avx2::mix::<0, 4, 0>(n) });
-        let sqrt_mul = cycles(&|n| unsafe { avx2::mix::<0, 4, 128>(n) });
+        // SAFETY: the kernel reports "avx512" or "avx2" only where the processor has them.
+        let [mul, div, div_mul, sqrt, sqrt_mul] = copies.map(|f| {
+            super::median_of(7, || {
+                std::hint::black_box(unsafe { f(100_000) });
+            })
+        });
         // The multiplications bind only where they alone take longer than the divider alone; the
         // formula's occupancy is then the pipes' extra time over the multiplications' own.
-        let o = |mix: f64, alone: f64, d: f64| {
-            if mul > alone { ((2.0 * mix - 2.0 * mul) / d).max(0.0) } else { f64::NAN }
+        let o = |with: f64, alone: f64, d: f64| {
+            if mul > alone { (128.0 * (with - mul) / (d * mul)).max(0.0) } else { f64::NAN }
         };
         return Some((o(div_mul, div, 8.0), o(sqrt_mul, sqrt, 4.0)));
     }
-    let _ = clock_hz;
+    let _ = isa;
     None
 }
 
-#[cfg(target_arch = "x86_64")]
-mod avx2 {
-    use std::arch::x86_64::*;
+/// `mix::<D, S, M>(iters)`, `iters` times: `D` divisions and `S` square roots of a value the compiler
+/// cannot see (each independent of the others), and `M / 8` rounds of multiplications on 8 independent
+/// accumulators; in the module `$m`, compiled for `$features` with the vector type `$v` of `$w` doubles
+/// and its intrinsics.
+macro_rules! mix_copy {
+    ($m:ident, $features:literal, $v:ty, $w:literal, $set1:ident, $setzero:ident, $mul:ident, $div:ident,
+     $sqrt:ident, $or:ident, $add:ident, $storeu:ident) => {
+        #[cfg(target_arch = "x86_64")]
+        mod $m {
+            use std::arch::x86_64::*;
 
-    /// `iters` times: `D` divisions and `S` square roots of a value the compiler cannot see (each
-    /// independent of the others), and `M / 8` rounds of `vmulpd` on 8 independent accumulators.
-    ///
-    /// # Safety
-    /// Only where the processor has AVX2.
-    #[target_feature(enable = "avx2")]
-    #[inline(never)]
-    pub unsafe fn mix<const D: usize, const S: usize, const M: usize>(iters: usize) -> f64 {
-        let k = _mm256_set1_pd(std::hint::black_box(1.0 + 1e-15));
-        let x = _mm256_set1_pd(std::hint::black_box(2.0));
-        let mut acc = [_mm256_set1_pd(1.0); 8];
-        let mut sink = _mm256_setzero_pd();
-        for _ in 0..iters {
-            for _ in 0..D {
-                sink = _mm256_or_pd(sink, _mm256_div_pd(k, std::hint::black_box(x)));
-            }
-            for _ in 0..S {
-                sink = _mm256_or_pd(sink, _mm256_sqrt_pd(std::hint::black_box(x)));
-            }
-            for _ in 0..M / 8 {
-                for a in acc.iter_mut() {
-                    *a = _mm256_mul_pd(*a, k);
+            /// See `mix_copy!`.
+            ///
+            /// # Safety
+            /// Only where the processor has the module's instruction set.
+            #[target_feature(enable = $features)]
+            #[inline(never)]
+            pub unsafe fn mix<const D: usize, const S: usize, const M: usize>(iters: usize) -> f64 {
+                let k = $set1(std::hint::black_box(1.0 + 1e-15));
+                let x = $set1(std::hint::black_box(2.0));
+                let mut acc: [$v; 8] = [$set1(1.0); 8];
+                let mut sink = $setzero();
+                for _ in 0..iters {
+                    for _ in 0..D {
+                        sink = $or(sink, $div(k, std::hint::black_box(x)));
+                    }
+                    for _ in 0..S {
+                        sink = $or(sink, $sqrt(std::hint::black_box(x)));
+                    }
+                    for _ in 0..M / 8 {
+                        for a in acc.iter_mut() {
+                            *a = $mul(*a, k);
+                        }
+                    }
                 }
+                let mut out = [0.0; $w];
+                for a in acc {
+                    sink = $add(sink, a);
+                }
+                // SAFETY: `out` holds one vector's doubles.
+                unsafe { $storeu(out.as_mut_ptr(), sink) };
+                out[0]
             }
         }
-        let mut out = [0.0; 4];
-        for a in acc {
-            sink = _mm256_add_pd(sink, a);
-        }
-        // SAFETY: `out` holds 4 doubles.
-        unsafe { _mm256_storeu_pd(out.as_mut_ptr(), sink) };
-        out[0]
-    }
+    };
 }
+
+mix_copy!(
+    avx2,
+    "avx2",
+    __m256d,
+    4,
+    _mm256_set1_pd,
+    _mm256_setzero_pd,
+    _mm256_mul_pd,
+    _mm256_div_pd,
+    _mm256_sqrt_pd,
+    _mm256_or_pd,
+    _mm256_add_pd,
+    _mm256_storeu_pd
+);
+mix_copy!(
+    avx512,
+    "avx2,avx512f,avx512dq,avx512vl",
+    __m512d,
+    8,
+    _mm512_set1_pd,
+    _mm512_setzero_pd,
+    _mm512_mul_pd,
+    _mm512_div_pd,
+    _mm512_sqrt_pd,
+    _mm512_or_pd,
+    _mm512_add_pd,
+    _mm512_storeu_pd
+);
