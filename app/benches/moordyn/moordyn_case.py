@@ -9,8 +9,11 @@ For each number of segments N this script
      Courant 0.05, every step recorded (and ohl at Courant 0.05 against it: the two discretise the same
      ODE system);
   2. runs `OHL run` on a copy of the case with `segments = N` and `smoothing = 0` (MoorDyn has no velocity
-     smoothing), and on the case as written, reading `cpu_time_s` (CPU time of the step loop);
-  2b. runs ohl again at its own largest stable Courant number: the derived Kelvin-Voigt limit
+     smoothing), and on the case as written, reading `cpu_time_s` (CPU time of the step loop); and
+     once more without the time series' rows (`sample_interval_s` = the whole run), the counterpart of
+     MoorDyn's timed run, which records nothing (the `*_no_rows` columns; the others keep the rows every
+     0.02 s, as the case writes them);
+  2b. runs ohl again (with and without rows) at its own largest stable Courant number: the derived Kelvin-Voigt limit
      sqrt(1 + z^2) - z (src/scheme/courant.rs, computed with the same operations), times --ohl-margin,
      checked on the whole run with the stability/energy criterion MoorDyn's step is held to, bisected
      below it if that fails;
@@ -75,12 +78,16 @@ def check_case():
 # ---------------------------------------------------------------------------------------------------
 # ohl
 # ---------------------------------------------------------------------------------------------------
-def run_ohl(ohl, n, work, tag, smoothing=None, courant=None, end_time_s=None, may_fail=False):
+def run_ohl(ohl, n, work, tag, smoothing=None, courant=None, end_time_s=None, rows=True, may_fail=False):
     """`ohl run` on a copy of the case with N segments (and the given smoothing, Courant number, end).
 
+    rows=False: the time series' interval set to the whole run (its first and last rows only), the
+    counterpart of MoorDyn's timed run, which records nothing; the peaks are still tracked every step.
     may_fail: return None instead of raising when ohl exits with an error (a stability probe)."""
     text = open(CASE).read()
     subs = [(r"^segments\s*=\s*\S+", "segments = %d" % n)]
+    if not rows:
+        subs.append((r"^sample_interval_s\s*=\s*\S+", "sample_interval_s = %r" % (end_time_s or T_END_S)))
     if smoothing is not None:
         subs.append((r"^smoothing\s*=\s*\S+", "smoothing = %r" % smoothing))
     if courant is not None:
@@ -454,6 +461,7 @@ def main():
             return best
 
         summary, ts = fastest(tag="ohl", smoothing=0.0)
+        quiet_summary, _ = fastest(tag="ohl_quiet", smoothing=0.0, rows=False)
         paper_summary, _ = fastest(tag="ohl_paper")
         ohl_cpu = summary["cpu_time_s"]
         ohl_node_steps = summary["steps"] * (n + 1)
@@ -463,6 +471,8 @@ def main():
         # ohl at its own largest stable Courant number (checked on the whole run like MoorDyn's step)
         lim_courant, lim_derived, lim_check_energy = ohl_stable_courant(args.ohl, n, args.out, args.ohl_margin)
         lim_summary, lim_ts = fastest(tag="ohl_limit", smoothing=0.0, courant=lim_courant)
+        lim_quiet, _ = fastest(tag="ohl_limit_quiet", smoothing=0.0, courant=lim_courant, rows=False)
+        assert quiet_summary["steps"] == summary["steps"] and lim_quiet["steps"] == lim_summary["steps"]
         lim_err = window_error(lim_ts["t_s"], -lim_ts["mid_dx3_m"], ref_t, ref_sag, args.window_s)
 
         # MoorDyn: the largest stable step; the recorded run must keep the energy down too
@@ -550,6 +560,12 @@ def main():
             "moordyn_equal_error_limit_window_rel_err": lim_eq_err / ref_peak,
             "moordyn_equal_error_limit_cpu_s_per_simulated_s": lim_eq_per_sim,
             "ratio_at_equal_error_limit": lim_eq_per_sim / lim_per_sim,
+            # Without the time series' rows (every 0.02 s: the energies and the CSV formatting), as
+            # MoorDyn's timed run records nothing.
+            "ohl_cpu_s_no_rows": quiet_summary["cpu_time_s"],
+            "ratio_cpu_per_simulated_s_no_rows": md_per_sim / (quiet_summary["cpu_time_s"] / T_END_S),
+            "ohl_limit_cpu_s_no_rows": lim_quiet["cpu_time_s"],
+            "ratio_at_own_limits_no_rows": md_per_sim / (lim_quiet["cpu_time_s"] / T_END_S),
             "load_avg_1min": os.getloadavg()[0],
             **context,
         }
@@ -570,6 +586,13 @@ def main():
             % (n, row["ohl_limit_courant"], lim_derived, row["ohl_limit_cpu_s"],
                row["ohl_limit_node_steps_per_cpu_s"], row["ohl_limit_window_rel_err"],
                row["ratio_at_own_limits"], lim_eq_dtm, row["ratio_at_equal_error_limit"]),
+            flush=True,
+        )
+        print(
+            "N=%d  ohl without the time series' rows (as MoorDyn's timed run): Courant 0.5 %.4f s, ratio %.1f;"
+            "  at its limit %.4f s, ratio at own limits %.1f"
+            % (n, row["ohl_cpu_s_no_rows"], row["ratio_cpu_per_simulated_s_no_rows"],
+               row["ohl_limit_cpu_s_no_rows"], row["ratio_at_own_limits_no_rows"]),
             flush=True,
         )
         # Written after every N, so that a run stopped before the largest N keeps the rows it has.
