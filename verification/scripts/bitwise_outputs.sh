@@ -3,6 +3,7 @@
 # lines e-g), the examples and the thermal examples between two builds of `ohl`:
 #
 #   bash verification/scripts/bitwise_outputs.sh OLD_OHL NEW_OHL [WORK_DIR]
+#   ALL_CASES=1 bash verification/scripts/bitwise_outputs.sh OLD_OHL NEW_OHL [WORK_DIR]   (and cases h-l)
 #
 # Runs both binaries on the same inputs (the current checkout's files), then compares every CSV and JSON
 # file byte for byte, except the fields that measure the machine (`wall_time_s`, `node_steps_per_second`,
@@ -14,6 +15,12 @@ work="${3:-$(mktemp -d "${TMPDIR:-/tmp}/ohl-bitwise.XXXXXX")}"
 cd "$(dirname "$0")/../.."
 cases_abc=(a_broken_conductor b_ice_shedding c_progressive_shedding d_deicing
   e_three_phases_wind f_vertical_ice_shedding g_quad_bundle_break)
+# ALL_CASES=1 adds the cases h-l (twin bundle, slack spans, reclosing, droppers, their short circuit), run
+# whole: about 20 s more per binary.
+if [ "${ALL_CASES:-0}" = 1 ]; then
+  cases_abc+=(h_strained_twin_bundle i_slack_span j_distribution_reclose k_slack_span_dropper
+    l_slack_droppers_short_circuit)
+fi
 for side in old new; do
   bin="$old"; [ "$side" = new ] && bin="$new"
   out="$work/$side"; rm -rf "$out"; mkdir -p "$out"
