@@ -10,10 +10,12 @@
 //! levels is assumed (0.35; the cases measure 0.26-0.51), which leaves these four runs at 0.94-1.27 of the
 //! measured time on that machine (figures/bench/README.md, issue 27 third round); the CPU time of one run
 //! varied by up to 14 % between repetitions on the shared machine (load 5-9); and a machine of another
-//! generation runs the same loops up to about 1.5 times faster (the kernel's wind_3d at N = 5000: 2.30e8
-//! node-steps per CPU second on a Zen 4, 1.50e8 on this Zen 3), which would put case e at about 1.9. A
+//! generation runs the same loops faster: on a Zen 5 (AVX-512) the lines' estimates are 1.5-2.1 times
+//! their CPU time, and a single span runs about twice as fast as on the Zen 3, so its rate is the middle
+//! of the two machines (`ohl::scenario::work`; fig2b 1.7 times on the Zen 5, about 0.8 on the Zen 3). A
 //! factor 3 holds all of that, and still fails the model this replaced (a fixed 1e6 node-steps/s for a
-//! short circuit: 3.5 times the shortened case j's time).
+//! short circuit: 3.5 times the shortened case j's time), and the single span's first rate on the Zen 5
+//! (3.4).
 
 use std::path::{Path, PathBuf};
 use std::process::Command;

@@ -33,10 +33,13 @@
 //! scenario on one core (kernel, observers and outputs together, per CPU second: `cpu_node_steps_per_second`
 //! of `summary.json`, measured on the scenarios of the repository, issue 27):
 //!
-//! - one span, [`RUN_THROUGHPUT_SPAN`] = 6e7 node-steps/s: the paper cases (N = 50, where each step's
-//!   fixed costs weigh most) ran at 6.4e7 to 1.05e8;
-//! - a section (`[section]`), [`RUN_THROUGHPUT_SECTION`] = 8e7 node-steps/s: the mechanical examples
-//!   and cases a-d (strings, spans, a ground) ran at 8.3e7 to 1.5e8;
+//! - one span, [`RUN_THROUGHPUT_SPAN`] = 1.2e8 node-steps/s: the paper cases ran at 1.2e8 to 2.6e8 on
+//!   a Zen 5 (AVX-512 copies) and at about half that on a Zen 3 (fig2b at N = 50: 2.1e8 and 9.6e7), so
+//!   the rate is the geometric middle of the two machines (figures/bench/README.md, issue 27, twelfth
+//!   round; the first rate, 6e7, was the Zen 3's before the kernel's later rounds);
+//! - a section (`[section]`), [`RUN_THROUGHPUT_SECTION`] = 2e8 node-steps/s: the mechanical examples
+//!   and cases a-d (strings, spans, a ground) ran at 1.9e8 to 6.6e8 on the Zen 5 and 1.0e8 to 2.2e8 on
+//!   the Zen 3 (whole-process CPU time there), the middle again;
 //! - a line (`[line]`, [`crate::run::line::LineWorkEstimate`]): no single rate fits, since the elements
 //!   a line adds cost more than its kernel and scale differently (whole runs of cases e-l ran at 1.2e6
 //!   to 3.9e7 node-steps per CPU second). Its time is a sum per element, each an amount of work times
@@ -68,8 +71,10 @@
 //!   least ([`crate::line::clearance`]), which cannot be known before the run: cases e, j and l measured
 //!   26 %, 38 % and 51 % of their levels, so [`CLEARANCE_MEASURED_SHARE`] = 0.35. The near field's
 //!   constant [`EM_NS_PER_NEAR_PAIR`] is derived from the chords' (no workload of `ohl bench` has a near
-//!   pair) and checked on case l, whose droppers are near pairs of their busbars. The estimate is within
-//!   a factor 2 of the measured CPU time of cases e, j and l and of a paper case (`app/tests/dry_run.rs`).
+//!   pair) and checked on case l, whose droppers are near pairs of their busbars. The estimate was within
+//!   a factor 2 of the measured CPU time of cases e, j and l and of a paper case on the Zen 3 where the
+//!   constants were measured; on a Zen 5 the lines' estimates are 1.5-2.1 times their CPU time (the
+//!   constants were not measured again: an overestimate), and `app/tests/dry_run.rs` asserts a factor 3.
 //!
 //! The explicit kernel alone runs faster: [`THROUGHPUT_NODE_STEPS_PER_S`] = 1.5e8 node-steps/s on one
 //! core for the 3D configurations with wind or internal friction at N >= 200 (`figures/bench/README.md`:
@@ -104,10 +109,10 @@ pub const THROUGHPUT_NODE_STEPS_PER_S: f64 = 1.5e8;
 
 /// Throughput of whole runs of one span for the time estimate [node-steps/s] (CPU, one core; module
 /// documentation).
-pub const RUN_THROUGHPUT_SPAN: f64 = 6.0e7;
+pub const RUN_THROUGHPUT_SPAN: f64 = 1.2e8;
 
 /// Throughput of whole runs of a section for the time estimate [node-steps/s] (module documentation).
-pub const RUN_THROUGHPUT_SECTION: f64 = 8.0e7;
+pub const RUN_THROUGHPUT_SECTION: f64 = 2.0e8;
 
 /// A line's kernel (with its links and the conductors' observers) [CPU ns per node-step] (module
 /// documentation, "a line").
