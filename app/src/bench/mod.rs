@@ -308,15 +308,14 @@ pub fn access_doubles(isa: &str) -> f64 {
     access_doubles_of(isa, &std::fs::read_to_string("/proc/cpuinfo").unwrap_or_default())
 }
 
+/// The value of the first `name : value` line of a `/proc/cpuinfo` text, trimmed.
+fn cpuinfo_field<'a>(cpuinfo: &'a str, name: &str) -> Option<&'a str> {
+    cpuinfo.lines().find_map(|l| l.split_once(':').filter(|(k, _)| k.trim() == name)).map(|(_, v)| v.trim())
+}
+
 /// [`access_doubles`] of a processor whose `/proc/cpuinfo` is `cpuinfo`.
 fn access_doubles_of(isa: &str, cpuinfo: &str) -> f64 {
-    let field = |name: &str| {
-        cpuinfo
-            .lines()
-            .find(|l| l.split(':').next().is_some_and(|k| k.trim() == name))
-            .and_then(|l| l.split(':').nth(1))
-            .map(str::trim)
-    };
+    let field = |name| cpuinfo_field(cpuinfo, name);
     let amd_family_19h = field("vendor_id") == Some("AuthenticAMD") && field("cpu family") == Some("25");
     match isa {
         "avx512" if amd_family_19h => 4.0,
@@ -384,8 +383,13 @@ macro_rules! isa_copies {
 /// two halves; on Zen 5's full-width pipes they held the multiplications to 4 per 3 cycles, 2/3 of
 /// the throughput.)
 fn lanes(isa: &str) -> usize {
-    if isa == "avx512" { 64 } else { 32 }
+    if isa == "avx512" { WIDE_LANES } else { LANES }
 }
+
+/// Accumulators of the baseline and AVX2 copies ([`lanes`]) [doubles].
+const LANES: usize = 32;
+/// Accumulators of the AVX-512 copy ([`lanes`]) [doubles].
+const WIDE_LANES: usize = 64;
 
 /// `rounds` times `a *= k` on each of `L` accumulators (`out` holds them; `a[0]` is the factor).
 #[inline(always)]
@@ -415,8 +419,8 @@ fn add_body<const L: usize>(a: &[f64], out: &mut [f64]) {
 
 isa_copies!(sqrt_array, sqrt_body);
 isa_copies!(div_array, div_body);
-isa_copies!(mul_lanes, mul_body::<32>, mul_body::<64>);
-isa_copies!(add_lanes, add_body::<32>, add_body::<64>);
+isa_copies!(mul_lanes, mul_body::<LANES>, mul_body::<WIDE_LANES>);
+isa_copies!(add_lanes, add_body::<LANES>, add_body::<WIDE_LANES>);
 
 /// Cycles per step of [`add_chain`]'s chain.
 #[cfg(target_arch = "x86_64")]
@@ -568,9 +572,7 @@ fn utc_now() -> String {
 pub fn machine() -> Machine {
     let cpu = std::fs::read_to_string("/proc/cpuinfo")
         .ok()
-        .and_then(|s| {
-            s.lines().find(|l| l.starts_with("model name")).and_then(|l| l.split(':').nth(1)).map(|m| m.trim().into())
-        })
+        .and_then(|s| cpuinfo_field(&s, "model name").map(String::from))
         .unwrap_or_else(|| "unknown".into());
     let git = command_output("git", &["describe", "--always", "--dirty"]).unwrap_or_else(|| "unknown".into());
     Machine { cpu, load: load_average(), date: utc_now(), git }
