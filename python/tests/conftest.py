@@ -10,8 +10,9 @@ import json
 import os
 import shutil
 import subprocess
+import time
 from pathlib import Path
-from typing import Dict, List, Optional, Tuple
+from typing import Any, Callable, Dict, Iterable, List, Optional, Tuple
 
 import numpy as np
 import pytest
@@ -89,3 +90,18 @@ TIMING_KEYS = ("wall_time_s", "node_steps_per_second", "cpu_time_s", "cpu_node_s
 
 def without_timing(summary: Dict) -> Dict:
     return {k: v for k, v in summary.items() if k not in TIMING_KEYS}
+
+
+def run_lasting(end_times_s: Iterable[float], build: Callable[[float], Any], run: Callable[[Any], Any],
+                min_s: float = 0.2) -> Tuple[Any, float]:
+    """The first scenario `build(end_time_s)` over `end_times_s` whose `run` takes more than `min_s`
+    seconds of wall time on this machine (else the last one): `(scenario, duration [s])`. For the tests
+    that need a run long enough to watch another thread during it, on machines of any speed."""
+    for end_time_s in end_times_s:
+        sc = build(end_time_s)
+        start = time.perf_counter()
+        run(sc)
+        duration = time.perf_counter() - start
+        if duration > min_s:
+            break
+    return sc, duration

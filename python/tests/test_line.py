@@ -26,7 +26,7 @@ import numpy as np
 import pytest
 
 import ohl
-from conftest import REPO, assert_bitwise, cli, read_csv, read_json, without_timing
+from conftest import REPO, assert_bitwise, cli, read_csv, read_json, run_lasting, without_timing
 
 CONDUCTOR = {"axial_stiffness_n": 2.9e7, "linear_density_kg_per_m": 1.628, "diameter_m": 0.0281}
 
@@ -338,13 +338,11 @@ def test_a_line_run_releases_the_gil_and_stops_on_ctrl_c(tmp_path: Path) -> None
 
     # 8 s simulated, doubled until the run takes 0.2 s on this machine (case e runs 20 s in about 0.5 s of
     # CPU on a Zen 5, so 8 s is near the bound there)
-    for end_time_s in (8.0, 16.0, 32.0):
-        sc = ohl.load_line(shortened("e_three_phases_wind.toml", end_time_s, "[1.0]", tmp_path))
-        start = time.perf_counter()
-        ohl.run_line(sc)
-        duration = time.perf_counter() - start
-        if duration > 0.2:
-            break
+    sc, duration = run_lasting(
+        (8.0, 16.0, 32.0),
+        lambda end: ohl.load_line(shortened("e_three_phases_wind.toml", end, "[1.0]", tmp_path)),
+        ohl.run_line,
+    )
     assert duration > 0.2, f"the run is too short ({duration:.3f} s) to tell"
     done = threading.Event()
     worker = threading.Thread(target=lambda: (ohl.run_line(sc), done.set()))

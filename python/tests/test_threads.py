@@ -10,7 +10,7 @@ from concurrent.futures import ThreadPoolExecutor
 import pytest
 
 import ohl
-from conftest import assert_bitwise
+from conftest import assert_bitwise, run_lasting
 
 
 def case(speed: float, end_time_s: float = 20.0, segments: int = 50) -> dict:
@@ -40,15 +40,8 @@ def test_python_runs_while_a_run_is_in_progress() -> None:
     held through the run, this thread would stop for the whole run (one pause as long as the run). The
     run's end time doubles from 800 s until it takes 0.2 s on this machine (800 s took 0.18 s on a Zen 5),
     at most 16 times as long."""
-    end_time_s = 800.0
-    while True:
-        sc = ohl.from_dict(case(20.0, end_time_s=end_time_s, segments=100))
-        start = time.perf_counter()
-        ohl.run(sc)
-        duration = time.perf_counter() - start
-        if duration > 0.2 or end_time_s >= 16 * 800.0:
-            break
-        end_time_s *= 2.0
+    ends = [800.0 * 2.0**k for k in range(5)]
+    sc, duration = run_lasting(ends, lambda end: ohl.from_dict(case(20.0, end_time_s=end, segments=100)), ohl.run)
     assert duration > 0.2, f"the run is too short ({duration:.3f} s) to tell"
 
     done = threading.Event()
