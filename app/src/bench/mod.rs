@@ -12,6 +12,7 @@
 //! time.
 
 pub mod limit;
+pub mod mix;
 pub mod pipes;
 pub mod workload;
 

@@ -5,7 +5,9 @@
 //! N = 50, 100, 200, 400, and the measured cost of a square root, a division, a multiplication and an
 //! addition on this core in the kernel's instruction set, from which it derives the compute limit of the
 //! vectorised configurations on this core and the fraction of it each reaches
-//! ([`ohl_app::bench::limit`]).
+//! ([`ohl_app::bench::limit`]), beside the rate of the same operations in a loop with nothing else to
+//! limit them, with every access within a cache line and with every access across two
+//! ([`ohl_app::bench::mix`]).
 //! Writes `<out>/<label>.csv`, `<out>/<label>_run.csv`, `<out>/<label>_primitives.csv` and the plot
 //! `<out>/throughput.png` / `.svg` (against `--baseline` if given).
 
@@ -271,6 +273,17 @@ pub fn main(args: BenchArgs) -> ExitCode {
                 l.passes_node_steps_per_s,
                 l.passes_cycles
             );
+            let mix = |offset| bench::mix::mix_node_steps_per_s(p.isa, c.name(), offset);
+            if let (Some(within), Some(across)) = (mix(0), mix(1)) {
+                out!(
+                    "  its operations alone, iterations independent, data in L1 (bench::mix): {:.3e} node-steps/s \
+                     ({:.0} % of the limit) with every access within a cache line, {:.3e} ({:.0} %) with every access across two",
+                    within,
+                    100.0 * within / l.node_steps_per_s,
+                    across,
+                    100.0 * across / l.node_steps_per_s
+                );
+            }
         }
     }
 
