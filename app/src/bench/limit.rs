@@ -13,8 +13,8 @@
 //!
 //! The limit of the core is what the issue's goal is measured against. Whether a core reaches it with
 //! these operations at all is measured, not assumed: [`super::mix`] runs each budget's operations in a
-//! loop of independent iterations (on the Zen 5 of issue 27's thirteenth round: 103-110 % of the limit
-//! with every access within a cache line, 66-97 % with every access across two). The bound of the passes is how
+//! loop of independent iterations (on the Zen 5 of issue 27's thirteenth round: 104-113 % of the limit
+//! with every access within a cache line, 62-99 % with every access across two). The bound of the passes is how
 //! far the kernel's structure lets it go: the segment pass and the node pass are separate loops, so the
 //! divider, busy in the segment pass, idles through the node pass, whose multiplications and additions
 //! cannot fill the segment pass's idle pipes. Between the two lies the cost of running the passes one
