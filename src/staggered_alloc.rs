@@ -16,11 +16,15 @@
 //! [`spread_evenly`] moves a kernel's arrays into fresh allocations; under [`StaggeredAlloc`] the
 //! `i`-th of `m` of them then starts `64 floor(64 i / m)` bytes into a page, so no two start within
 //! `4096 / m` bytes (about 20 doubles for a wire's 26 arrays) of each other modulo the page, whatever
-//! the length, for arrays of at least [`MIN_SIZE`] bytes (256 doubles: N >= 255; no aliasing was measured
-//! below). Every other allocation of at least [`MIN_SIZE`] bytes costs 16 bytes of header and keeps
-//! the system allocator's place; smaller ones go to the system allocator unchanged. A spread array
-//! costs up to 4 KiB of padding. Addresses never enter the arithmetic, so results are bitwise the same
-//! with or without it; only the time changes.
+//! the length, for arrays of at least [`MIN_SIZE`] bytes (32 doubles: N >= 31). Every array so placed
+//! also starts a cache line, so the kernel's 512-bit loads and stores at `j` stay within one line (a
+//! Zen 5 takes about twice as long over one that crosses two: issue 27's thirteenth round, where placing
+//! the arrays of N = 50 and 200 too made the kernel 10-27 % faster; no aliasing was measured for them,
+//! whose arrays the system allocator had put next to each other, at 16-byte boundaries). Every other
+//! allocation of at least [`MIN_SIZE`] bytes costs 16 bytes of header and keeps the system allocator's
+//! place; smaller ones go to the system allocator unchanged. A spread array costs up to 4 KiB of padding.
+//! Addresses never enter the arithmetic, so results are bitwise the same with or without it; only the
+//! time changes.
 //!
 //! A binary opts in with
 //! ```no_run
@@ -37,10 +41,11 @@ use std::cell::Cell;
 pub const PAGE: usize = 4096;
 /// The granularity of the offsets (one cache line) [bytes].
 pub const GRAIN: usize = 64;
-/// The smallest allocation that goes through the header and may be placed [bytes]: 256 doubles (a wire
-/// of 255 segments). Smaller ones go to the system allocator whole: arrays that short were not measured
-/// to suffer from aliasing, and a page of padding each would only add pages to the kernel's working set.
-pub const MIN_SIZE: usize = 2048;
+/// The smallest allocation that goes through the header and may be placed [bytes]: 32 doubles (a wire
+/// of 31 segments; four lines of 64 bytes). Smaller ones go to the system allocator whole: a page of
+/// padding for a few lines would only add pages to the kernel's working set. (2048 bytes until issue
+/// 27's thirteenth round, when only aliasing was looked for; see the module docs.)
+pub const MIN_SIZE: usize = 256;
 /// Room before a placed block for the address and size of the system allocation it sits in [bytes];
 /// a multiple of 16, so a block without an offset keeps the system allocator's alignment.
 const HEADER: usize = 16;
@@ -287,7 +292,9 @@ mod tests {
     #[test]
     fn blocks_are_aligned_and_round_trip() {
         let a = StaggeredAlloc;
-        for &(size, align) in &[(8, 8), (2047, 8), (2048, 8), (8200, 8), (40_000, 16), (4000, 64), (4000, 128)] {
+        for &(size, align) in
+            &[(8, 8), (MIN_SIZE - 1, 8), (MIN_SIZE, 8), (8200, 8), (40_000, 16), (4000, 64), (4000, 128)]
+        {
             let layout = Layout::from_size_align(size, align).unwrap();
             // SAFETY: non-zero layouts; blocks written within their sizes and freed with their layouts.
             unsafe {

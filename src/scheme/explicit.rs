@@ -444,7 +444,11 @@ macro_rules! isa_dispatch {
 }
 
 /// The explicit solver: the wire, its loads and numerics, the clock, and preallocated scratch.
-#[derive(Clone, Debug)]
+///
+/// A clone is the same solver with the kernel's arrays spread over the page again, as
+/// [`Explicit::new`] places them ([`Explicit::spread_arrays`]): the arrays a field-by-field clone
+/// allocates would start wherever the allocator puts them.
+#[derive(Debug)]
 pub struct Explicit {
     /// the wire state (read with [`Explicit::wire`], changed through [`Explicit::wire_mut`])
     wire: Wire,
@@ -528,6 +532,49 @@ pub struct Explicit {
     /// the copy of the passes that runs: AVX-512, AVX2 or the baseline (detected at construction; see
     /// [`Explicit::step`])
     isa: Isa,
+}
+
+impl Clone for Explicit {
+    /// Every field cloned, then the kernel's arrays spread over the page as [`Explicit::new`] spreads them
+    /// (measured in issue 27's thirteenth round: `ohl bench`, which times clones, ran 10-36 % slower at
+    /// N = 1000 and 5000 with the arrays where the plain clone left them). Addresses never enter the
+    /// arithmetic: the clone steps to the same bits.
+    fn clone(&self) -> Self {
+        let mut c = Explicit {
+            wire: self.wire.clone(),
+            loads: self.loads,
+            params: self.params,
+            time_s: self.time_s,
+            steps: self.steps,
+            ground: self.ground.clone(),
+            nodal_force: self.nodal_force.clone(),
+            dt_prev: self.dt_prev,
+            fresh: self.fresh,
+            max_tension_n: self.max_tension_n,
+            viscous: self.viscous,
+            all_exposed: self.all_exposed,
+            plain: self.plain,
+            inv_rest_length: self.inv_rest_length.clone(),
+            inv_rest_length_fresh: self.inv_rest_length_fresh,
+            wire_stamp: self.wire_stamp,
+            speed2_max: self.speed2_max,
+            speed2: self.speed2.clone(),
+            speed2_fresh: self.speed2_fresh,
+            mass_range: self.mass_range.clone(),
+            fs: self.fs.clone(),
+            es: self.es.clone(),
+            es_zero: self.es_zero,
+            planar: self.planar,
+            seg_len: self.seg_len.clone(),
+            point_force: self.point_force.clone(),
+            external_force: self.external_force.clone(),
+            point_scratch: self.point_scratch.clone(),
+            supports: self.supports.clone(),
+            isa: self.isa,
+        };
+        c.spread_arrays();
+        c
+    }
 }
 
 impl Explicit {
@@ -2070,24 +2117,37 @@ mod tests {
     /// The kernel's arrays start spread evenly over the page (the unit tests run under
     /// `StaggeredAlloc`): the `i`-th of the 26 arrays long enough to be placed at `64 floor(64 i / 26)`
     /// bytes modulo 4 KiB, at a length (1025 doubles, N = 1024) where the system allocator would start
-    /// them all within a few cache lines of each other. The steps after it are those of any solver.
+    /// them all within a few cache lines of each other, and at N = 50 (51 doubles), where it would put
+    /// them next to each other at 16-byte boundaries; a clone's arrays too, and a clone steps to the bits
+    /// of its original.
     #[test]
     fn kernel_arrays_are_spread_over_the_page() {
-        let mut s = Config::Wind3d.solver(1024);
-        s.params.smoothing = 0.02;
-        let mut slot = 0;
-        let arrays = s.kernel_arrays();
-        let m = arrays.len();
-        for (i, a) in arrays.into_iter().enumerate() {
-            if std::mem::size_of_val(a.as_slice()) < staggered_alloc::MIN_SIZE {
-                continue;
+        fn assert_spread(s: &mut Explicit, what: &str) {
+            let mut slot = 0;
+            let arrays = s.kernel_arrays();
+            let m = arrays.len();
+            for (i, a) in arrays.into_iter().enumerate() {
+                if std::mem::size_of_val(a.as_slice()) < staggered_alloc::MIN_SIZE {
+                    continue;
+                }
+                assert_eq!(a.as_ptr() as usize % staggered_alloc::PAGE, 64 * (64 * slot / m), "{what}: array {i}");
+                slot += 1;
             }
-            assert_eq!(a.as_ptr() as usize % staggered_alloc::PAGE, 64 * (64 * slot / m), "array {i}");
-            slot += 1;
+            assert!(slot >= 24, "{what}: only {slot} arrays placed");
         }
-        assert!(slot >= 24, "only {slot} arrays placed");
-        for _ in 0..10 {
-            s.step(s.params.dt_s).unwrap();
+        for n in [1024, 50] {
+            let mut s = Config::Wind3d.solver(n);
+            s.params.smoothing = 0.02;
+            assert_spread(&mut s, &format!("N = {n}"));
+            let mut c = s.clone();
+            assert_spread(&mut c, &format!("N = {n}, a clone"));
+            for _ in 0..10 {
+                s.step(s.params.dt_s).unwrap();
+                c.step(c.params.dt_s).unwrap();
+            }
+            let bits =
+                |e: &Explicit| e.wire.x.iter().chain(&e.wire.v).flatten().map(|x| x.to_bits()).collect::<Vec<_>>();
+            assert_eq!(bits(&s), bits(&c), "N = {n}: the clone's steps");
         }
     }
 
