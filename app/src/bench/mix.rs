@@ -118,10 +118,11 @@ macro_rules! each {
 }
 
 /// `mix::<MUL, ADD, DIV, SQRT, LOADS, STORES>(iters, input, output)` (module docs), in the module `$m`
-/// compiled for `$features` with the vector type `$v` of `$w` doubles and its intrinsics.
-macro_rules! mix_copy {
-    ($m:ident, $features:literal, $v:ty, $w:literal, $set1:ident, $mul:ident, $add:ident, $div:ident,
-     $sqrt:ident, $loadu:ident, $storeu:ident) => {
+/// compiled for `$features` with the vector type `$v` of `$w` doubles and its intrinsics (of which it
+/// uses `set1`, `mul`, `add`, `div`, `sqrt`, `loadu` and `storeu`; `vector_copies!` in the parent module).
+macro_rules! mix_loop_copy {
+    ($m:ident, $features:literal, $v:ty, $w:literal, $set1:ident, $setzero:ident, $mul:ident, $add:ident,
+     $div:ident, $sqrt:ident, $or:ident, $loadu:ident, $storeu:ident) => {
         #[cfg(target_arch = "x86_64")]
         mod $m {
             use std::arch::x86_64::*;
@@ -197,32 +198,7 @@ macro_rules! mix_copy {
     };
 }
 
-mix_copy!(
-    avx2,
-    "avx2",
-    __m256d,
-    4,
-    _mm256_set1_pd,
-    _mm256_mul_pd,
-    _mm256_add_pd,
-    _mm256_div_pd,
-    _mm256_sqrt_pd,
-    _mm256_loadu_pd,
-    _mm256_storeu_pd
-);
-mix_copy!(
-    avx512,
-    "avx2,avx512f,avx512dq,avx512vl",
-    __m512d,
-    8,
-    _mm512_set1_pd,
-    _mm512_mul_pd,
-    _mm512_add_pd,
-    _mm512_div_pd,
-    _mm512_sqrt_pd,
-    _mm512_loadu_pd,
-    _mm512_storeu_pd
-);
+vector_copies!(mix_loop_copy);
 
 #[cfg(test)]
 mod tests {

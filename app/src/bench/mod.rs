@@ -11,6 +11,45 @@
 //! valgrind's callgrind) are the load-independent measure; [`run_fixed_steps`] is the entry point they
 //! time.
 
+/// `vector_copies!(m)`: `m!(module, features, vector type, doubles per vector, set1, setzero, mul, add,
+/// div, sqrt, or, loadu, storeu)` once for the AVX2 copy and once for the AVX-512 copy (the kernel's
+/// instruction sets), with their intrinsics: the throughput loops of [`pipes`] and [`mix`] are written
+/// once for both.
+macro_rules! vector_copies {
+    ($m:ident) => {
+        $m!(
+            avx2,
+            "avx2",
+            __m256d,
+            4,
+            _mm256_set1_pd,
+            _mm256_setzero_pd,
+            _mm256_mul_pd,
+            _mm256_add_pd,
+            _mm256_div_pd,
+            _mm256_sqrt_pd,
+            _mm256_or_pd,
+            _mm256_loadu_pd,
+            _mm256_storeu_pd
+        );
+        $m!(
+            avx512,
+            "avx2,avx512f,avx512dq,avx512vl",
+            __m512d,
+            8,
+            _mm512_set1_pd,
+            _mm512_setzero_pd,
+            _mm512_mul_pd,
+            _mm512_add_pd,
+            _mm512_div_pd,
+            _mm512_sqrt_pd,
+            _mm512_or_pd,
+            _mm512_loadu_pd,
+            _mm512_storeu_pd
+        );
+    };
+}
+
 pub mod limit;
 pub mod mix;
 pub mod pipes;

@@ -57,8 +57,8 @@ pub fn occupancy(isa: &str) -> Option<(f64, f64)> {
 /// accumulators; in the module `$m`, compiled for `$features` with the vector type `$v` of `$w` doubles
 /// and its intrinsics.
 macro_rules! mix_copy {
-    ($m:ident, $features:literal, $v:ty, $w:literal, $set1:ident, $setzero:ident, $mul:ident, $div:ident,
-     $sqrt:ident, $or:ident, $add:ident, $storeu:ident) => {
+    ($m:ident, $features:literal, $v:ty, $w:literal, $set1:ident, $setzero:ident, $mul:ident, $add:ident,
+     $div:ident, $sqrt:ident, $or:ident, $loadu:ident, $storeu:ident) => {
         #[cfg(target_arch = "x86_64")]
         mod $m {
             use std::arch::x86_64::*;
@@ -99,31 +99,4 @@ macro_rules! mix_copy {
     };
 }
 
-mix_copy!(
-    avx2,
-    "avx2",
-    __m256d,
-    4,
-    _mm256_set1_pd,
-    _mm256_setzero_pd,
-    _mm256_mul_pd,
-    _mm256_div_pd,
-    _mm256_sqrt_pd,
-    _mm256_or_pd,
-    _mm256_add_pd,
-    _mm256_storeu_pd
-);
-mix_copy!(
-    avx512,
-    "avx2,avx512f,avx512dq,avx512vl",
-    __m512d,
-    8,
-    _mm512_set1_pd,
-    _mm512_setzero_pd,
-    _mm512_mul_pd,
-    _mm512_div_pd,
-    _mm512_sqrt_pd,
-    _mm512_or_pd,
-    _mm512_add_pd,
-    _mm512_storeu_pd
-);
+vector_copies!(mix_copy);
