@@ -19,7 +19,7 @@
 //! the length, for arrays of at least [`MIN_SIZE`] bytes (32 doubles: N >= 31). Every array so placed
 //! also starts a cache line, so the kernel's 512-bit loads and stores at `j` stay within one line (a
 //! Zen 5 takes about twice as long over one that crosses two: issue 27's thirteenth round, where placing
-//! the arrays of N = 50 and 200 too made the kernel 10-27 % faster; no aliasing was measured for them,
+//! the arrays of N = 50 and 200 too made the kernel 2-29 % faster; no aliasing was measured for them,
 //! whose arrays the system allocator had put next to each other, at 16-byte boundaries). Every other
 //! allocation of at least [`MIN_SIZE`] bytes costs 16 bytes of header and keeps the system allocator's
 //! place; smaller ones go to the system allocator unchanged. A spread array costs up to 4 KiB of padding.

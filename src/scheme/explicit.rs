@@ -538,8 +538,7 @@ impl Clone for Explicit {
     /// Every field cloned, then the kernel's arrays spread over the page as [`Explicit::new`] spreads them
     /// (measured in issue 27's thirteenth round: `ohl bench`, which times clones, ran its wind and
     /// Kelvin-Voigt workloads 13-36 % slower at N = 1000 and 5000 with the arrays where a plain clone left
-    /// them). Addresses never enter the
-    /// arithmetic: the clone steps to the same bits.
+    /// them). Addresses never enter the arithmetic: the clone steps to the same bits.
     fn clone(&self) -> Self {
         let mut c = Explicit {
             wire: self.wire.clone(),
