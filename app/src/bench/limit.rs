@@ -97,9 +97,10 @@ pub struct Ops {
     pub stores: u32,
 }
 
-impl std::ops::Add for Ops {
-    type Output = Ops;
-    fn add(self, o: Ops) -> Ops {
+impl Ops {
+    /// The operations of `self` and `o` together (a `const fn`, for the counts the operation mix is
+    /// compiled with, [`super::mix`]).
+    pub const fn plus(self, o: Ops) -> Ops {
         Ops {
             mul_pipe: self.mul_pipe + o.mul_pipe,
             add: self.add + o.add,
@@ -111,6 +112,13 @@ impl std::ops::Add for Ops {
     }
 }
 
+impl std::ops::Add for Ops {
+    type Output = Ops;
+    fn add(self, o: Ops) -> Ops {
+        self.plus(o)
+    }
+}
+
 /// Operations of one node-step: the segment pass on one segment and the node pass on one node.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct OpBudget {
@@ -118,6 +126,13 @@ pub struct OpBudget {
     pub segment: Ops,
     /// the node pass (`kick_drift`), per node
     pub node: Ops,
+}
+
+impl OpBudget {
+    /// One node-step's operations, both passes together.
+    pub const fn total(self) -> Ops {
+        self.segment.plus(self.node)
+    }
 }
 
 const fn ops(mul_pipe: u32, add: u32, div: u32, sqrt: u32, loads: u32, stores: u32) -> Ops {
@@ -131,14 +146,19 @@ const NODE: Ops = ops(17, 20, 0, 0, 21, 6);
 /// shares, the exposure and the `x1` component left out (module doc).
 const NODE_PLANAR: Ops = ops(10, 11, 0, 0, 10, 4);
 
+/// plane_weight's node-step (module doc).
+pub const PLANE_WEIGHT: OpBudget = OpBudget { segment: ops(14, 5, 1, 1, 7, 3), node: NODE_PLANAR };
+/// wind_3d's node-step (module doc).
+pub const WIND_3D: OpBudget = OpBudget { segment: ops(51, 24, 2, 2, 21, 10), node: NODE };
+/// kv_smoothing_3d's node-step (module doc).
+pub const KV_SMOOTHING_3D: OpBudget = OpBudget { segment: ops(48, 25, 2, 2, 29, 10), node: ops(24, 29, 0, 0, 38, 12) };
+
 /// The operations of one node-step of `w` (module doc), or `None` where no vector limit applies.
 pub fn budget(w: Workload) -> Option<OpBudget> {
     match w {
-        Workload::Kernel(Config::PlaneWeight) => Some(OpBudget { segment: ops(14, 5, 1, 1, 7, 3), node: NODE_PLANAR }),
-        Workload::Kernel(Config::Wind3d) => Some(OpBudget { segment: ops(51, 24, 2, 2, 21, 10), node: NODE }),
-        Workload::Kernel(Config::ViscousSmoothed) => {
-            Some(OpBudget { segment: ops(48, 25, 2, 2, 29, 10), node: ops(24, 29, 0, 0, 38, 12) })
-        }
+        Workload::Kernel(Config::PlaneWeight) => Some(PLANE_WEIGHT),
+        Workload::Kernel(Config::Wind3d) => Some(WIND_3D),
+        Workload::Kernel(Config::ViscousSmoothed) => Some(KV_SMOOTHING_3D),
         _ => None,
     }
 }
@@ -176,7 +196,7 @@ fn busiest(o: &Ops, p: &Primitives) -> (&'static str, f64) {
 
 /// The limit of `b` on a core with the measured primitives `p` (module doc).
 pub fn limit(b: &OpBudget, p: &Primitives) -> Limit {
-    let (unit, cycles) = busiest(&(b.segment + b.node), p);
+    let (unit, cycles) = busiest(&b.total(), p);
     let passes_cycles = busiest(&b.segment, p).1 + busiest(&b.node, p).1;
     Limit {
         cycles,

@@ -38,6 +38,51 @@ const LINE: usize = 64;
 #[repr(align(64))]
 struct Line(#[allow(dead_code)] [f64; LINE / 8]);
 
+/// A compiled mix: `iters`, the input window, the output window.
+#[cfg(target_arch = "x86_64")]
+type Mix = unsafe fn(usize, *const f64, *mut f64);
+
+/// `mix_of!(module, BUDGET)`: the module's `mix` compiled with the counts of the budget constant
+/// `BUDGET` of [`super::limit`] (constants, so that the loop is straight-line code).
+#[cfg(target_arch = "x86_64")]
+macro_rules! mix_of {
+    ($m:ident, $b:path) => {
+        $m::mix::<
+            { $b.total().mul_pipe as usize },
+            { $b.total().add as usize },
+            { $b.total().div as usize },
+            { $b.total().sqrt as usize },
+            { $b.total().loads as usize },
+            { $b.total().stores as usize },
+        > as Mix
+    };
+}
+
+/// The mix of workload `w`'s budget in the instruction set `isa` (`"avx512"` or `"avx2"`) and its
+/// doubles per vector (node-steps per iteration); `None` for another instruction set or a workload
+/// without a budget.
+#[cfg(target_arch = "x86_64")]
+fn instance(isa: &str, w: super::workload::Workload) -> Option<(Mix, usize)> {
+    use super::limit::{KV_SMOOTHING_3D, PLANE_WEIGHT, WIND_3D};
+    use super::workload::Workload;
+    use ohl::scheme::configs::Config;
+    macro_rules! pick {
+        ($m:ident) => {
+            match w {
+                Workload::Kernel(Config::PlaneWeight) => (mix_of!($m, PLANE_WEIGHT), $m::W),
+                Workload::Kernel(Config::Wind3d) => (mix_of!($m, WIND_3D), $m::W),
+                Workload::Kernel(Config::ViscousSmoothed) => (mix_of!($m, KV_SMOOTHING_3D), $m::W),
+                _ => return None,
+            }
+        };
+    }
+    Some(match isa {
+        "avx512" => pick!(avx512),
+        "avx2" => pick!(avx2),
+        _ => return None,
+    })
+}
+
 /// Node-steps per CPU second of the instruction mix of `config`'s budget in the kernel's instruction set
 /// `isa` (`"avx512"` or `"avx2"`), with every load and store `offset` doubles past a cache line's start
 /// (0: each vector access within one line; 1 to 7: each 512-bit access across two lines, as the kernel's
@@ -46,28 +91,7 @@ struct Line(#[allow(dead_code)] [f64; LINE / 8]);
 pub fn mix_node_steps_per_s(isa: &str, config: &str, offset: usize) -> Option<f64> {
     #[cfg(target_arch = "x86_64")]
     {
-        use super::workload::Workload;
-        use ohl::scheme::configs::Config;
-        type Mix = unsafe fn(usize, *const f64, *mut f64);
-        let w = super::workload::Workload::from_name(config)?;
-        // One monomorph per budget (the counts must be constants for the loop to be straight-line code);
-        // `mix_budgets_are_the_limit_budgets` checks these against `limit::budget`.
-        macro_rules! pick {
-            ($m:ident) => {{
-                use $m::mix;
-                match w {
-                    Workload::Kernel(Config::PlaneWeight) => (mix::<24, 16, 1, 1, 17, 7> as Mix, $m::W),
-                    Workload::Kernel(Config::Wind3d) => (mix::<68, 44, 2, 2, 42, 16> as Mix, $m::W),
-                    Workload::Kernel(Config::ViscousSmoothed) => (mix::<72, 54, 2, 2, 67, 22> as Mix, $m::W),
-                    _ => return None,
-                }
-            }};
-        }
-        let (f, width) = match isa {
-            "avx512" => pick!(avx512),
-            "avx2" => pick!(avx2),
-            _ => return None,
-        };
+        let (f, width) = instance(isa, super::workload::Workload::from_name(config)?)?;
         assert!(offset < LINE / 8, "an offset within a line");
         // Two windows of 1024 doubles in, two out (8 KiB each, 32 KiB in all: L1-resident), aligned to a
         // line, and one line more for the offset.
@@ -91,15 +115,6 @@ pub fn mix_node_steps_per_s(isa: &str, config: &str, offset: usize) -> Option<f6
         None
     }
 }
-
-/// The counts [`mix_node_steps_per_s`] is instantiated with, by configuration name (for the test that
-/// they are the limit's).
-#[cfg(test)]
-const INSTANTIATED: [(&str, [u32; 6]); 3] = [
-    ("plane_weight", [24, 16, 1, 1, 17, 7]),
-    ("wind_3d", [68, 44, 2, 2, 42, 16]),
-    ("kv_smoothing_3d", [72, 54, 2, 2, 67, 22]),
-];
 
 // `each!(n, [lanes], |r, l| body)`: `body` for `r` in `0..n` and each literal lane `l`
 // (the lanes written out, so that the accumulators are registers), `r * lanes + l < n`.
@@ -204,15 +219,21 @@ vector_copies!(mix_loop_copy);
 mod tests {
     use super::*;
     use crate::bench::limit::budget;
-    use crate::bench::workload::Workload;
+    use crate::bench::workload::{COSTS, LINE as LINE_WORKLOADS, WIRE};
 
-    /// The loop is instantiated with the limit's counts (a change of a budget must change the mix too).
+    /// Every workload with a budget has its mix in both vector instruction sets (compiled with that
+    /// budget's counts by `mix_of!`), and no other workload has one: a budget added without a mix would
+    /// print no mix under its limit.
+    #[cfg(target_arch = "x86_64")]
     #[test]
-    fn mix_budgets_are_the_limit_budgets() {
-        for (name, c) in INSTANTIATED {
-            let b = budget(Workload::from_name(name).unwrap()).unwrap();
-            let t = b.segment + b.node;
-            assert_eq!([t.mul_pipe, t.add, t.div, t.sqrt, t.loads, t.stores], c, "{name}");
+    fn every_budget_has_its_mix() {
+        for w in WIRE.into_iter().chain(LINE_WORKLOADS).chain(COSTS) {
+            for isa in ["avx512", "avx2"] {
+                let got = instance(isa, w).map(|(_, width)| width);
+                let want = budget(w).map(|_| if isa == "avx512" { 8 } else { 4 });
+                assert_eq!(got, want, "{} {isa}", w.name());
+            }
+            assert!(instance("baseline", w).is_none(), "{}", w.name());
         }
     }
 }

@@ -28,13 +28,18 @@ pub fn occupancy(isa: &str) -> Option<(f64, f64)> {
     if isa == "avx512" || isa == "avx2" {
         // mul, div, div + mul, sqrt, sqrt + mul
         type Mix = unsafe fn(usize) -> f64;
-        let copies: [Mix; 5] = if isa == "avx512" {
-            use avx512::mix;
-            [mix::<0, 0, 128>, mix::<8, 0, 0>, mix::<8, 0, 128>, mix::<0, 4, 0>, mix::<0, 4, 128>]
-        } else {
-            use avx2::mix;
-            [mix::<0, 0, 128>, mix::<8, 0, 0>, mix::<8, 0, 128>, mix::<0, 4, 0>, mix::<0, 4, 128>]
-        };
+        macro_rules! copies {
+            ($m:ident) => {
+                [
+                    $m::mix::<0, 0, 128>,
+                    $m::mix::<8, 0, 0>,
+                    $m::mix::<8, 0, 128>,
+                    $m::mix::<0, 4, 0>,
+                    $m::mix::<0, 4, 128>,
+                ]
+            };
+        }
+        let copies: [Mix; 5] = if isa == "avx512" { copies!(avx512) } else { copies!(avx2) };
         // SAFETY: the kernel reports "avx512" or "avx2" only where the processor has them.
         let [mul, div, div_mul, sqrt, sqrt_mul] = copies.map(|f| {
             super::median_of(7, || {
